@@ -1,0 +1,44 @@
+#pragma once
+// Diagnostics: library code reports here and never prints. The command line
+// decides how to show them and which exit code follows.
+#include <string>
+#include <vector>
+
+#include "asos/diag/source_loc.hpp"
+
+namespace asos {
+
+enum class Severity { Error, Warning, Note, Debug };
+
+struct Diagnostic {
+    Severity severity = Severity::Error;
+    SourceLoc loc;
+    std::string message;
+    std::string sourceLine;  // the text of loc.line, for the caret display; may be empty
+};
+
+class Diagnostics {
+public:
+    void report(Diagnostic d) { all_.push_back(std::move(d)); }
+    void error(SourceLoc loc, std::string message, std::string sourceLine = {}) {
+        report({Severity::Error, std::move(loc), std::move(message), std::move(sourceLine)});
+    }
+    void warning(SourceLoc loc, std::string message, std::string sourceLine = {}) {
+        report({Severity::Warning, std::move(loc), std::move(message), std::move(sourceLine)});
+    }
+    bool hasErrors() const {
+        for (const auto& d : all_)
+            if (d.severity == Severity::Error) return true;
+        return false;
+    }
+    const std::vector<Diagnostic>& all() const { return all_; }
+    void clear() { all_.clear(); }
+
+private:
+    std::vector<Diagnostic> all_;
+};
+
+// "file:line:col: error: message\n<source line>\n<spaces>^\n"
+std::string formatDiagnostic(const Diagnostic& d);
+
+}  // namespace asos

@@ -1,0 +1,19 @@
+#pragma once
+// The numeric types shared by every stage. Geometry is double precision;
+// acceleration structures may store floats internally (rounded outward).
+#include <limits>
+
+#include <glm/glm.hpp>
+
+namespace asos {
+
+using Vec2 = glm::dvec2;
+using Vec3 = glm::dvec3;
+using Vec4 = glm::dvec4;
+using Mat3 = glm::dmat3;
+using Mat4 = glm::dmat4;
+
+inline constexpr double kPi = 3.14159265358979323846;
+inline constexpr double kInfinity = std::numeric_limits<double>::infinity();
+
+}  // namespace asos

@@ -1,0 +1,134 @@
+#pragma once
+// The scene description: plain data produced by the interpreter and consumed
+// by every later stage (dump writer, scene build, renderer). No text, no
+// behaviour. Every record keeps the SourceLoc it came from. Field meanings and
+// defaults are POV-Ray 3.7's unless a comment says otherwise.
+#include <optional>
+#include <string>
+#include <variant>
+#include <vector>
+
+#include "asos/diag/source_loc.hpp"
+#include "asos/geometry/transform.hpp"
+#include "asos/geometry/vec.hpp"
+
+namespace asos {
+
+// rgb plus POV-Ray's filter and transmit.
+struct Color {
+    Vec3 rgb{0.0};
+    double filter = 0.0;
+    double transmit = 0.0;
+    bool operator==(const Color&) const = default;
+};
+
+// Our extension, `asos { eps E max M jitter on|off }`: unset fields inherit
+// (object/light -> global_settings -> command line -> built-in defaults).
+struct AsosOptions {
+    std::optional<double> eps;
+    std::optional<int> maxLevel;
+    std::optional<bool> jitter;
+    bool operator==(const AsosOptions&) const = default;
+};
+
+struct Camera {
+    enum class Projection { Perspective, Orthographic };
+    Projection projection = Projection::Perspective;
+    // Final vectors after look_at, angle and sky have been applied; the image
+    // plane is spanned by right and up at location + direction.
+    Vec3 location{0.0, 0.0, 0.0};
+    Vec3 direction{0.0, 0.0, 1.0};
+    Vec3 right{1.33, 0.0, 0.0};
+    Vec3 up{0.0, 1.0, 0.0};
+    SourceLoc loc;
+};
+
+struct AreaLight {
+    Vec3 axis1{0.0};
+    Vec3 axis2{0.0};
+    int size1 = 1;
+    int size2 = 1;
+    int adaptive = 0;
+    bool jitter = false;
+    bool circular = false;
+    bool orient = false;
+};
+
+struct Light {
+    Vec3 position{0.0};
+    Vec3 color{1.0};  // total power, as in POV-Ray
+    std::optional<AreaLight> area;
+    double fadeDistance = 0.0;  // 0: no fade
+    double fadePower = 0.0;
+    bool shadowless = false;
+    AsosOptions asos;
+    SourceLoc loc;
+};
+
+// Shapes in object space, parameters as written in the scene.
+struct SphereShape { Vec3 center{0.0}; double radius = 1.0; };
+struct BoxShape { Vec3 corner1{0.0}; Vec3 corner2{1.0}; };
+struct ConeShape {
+    Vec3 base{0.0}; double baseRadius = 1.0;
+    Vec3 cap{0.0, 1.0, 0.0}; double capRadius = 0.0;
+    bool open = false;
+};
+struct CylinderShape { Vec3 base{0.0}; Vec3 cap{0.0, 1.0, 0.0}; double radius = 1.0; bool open = false; };
+struct DiscShape { Vec3 center{0.0}; Vec3 normal{0.0, 1.0, 0.0}; double radius = 1.0; double holeRadius = 0.0; };
+// POV-Ray's vertex-list form: sub-polygons are closed by repeating their first vertex.
+struct PolygonShape { std::vector<Vec3> points; };
+struct PlaneShape { Vec3 normal{0.0, 1.0, 0.0}; double distance = 0.0; };
+
+using Shape = std::variant<SphereShape, BoxShape, ConeShape, CylinderShape, DiscShape,
+                           PolygonShape, PlaneShape>;
+
+struct Pigment {
+    enum class Kind { Solid, Checker };
+    Kind kind = Kind::Solid;
+    Color color1{};                       // the solid colour, or checker's first
+    Color color2{};                       // checker's second
+    Transform worldFromPattern;           // full transform of the pattern space
+};
+
+struct Finish {
+    Vec3 ambient{0.1};
+    double diffuse = 0.6;
+    double brilliance = 1.0;
+    double phong = 0.0;
+    double phongSize = 40.0;
+    double specular = 0.0;
+    double roughness = 0.05;
+    Vec3 reflection{0.0};
+};
+
+struct Texture {
+    Pigment pigment;
+    Finish finish;
+};
+
+struct Object {
+    Shape shape;
+    Transform worldFromObject;
+    Texture texture;
+    bool noShadow = false;
+    AsosOptions asos;
+    SourceLoc loc;
+};
+
+struct GlobalSettings {
+    double assumedGamma = 1.0;
+    int maxTraceLevel = 5;
+    Vec3 ambientLight{1.0};
+    AsosOptions asos;
+};
+
+struct SceneDescription {
+    Camera camera;
+    std::vector<Light> lights;
+    std::vector<Object> objects;  // unions are flattened; order of appearance
+    GlobalSettings globals;
+    Color background{};
+    double version = 3.7;
+};
+
+}  // namespace asos

@@ -1,0 +1,42 @@
+#include "asos/diag/diagnostics.hpp"
+
+namespace asos {
+
+namespace {
+const char* severityName(Severity s) {
+    switch (s) {
+    case Severity::Error: return "error";
+    case Severity::Warning: return "warning";
+    case Severity::Note: return "note";
+    case Severity::Debug: return "debug";
+    }
+    return "error";
+}
+}  // namespace
+
+std::string formatDiagnostic(const Diagnostic& d) {
+    std::string out;
+    if (d.loc.file) {
+        out += *d.loc.file;
+        if (d.loc.line > 0) {
+            out += ':' + std::to_string(d.loc.line);
+            if (d.loc.column > 0) out += ':' + std::to_string(d.loc.column);
+        }
+        out += ": ";
+    }
+    out += severityName(d.severity);
+    out += ": ";
+    out += d.message;
+    out += '\n';
+    if (!d.sourceLine.empty()) {
+        out += d.sourceLine;
+        out += '\n';
+        // Keep tabs in the caret line so the caret lines up under the source.
+        for (int i = 1; i < d.loc.column && i - 1 < static_cast<int>(d.sourceLine.size()); ++i)
+            out += d.sourceLine[i - 1] == '\t' ? '\t' : ' ';
+        out += "^\n";
+    }
+    return out;
+}
+
+}  // namespace asos
