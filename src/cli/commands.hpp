@@ -1,7 +1,8 @@
 #pragma once
-// Each subcommand of the `asos` program lives in its own file and registers
-// itself here. A command sets `exitCode` from its callback; only the command
-// line prints and decides the exit code.
+// Each subcommand of the `asos` program lives in its own file (cmd_<name>.cpp)
+// and is registered by main.cpp with one line. A command sets
+// `result.exitCode` from its callback; only the command line prints and
+// decides the exit code.
 #include <CLI/CLI.hpp>
 
 namespace asos::cli {
@@ -9,5 +10,9 @@ namespace asos::cli {
 struct CommandResult {
     int exitCode = 0;
 };
+
+// `asos bench …`: programs that print figures. Each benchmark registers under
+// the `bench` subcommand returned by addBenchCommand.
+CLI::App* addBenchCommand(CLI::App& app);
 
 }  // namespace asos::cli

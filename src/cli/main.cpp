@@ -1,12 +1,15 @@
-#include <cstdio>
-
 #include "cli/commands.hpp"
 
 int main(int argc, char** argv) {
+    using namespace asos::cli;
     CLI::App app{"asos: ray tracing with adaptive supersampling in object space"};
     app.require_subcommand(1);
-    asos::cli::CommandResult result;
+    CommandResult result;
+
     // Subcommands register here, one line each.
+    [[maybe_unused]] CLI::App* bench = addBenchCommand(app);
+    // Benchmarks register under `bench`, one line each.
+
     try {
         app.parse(argc, argv);
     } catch (const CLI::ParseError& e) {
