@@ -1,0 +1,55 @@
+#pragma once
+// The paper's stopping rule for subdivision ("Subdivision Phase" and
+// "Proximity to One Edge"), generalised to several objects in a pixel.
+//
+// At level K every marginal K-pyray is tallied against each object it is
+// marginal on: `in` when its K-ray hits that object, `out` otherwise. For one
+// object, L = max(in, out) and subdivision stops when L / 2^(2K) <= EPS, or
+// L / 2^(2K+1) <= EPS when every marginal pyray is near a single edge of it.
+// With several objects the bound is the sum of the per-object terms: the
+// projected coverage of object o can change only inside the pyrays marginal on
+// o, its in-pyrays can only lose coverage and its out-pyrays only gain, so
+// |Δcoverage(o)| <= max(in_o, out_o) · 4^-K (halved when all of o's marginal
+// pyrays are near one straight edge), and the change of a pixel intensity in
+// [0,1] is at most the sum of the coverage changes. With a single object the
+// sum is exactly the paper's criterion. docs/algorithm.md has the argument.
+#include <cstdint>
+#include <vector>
+
+namespace asos {
+
+class SubdivisionTally {
+public:
+    // One marginal pyray's verdict on one object.
+    void add(std::uint32_t object, bool centralRayHits, bool singleEdge) {
+        Entry& e = entry(object);
+        (centralRayHits ? e.in : e.out) += 1;
+        e.allSingleEdge = e.allSingleEdge && singleEdge;
+    }
+
+    // The paper's estimate of the largest change of the pixel intensity that
+    // subdividing all marginal K-pyrays could produce, in units of the pixel.
+    double changeBound(int level) const;
+
+    bool empty() const { return entries_.empty(); }
+    void clear() { entries_.clear(); }
+
+    struct Entry {
+        std::uint32_t object = 0;
+        int in = 0;
+        int out = 0;
+        bool allSingleEdge = true;
+    };
+    const std::vector<Entry>& entries() const { return entries_; }
+
+private:
+    Entry& entry(std::uint32_t object);
+    std::vector<Entry> entries_;  // few objects per pixel: a flat vector beats a map
+};
+
+// Stop subdividing at `level` when the bound is within eps, or at maxLevel.
+inline bool stopSubdividing(const SubdivisionTally& tally, int level, double eps, int maxLevel) {
+    return level >= maxLevel || tally.changeBound(level) <= eps;
+}
+
+}  // namespace asos

@@ -1,0 +1,66 @@
+#include <catch2/catch.hpp>
+
+#include "asos/render/subdivision_criterion.hpp"
+
+using namespace asos;
+
+namespace {
+SubdivisionTally tally(int in, int out, bool singleEdge, std::uint32_t object = 0) {
+    SubdivisionTally t;
+    for (int i = 0; i < in; ++i) t.add(object, true, singleEdge);
+    for (int i = 0; i < out; ++i) t.add(object, false, singleEdge);
+    return t;
+}
+}  // namespace
+
+TEST_CASE("The paper's Table 1: a polygon inside a pixel, EPS = 1/16", "[criterion]") {
+    // K, in, out, L/2^(2K) as printed in the paper.
+    struct Row { int k, in, out; double bound; bool stop; };
+    const Row rows[] = {{1, 0, 3, 0.7500, false},
+                        {2, 0, 5, 0.3125, false},
+                        {3, 4, 8, 0.1250, false},
+                        {4, 13, 15, 0.0586, true}};
+    for (const Row& r : rows) {
+        const SubdivisionTally t = tally(r.in, r.out, false);
+        CHECK(t.changeBound(r.k) == Approx(r.bound).margin(5e-5));
+        CHECK(stopSubdividing(t, r.k, 1.0 / 16, 8) == r.stop);
+    }
+}
+
+TEST_CASE("The paper's Table 2: one edge, EPS = 1/16, stops at level 3", "[criterion]") {
+    struct Row { int k, in, out; double bound; bool stop; };
+    const Row rows[] = {{1, 1, 2, 0.2500, false}, {2, 3, 3, 0.0938, false}, {3, 6, 7, 0.0547, true}};
+    for (const Row& r : rows) {
+        const SubdivisionTally t = tally(r.in, r.out, true);
+        CHECK(t.changeBound(r.k) == Approx(r.bound).margin(5e-5));
+        CHECK(stopSubdividing(t, r.k, 1.0 / 16, 8) == r.stop);
+    }
+}
+
+TEST_CASE("One edge: the paper's bound K >= log2(1/EPS) - 1 always stops", "[criterion]") {
+    // A single edge crosses at most 2^K of the 4^K K-pyrays, so L <= 2^K.
+    for (int e = 2; e <= 10; ++e) {
+        const double eps = std::ldexp(1.0, -e);
+        const int k = e - 1;
+        const SubdivisionTally worst = tally(1 << k, 0, true);
+        CHECK(stopSubdividing(worst, k, eps, 16));
+    }
+}
+
+TEST_CASE("Several objects: the per-object terms add up", "[criterion]") {
+    SubdivisionTally t;
+    t.add(7, true, false);
+    t.add(7, false, false);
+    t.add(7, false, false);  // object 7: L = 2
+    t.add(9, true, true);    // object 9: L = 1, single edge: halved
+    CHECK(t.changeBound(1) == Approx((2.0 + 0.5) / 4.0));
+    // A pyray marginal on two objects counts for both; one object alone reduces to the paper.
+    CHECK(tally(5, 3, false, 7).changeBound(2) == Approx(5.0 / 16.0));
+}
+
+TEST_CASE("MAX always stops, whatever the bound", "[criterion]") {
+    const SubdivisionTally t = tally(100, 100, false);
+    CHECK_FALSE(stopSubdividing(t, 3, 1e-9, 4));
+    CHECK(stopSubdividing(t, 4, 1e-9, 4));
+    CHECK(stopSubdividing(SubdivisionTally{}, 0, 1.0 / 64, 4));
+}
