@@ -7,7 +7,7 @@
 
 using namespace asos;
 
-TEST_CASE("Pixel random numbers depend only on seed, pixel, stream and index", "[sampling]") {
+TEST_CASE("Pixel random numbers depend only on the seed and pixel and stream and index", "[sampling]") {
     const PixelRandom a(42, 10, 20), b(42, 10, 20);
     for (std::uint64_t i = 0; i < 100; ++i)
         CHECK(a.uniform(SampleStream::PixelJitter, i) == b.uniform(SampleStream::PixelJitter, i));
@@ -25,7 +25,7 @@ TEST_CASE("Pixel random numbers depend only on seed, pixel, stream and index", "
           mix64(mix64(mix64(mix64(mix64(1) ^ 2) ^ 3) ^ 1000) ^ 4));
 }
 
-TEST_CASE("Pixel random numbers are uniform in [0,1)", "[sampling]") {
+TEST_CASE("Pixel random numbers are uniform on the unit interval", "[sampling]") {
     // 16 bins over 64k numbers drawn across pixels and indices: chi-square
     // with 15 degrees of freedom stays far below 40 (p < 0.0005) for a good
     // generator. The inputs are fixed, so the test is deterministic.
