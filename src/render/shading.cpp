@@ -4,15 +4,13 @@
 
 namespace asos {
 
-namespace {
-// POV-Ray's SMALL_TOLERANCE, added before flooring in the checker pattern so
-// that surfaces lying on cell boundaries (a plane at y = 0) fall in one cell.
-constexpr double kSmallTolerance = 0.001;
-}  // namespace
-
 int checkerValue(const Vec3& p) {
-    const double sum = std::floor(p.x + kSmallTolerance) + std::floor(p.y + kSmallTolerance) +
-                       std::floor(p.z + kSmallTolerance);
+    // POV-Ray 3.7 adds EPSILON (1e-10) before flooring, so that a surface on a
+    // cell boundary (a plane at y = 0, hit at y = -1e-16) falls in one cell.
+    // Measured with povray: a pattern point 1e-10 below an integer counts as
+    // the integer, 1.1e-10 below does not (older versions used 0.001).
+    const double sum = std::floor(p.x + kPovEpsilon) + std::floor(p.y + kPovEpsilon) +
+                       std::floor(p.z + kPovEpsilon);
     // POV-Ray converts the sum to int and tests its low bit; fmod keeps huge
     // coordinates from overflowing the conversion.
     return std::fabs(std::fmod(sum, 2.0)) == 1.0 ? 1 : 0;

@@ -141,10 +141,13 @@ TEST_CASE("Checker follows POV-Ray's cell rule in pattern space", "[shading]") {
     CHECK(checkerValue({1.5, 1.5, 0.5}) == 0);
     CHECK(checkerValue({-0.5, 0.5, 0.5}) == 1);
     CHECK(checkerValue({-0.5, -0.5, 0.5}) == 0);
-    // SMALL_TOLERANCE: a plane at y = 0 (or a hair below) is in cell y = 0.
-    CHECK(checkerValue({0.5, -0.0005, 0.5}) == 0);
-    CHECK(checkerValue({0.5, -0.002, 0.5}) == 1);
-    CHECK(checkerValue({0.9995, 0.5, 0.5}) == 1);
+    // POV-Ray 3.7's tolerance (measured): a point 1e-10 below a cell
+    // boundary is in the upper cell, 1.1e-10 below is not.
+    CHECK(checkerValue({0.5, -1e-16, 0.5}) == 0);
+    CHECK(checkerValue({0.5, -1e-10, 0.5}) == 0);
+    CHECK(checkerValue({0.5, -1.1e-10, 0.5}) == 1);
+    CHECK(checkerValue({0.5, -0.0005, 0.5}) == 1);
+    CHECK(checkerValue({0.9995, 0.5, 0.5}) == 0);
     CHECK(checkerValue({1e12 + 1.5, 0.5, 0.5}) == 1);
 
     Pigment p;
