@@ -76,8 +76,7 @@ struct MiniTracer {
         if (!hit) return backgroundColor(scene);
         LightSample sample;
         auto lightArriving = [&](const ShadingPoint& p) -> std::span<const LightSample> {
-            const Vec3 toLight = p.light->position - p.position;
-            sample = {glm::normalize(toLight), glm::length(toLight), p.light->color};
+            sample = pointLightSample(p.light->position, p.light->color, p.position);
             if (!p.light->shadowless &&
                 nearest({p.position, sample.direction}, kShadowTolerance,
                         sample.distance - kShadowTolerance))

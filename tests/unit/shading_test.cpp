@@ -226,3 +226,14 @@ TEST_CASE("Reflection recurses with POV-Ray's trace level and ADC bailout", "[sh
     CHECK(shadeSurface({hit, t, ray, 1, 1.0}, {}, s, noLights, rec) == Vec3(0.0));
     CHECK(rec.calls == 0);
 }
+
+TEST_CASE("A point light sample points at the light and scales by the lit fraction", "[shading]") {
+    const LightSample s = pointLightSample({3, 4, 0}, {1, 0.5, 0.25}, {0, 0, 0}, 0.5);
+    CHECK(near(s.direction, {0.6, 0.8, 0}));
+    CHECK(s.distance == Approx(5.0));
+    CHECK(near(s.color, {0.5, 0.25, 0.125}));
+    // A light at the point itself lights nothing (no direction).
+    const Light light;
+    CHECK(directLight(Finish{}, Vec3(1.0), {0, 1, 0}, {0, -1, 0}, light,
+                      pointLightSample({1, 1, 1}, Vec3(1.0), {1, 1, 1})) == Vec3(0.0));
+}

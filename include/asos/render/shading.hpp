@@ -40,6 +40,16 @@ struct LightSample {
     Vec3 color{0.0};                // light colour x lit fraction x sample weight, before fade
 };
 
+// The one sample of a point light (or of any light taken at one point, as
+// POV-Ray does for an area light's diffuse and highlights: its centre, with
+// the colour scaled by the lit fraction).
+inline LightSample pointLightSample(const Vec3& lightPosition, const Vec3& lightColor,
+                                    const Vec3& point, double litFraction = 1.0) {
+    const Vec3 d = lightPosition - point;
+    const double distance = glm::length(d);
+    return {distance > 0.0 ? d / distance : Vec3(0.0), distance, lightColor * litFraction};
+}
+
 // What the light callback is asked about.
 struct ShadingPoint {
     int lightIndex = 0;
