@@ -2,10 +2,11 @@
 // itself. Each scene in tests/golden/povray/*.pov is mirrored here as a
 // SceneDescription and traced with a minimal test-only tracer (spheres and
 // planes, point-light shadow rays, POV-Ray's intersection tolerances), one ray
-// through each pixel centre, shaded with asos::shadeSurface and written with
-// asos::writeImage. The reference PNGs are POV-Ray's own renders (without
-// anti-aliasing); scripts/update-goldens.sh regenerates them by running
-// `povray` (ASOS_UPDATE_GOLDENS=1); a failing comparison never rewrites them.
+// through each pixel centre or asos::estimateAdaptive, shaded with
+// asos::shadeSurface and written with asos::writeImage. The reference PNGs are
+// POV-Ray's own renders (-A, or +AM2 -J); scripts/update-goldens.sh
+// regenerates them by running `povray` (ASOS_UPDATE_GOLDENS=1); a failing
+// comparison never rewrites them.
 #include <catch2/catch.hpp>
 
 #include <cstdlib>
@@ -16,6 +17,7 @@
 
 #include "asos/image/image_io.hpp"
 #include "asos/render/camera.hpp"
+#include "asos/render/classic_methods.hpp"
 #include "asos/render/shading.hpp"
 
 using namespace asos;
@@ -89,12 +91,28 @@ struct MiniTracer {
                             lightArriving, reflected);
     }
 
+    // Without anti-aliasing: one ray through each pixel centre.
     Image render() const {
         const CameraModel camera(scene.camera, kWidth, kHeight);
         Image image = Image::rgb(kWidth, kHeight);
         for (int y = 0; y < kHeight; ++y)
             for (int x = 0; x < kWidth; ++x)
                 image.setRgb(x, y, radiance(camera.pixelCenterRay(x, y), 1, 1.0));
+        return image;
+    }
+
+    // With the adaptive method (POV-Ray's +AM2, no jitter).
+    Image renderAdaptive(const AdaptiveSettings& settings) const {
+        const CameraModel camera(scene.camera, kWidth, kHeight);
+        auto eye = [&](const Ray& r) { return radiance(r, 1, 1.0); };
+        Image image = Image::rgb(kWidth, kHeight);
+        for (int y = 0; y < kHeight; ++y)
+            for (int x = 0; x < kWidth; ++x) {
+                const PixelCorners corners{eye(camera.ray(x, y)), eye(camera.ray(x + 1, y)),
+                                           eye(camera.ray(x, y + 1)), eye(camera.ray(x + 1, y + 1)), 1};
+                image.setRgb(x, y, estimateAdaptive(camera, x, y, corners, settings,
+                                                    PixelRandom(0, x, y), eye).color);
+            }
         return image;
     }
 };
@@ -228,26 +246,28 @@ SceneDescription reflectionScene() {
     return s;
 }
 
-void crossCheck(const std::string& name, const SceneDescription& scene) {
+// Compares `rendered` with POV-Ray's render of tests/golden/povray/<pov>.pov
+// made with `povrayOptions`, stored as <referenceName>.png.
+void crossCheck(const std::string& pov, const std::string& referenceName,
+                const std::string& povrayOptions, const Image& rendered) {
     const fs::path golden = fs::path(ASOS_SOURCE_DIR) / "tests" / "golden" / "povray";
-    const fs::path pov = golden / (name + ".pov");
-    const fs::path reference = golden / (name + ".png");
+    const fs::path scene = golden / (pov + ".pov");
+    const fs::path reference = golden / (referenceName + ".png");
     const fs::path outDir = fs::path(ASOS_BINARY_DIR) / "test-output" / "povray";
     fs::create_directories(outDir);
 
     const char* update = std::getenv("ASOS_UPDATE_GOLDENS");
     if (update && *update) {
         // The reference is POV-Ray's render, never ours.
-        const std::string command = "povray -D -GA +I'" + pov.string() + "' +O'" +
+        const std::string command = "povray -D -GA +I'" + scene.string() + "' +O'" +
                                     reference.string() + "' +W" + std::to_string(kWidth) + " +H" +
-                                    std::to_string(kHeight) + " -A +FN8 > '" +
-                                    (outDir / (name + ".povray.log")).string() + "' 2>&1";
+                                    std::to_string(kHeight) + " " + povrayOptions + " +FN8 > '" +
+                                    (outDir / (referenceName + ".povray.log")).string() + "' 2>&1";
         INFO(command);
         REQUIRE(std::system(command.c_str()) == 0);
     }
 
-    const Image rendered = MiniTracer{scene}.render();
-    const fs::path ours = outDir / (name + ".png");
+    const fs::path ours = outDir / (referenceName + ".png");
     const IoStatus written = writeImage(rendered, ours);
     REQUIRE(written.ok());
     const ReadResult mine = readImage(ours);
@@ -258,9 +278,13 @@ void crossCheck(const std::string& name, const SceneDescription& scene) {
     const ImageComparison cmp = compareImages(mine.image, theirs.image);
     if (!cmp.passed && cmp.error.empty())
         (void)writeImage(absoluteDifference(mine.image, theirs.image),
-                         outDir / (name + ".diff.png"), {.transfer = Transfer::Raw});
-    INFO(name << " against POV-Ray: " << cmp.summary() << "; ours: " << ours.string());
+                         outDir / (referenceName + ".diff.png"), {.transfer = Transfer::Raw});
+    INFO(referenceName << " against POV-Ray: " << cmp.summary() << "; ours: " << ours.string());
     CHECK(cmp.passed);
+}
+
+void crossCheck(const std::string& name, const SceneDescription& scene) {
+    crossCheck(name, name, "-A", MiniTracer{scene}.render());
 }
 
 }  // namespace
@@ -279,4 +303,14 @@ TEST_CASE("Lighting model matches POV-Ray", "[povray][golden]") {
 
 TEST_CASE("Recursive reflection matches POV-Ray", "[povray][golden]") {
     crossCheck("reflection", reflectionScene());
+}
+
+TEST_CASE("Adaptive anti-aliasing matches POV-Ray's +AM2", "[povray][golden]") {
+    // POV-Ray's defaults: threshold 0.3, depth +R3 (two subdivisions); -J
+    // turns its jitter off so that the sample positions coincide.
+    const AdaptiveSettings settings;
+    crossCheck("lighting", "lighting_am2", "+A0.3 +AM2 +R3 -J",
+               MiniTracer{lightingScene()}.renderAdaptive(settings));
+    crossCheck("flat_perspective", "flat_perspective_am2", "+A0.3 +AM2 +R3 -J",
+               MiniTracer{flatScene(Camera::Projection::Perspective)}.renderAdaptive(settings));
 }

@@ -4,6 +4,7 @@
 // the image's (16:9). Mirrored in tests/unit/povray_crosscheck_test.cpp;
 // rendered by scripts/update-goldens.sh as
 //   povray -D +I<this> +O<this>.png +W160 +H90 -A +FN8
+// (and, for the adaptive cross-check, with +A0.3 +AM2 +R3 -J into <this>_am2.png)
 #version 3.7;
 global_settings { assumed_gamma 1.0 }
 #declare Loc = <1.5, 2.2, -6>;
