@@ -101,6 +101,10 @@ TEST_CASE("Grid sampling converges on a straight edge within 1/N", "[methods]") 
         CHECK(worst <= 1.0 / n + 1e-12);
     }
     CHECK_THROWS_AS(estimateGrid(cam, 0, 0, 0, HalfPlane{1, 0, 0.5, 1, 1}), std::invalid_argument);
+    CHECK_THROWS_AS(estimateGrid(cam, 0, 0, kMaxSamplesPerSide + 1, HalfPlane{1, 0, 0.5, 1, 1}),
+                    std::invalid_argument);
+    CHECK_THROWS_AS(estimateJitter(cam, 0, 0, -2, PixelRandom(0, 0, 0), HalfPlane{1, 0, 0.5, 1, 1}),
+                    std::invalid_argument);
 }
 
 TEST_CASE("Jittered sampling converges faster than 1/N", "[methods]") {
@@ -195,6 +199,27 @@ TEST_CASE("Adaptive sampling subdivides a contrasting edge to its depth", "[meth
         CHECK(worst <= 0.5 * std::pow(2.0, depth + 1) / std::pow(4.0, depth) + 1e-12);
         CHECK(subdividedToDepth == edgePixels);
     }
+}
+
+TEST_CASE("Adaptive settings outside their range are rejected", "[methods]") {
+    CHECK(checkAdaptiveSettings({}).empty());
+    AdaptiveSettings s;
+    s.depth = kMaxAdaptiveDepth + 1;
+    CHECK_THAT(checkAdaptiveSettings(s), Catch::Contains("depth"));
+    s.depth = -1;
+    CHECK_FALSE(checkAdaptiveSettings(s).empty());
+    s = {};
+    s.threshold = -0.1;
+    CHECK_THAT(checkAdaptiveSettings(s), Catch::Contains("threshold"));
+    s = {};
+    s.jitterAmount = std::nan("");
+    CHECK_FALSE(checkAdaptiveSettings(s).empty());
+    s.jitterAmount = 1.0;
+    s.depth = 99;
+    const CameraModel cam = imageSpaceCamera(1, 1);
+    CHECK_THROWS_AS(estimateAdaptive(cam, 0, 0, PixelCorners{}, s, PixelRandom(0, 0, 0),
+                                     [](const Ray&) { return Vec3(0.0); }),
+                    std::invalid_argument);
 }
 
 TEST_CASE("Adaptive thresholds compare antialias_gamma-encoded colours like POV-Ray", "[methods]") {

@@ -43,6 +43,9 @@ struct PrimarySample {
 // pixel (cx, cy) with this index.
 inline constexpr std::uint32_t kCornerSample = 0xffffffffu;
 
+// The largest N of the N x N grid and jitter methods.
+inline constexpr int kMaxSamplesPerSide = 1024;
+
 namespace detail {
 template <class Radiance>
 Vec3 callRadiance(Radiance& radiance, const Ray& ray, const PrimarySample& sample) {
@@ -51,8 +54,11 @@ Vec3 callRadiance(Radiance& radiance, const Ray& ray, const PrimarySample& sampl
     else
         return Vec3(radiance(ray));
 }
-inline void requirePositive(int n, const char* what) {
-    if (n < 1) throw std::invalid_argument(std::string(what) + " must be at least 1");
+inline void requireSampleCount(int n, const char* what) {
+    if (n < 1 || n > kMaxSamplesPerSide)
+        throw std::invalid_argument(std::string(what) + " must be between 1 and " +
+                                    std::to_string(kMaxSamplesPerSide) + ", not " +
+                                    std::to_string(n));
 }
 }  // namespace detail
 
@@ -64,10 +70,10 @@ PixelResult estimateSingle(const CameraModel& camera, int x, int y, Radiance&& r
 }
 
 // n x n rays at the sub-pixel centres (x + (i + 1/2)/n, y + (j + 1/2)/n).
-// Throws std::invalid_argument for n < 1.
+// Throws std::invalid_argument unless 1 <= n <= kMaxSamplesPerSide.
 template <class Radiance>
 PixelResult estimateGrid(const CameraModel& camera, int x, int y, int n, Radiance&& radiance) {
-    detail::requirePositive(n, "grid size");
+    detail::requireSampleCount(n, "grid size");
     Vec3 sum(0.0);
     for (int j = 0; j < n; ++j)
         for (int i = 0; i < n; ++i) {
@@ -80,11 +86,11 @@ PixelResult estimateGrid(const CameraModel& camera, int x, int y, int n, Radianc
 
 // n x n stratified jittered rays: one uniform sample in each sub-pixel, its
 // position drawn from the pixel's random numbers (SampleStream::PixelJitter).
-// Throws std::invalid_argument for n < 1.
+// Throws std::invalid_argument unless 1 <= n <= kMaxSamplesPerSide.
 template <class Radiance>
 PixelResult estimateJitter(const CameraModel& camera, int x, int y, int n, const PixelRandom& rng,
                            Radiance&& radiance) {
-    detail::requirePositive(n, "jitter grid size");
+    detail::requireSampleCount(n, "jitter grid size");
     Vec3 sum(0.0);
     for (int j = 0; j < n; ++j)
         for (int i = 0; i < n; ++i) {
@@ -106,6 +112,11 @@ struct AdaptiveSettings {
     double assumedGamma = 1.0;  // the scene's working gamma, decoded first
 };
 inline constexpr int kMaxAdaptiveDepth = 8;
+
+// Empty when the settings are usable; otherwise what is wrong with them
+// (depth outside 0..kMaxAdaptiveDepth, a negative or non-finite threshold,
+// jitter amount or gamma).
+std::string checkAdaptiveSettings(const AdaptiveSettings& settings);
 
 // Whether two colours differ enough to subdivide: POV-Ray's
 // ColourDistance(encode(a), encode(b)) >= threshold, the distance being the
@@ -134,11 +145,14 @@ inline std::uint32_t ownedCornerRays(int x, int y, int width, int height) {
 // alone decided). Sub-sample positions lie on a (2^depth + 1)^2 lattice over
 // the pixel and are traced once each; with jitter each moves by up to
 // +-jitterAmount / (2 (2^(depth+1) + 1)) pixels, POV-Ray's jitter scale.
+// Throws std::invalid_argument for settings checkAdaptiveSettings rejects.
 template <class Radiance>
 PixelResult estimateAdaptive(const CameraModel& camera, int x, int y, const PixelCorners& corners,
                              const AdaptiveSettings& settings, const PixelRandom& rng,
                              Radiance&& radiance) {
-    const int depth = std::clamp(settings.depth, 0, kMaxAdaptiveDepth);
+    if (std::string error = checkAdaptiveSettings(settings); !error.empty())
+        throw std::invalid_argument(error);
+    const int depth = settings.depth;
     const int size = 1 << depth;  // lattice cells per pixel side
     const int side = size + 1;
     const double jitterScale =
