@@ -107,6 +107,29 @@ TEST_CASE("Grid sampling converges on a straight edge within 1/N", "[methods]") 
                     std::invalid_argument);
 }
 
+TEST_CASE("Grid and jitter sampling measure a disc's area", "[methods]") {
+    // A disc of radius 0.3 inside the pixel covers pi 0.09 of it. A grid's
+    // error is bounded by the samples within half a cell of the rim: at most
+    // about perimeter / N.
+    const CameraModel cam = imageSpaceCamera(1, 1);
+    const double r = 0.3, exact = kPi * r * r;
+    auto disc = [&](const Ray& ray) {
+        return Vec3(glm::length(imagePoint(ray, 1, 1) - Vec2(0.52, 0.47)) < r ? 1.0 : 0.0);
+    };
+    for (int n : {8, 16, 32, 64}) {
+        const double gridError = std::fabs(estimateGrid(cam, 0, 0, n, disc).color.x - exact);
+        INFO("grid " << n << " error " << gridError);
+        CHECK(gridError <= 2.0 * kPi * r / n);
+        double jitterSq = 0.0;
+        for (int seed = 0; seed < 32; ++seed) {
+            const double e = estimateJitter(cam, 0, 0, n, PixelRandom(seed, 0, 0), disc).color.x - exact;
+            jitterSq += e * e;
+        }
+        INFO("jitter " << n << " RMS error " << std::sqrt(jitterSq / 32));
+        CHECK(std::sqrt(jitterSq / 32) <= 2.0 * std::sqrt(2.0 * kPi * r) * std::pow(n, -1.5));
+    }
+}
+
 TEST_CASE("Jittered sampling converges faster than 1/N", "[methods]") {
     const CameraModel cam = imageSpaceCamera(1, 1);
     const auto edges = edgesThroughPixel(18);
