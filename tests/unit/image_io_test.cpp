@@ -178,3 +178,20 @@ TEST_CASE("Image comparison follows OpenImageIO's test-suite thresholds", "[imag
     CHECK_FALSE(mismatch.passed);
     CHECK_FALSE(mismatch.error.empty());
 }
+
+TEST_CASE("Images crop to a rectangle", "[image]") {
+    Image img(5, 4, {"a", "b"});
+    for (int y = 0; y < 4; ++y)
+        for (int x = 0; x < 5; ++x) {
+            img.at(x, y, 0) = float(10 * y + x);
+            img.at(x, y, 1) = -float(10 * y + x);
+        }
+    const Image c = img.cropped(1, 2, 4, 4);
+    REQUIRE(c.width() == 3);
+    REQUIRE(c.height() == 2);
+    CHECK(c.channelNames() == img.channelNames());
+    CHECK(c.at(0, 0, 0) == 21.0f);
+    CHECK(c.at(2, 1, 1) == -33.0f);
+    CHECK_THROWS_AS(img.cropped(0, 0, 6, 1), std::invalid_argument);
+    CHECK_THROWS_AS(img.cropped(2, 2, 2, 3), std::invalid_argument);
+}

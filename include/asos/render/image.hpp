@@ -2,6 +2,7 @@
 // A float image buffer: width x height pixels of named channels, stored
 // interleaved by scanline, top row first. Rendered colour is linear RGB
 // (channels R, G, B); AOVs use their own channel names.
+#include <algorithm>
 #include <cstddef>
 #include <span>
 #include <stdexcept>
@@ -55,6 +56,19 @@ public:
         p[0] = static_cast<float>(c.x);
         p[1] = static_cast<float>(c.y);
         p[2] = static_cast<float>(c.z);
+    }
+
+    // The pixels [x0, x1) x [y0, y1) as a new image (a rendered --region
+    // without the unrendered surround). Throws std::invalid_argument when the
+    // rectangle is empty or not inside the image.
+    Image cropped(int x0, int y0, int x1, int y1) const {
+        if (x0 < 0 || y0 < 0 || x1 > width_ || y1 > height_ || x1 <= x0 || y1 <= y0)
+            throw std::invalid_argument("crop rectangle is empty or not inside the image");
+        Image out(x1 - x0, y1 - y0, names_);
+        const std::size_t rowValues = static_cast<std::size_t>(x1 - x0) * names_.size();
+        for (int y = y0; y < y1; ++y)
+            std::copy_n(data_.begin() + index(x0, y), rowValues, out.data_.begin() + out.index(0, y - y0));
+        return out;
     }
 
     const std::vector<float>& data() const { return data_; }
