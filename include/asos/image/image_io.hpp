@@ -1,0 +1,85 @@
+#pragma once
+// Image files through OpenImageIO (src/image/image_io.cpp is the only
+// translation unit that includes it). Nothing here prints: every failure comes
+// back as a message.
+#include <cstddef>
+#include <filesystem>
+#include <string>
+
+#include "asos/render/image.hpp"
+
+namespace asos {
+
+// How samples are stored. Auto picks by extension: 8-bit for .png, .tif,
+// .jpg and the other integer formats, 32-bit float for .exr, .hdr and .pfm.
+enum class SampleFormat { Auto, UInt8, UInt16, Half, Float };
+
+// How values are encoded. Auto: integer formats get the sRGB transfer
+// function (as POV-Ray 3.7 writes them, asos/image/encoding.hpp), float
+// formats stay linear. Raw writes the values as they are (clipped and
+// quantised for integer formats): for images already in display values, such
+// as the samples heat map.
+enum class Transfer { Auto, Srgb, Linear, Raw };
+
+struct WriteOptions {
+    SampleFormat format = SampleFormat::Auto;
+    Transfer transfer = Transfer::Auto;
+    double assumedGamma = 1.0;  // the scene's working gamma (global_settings)
+};
+
+struct IoStatus {
+    std::string error;  // empty on success
+    bool ok() const { return error.empty(); }
+};
+
+// Writes `image` to `path`, choosing the file format by extension. The data
+// goes to a temporary file in the same directory, which is renamed to `path`
+// only when complete, so a failed or interrupted write never leaves a
+// half-written image under the requested name. Integer formats encode every
+// channel; linear float formats keep the channel names (EXR).
+IoStatus writeImage(const Image& image, const std::filesystem::path& path,
+                    const WriteOptions& options = {});
+
+// Whether `path`'s extension names a format OpenImageIO can write, and can
+// store the given sample format. Empty error when it can.
+IoStatus checkOutputPath(const std::filesystem::path& path, SampleFormat format = SampleFormat::Auto);
+
+struct ReadResult {
+    Image image;
+    std::string error;  // empty on success
+    bool ok() const { return error.empty(); }
+};
+
+// Reads the first subimage as float, values as stored (integer formats scaled
+// to [0, 1], no colour conversion): a PNG reads back its encoded values.
+ReadResult readImage(const std::filesystem::path& path);
+
+// OpenImageIO's test-suite rule (testsuite/runtest.py, idiff): a comparison
+// fails when more than `failPercent` percent of the pixels have a channel
+// differing by more than `failValue`, or when any value differs by more than
+// `hardFail`. Pixels over `warnValue` are counted as warnings.
+struct CompareThresholds {
+    double failValue = 0.004;
+    double failPercent = 0.02;
+    double hardFail = 0.012;
+    double warnValue = 0.008;
+};
+
+struct ImageComparison {
+    double meanError = 0.0, rmsError = 0.0, psnr = 0.0, maxError = 0.0;
+    int maxX = 0, maxY = 0, maxChannel = 0;  // where the largest difference is
+    std::size_t failPixels = 0, warnPixels = 0, pixels = 0;
+    bool passed = false;
+    std::string error;  // set when the images cannot be compared (sizes differ)
+
+    // One line: verdict, mean, RMS, max error and where it is.
+    std::string summary() const;
+};
+
+ImageComparison compareImages(const Image& a, const Image& b, const CompareThresholds& thresholds = {});
+
+// |a - b| per value, for failure reports. Sizes and channels must match
+// (std::invalid_argument otherwise).
+Image absoluteDifference(const Image& a, const Image& b);
+
+}  // namespace asos

@@ -1,0 +1,168 @@
+#pragma once
+// POV-Ray 3.7's local lighting model for what the scene language accepts:
+// pigment (solid, checker), ambient x ambient_light, diffuse with brilliance,
+// phong + phong_size, specular + roughness, reflection traced recursively up
+// to max_trace_level (with POV-Ray's adc_bailout), light fade, shadowless
+// lights. The formulas and their sources are in docs/rendering.md; each was
+// checked against renders by the installed povray
+// (tests/unit/povray_crosscheck_test.cpp).
+//
+// Shading knows nothing about the scene's geometry. The caller supplies:
+//  - for each light, the light arriving at the point, as a list of samples
+//    (direction, distance, colour): one for a point light, several weighted
+//    ones for an area light; shadows are already applied to their colours;
+//  - the colour seen along the reflected ray.
+// All colours are linear RGB in the scene's working space.
+#include <algorithm>
+#include <span>
+
+#include "asos/geometry/hit.hpp"
+#include "asos/geometry/ray.hpp"
+#include "asos/geometry/vec.hpp"
+#include "asos/scene/description.hpp"
+
+namespace asos {
+
+// POV-Ray's EPSILON (a light with cos(angle) below it lights nothing).
+inline constexpr double kPovEpsilon = 1e-10;
+// POV-Ray's default adc_bailout: rays whose weight falls below it are not traced.
+inline constexpr double kDefaultAdcBailout = 1.0 / 255.0;
+// POV-Ray's intersection tolerances, which a tracer matching its images uses:
+// hits nearer than MIN_ISECT_DEPTH along any ray are ignored, and shadow rays
+// ignore hits within SHADOW_TOLERANCE of the shaded point or the light.
+inline constexpr double kPovMinIsectDepth = 1e-4;
+inline constexpr double kPovShadowTolerance = 1e-3;
+
+// Light reaching the shaded point from (part of) one light source.
+struct LightSample {
+    Vec3 direction{0.0, 1.0, 0.0};  // unit, from the shaded point toward the light point
+    double distance = 0.0;          // from the shaded point to the light point (for fade)
+    Vec3 color{0.0};                // light colour x lit fraction x sample weight, before fade
+};
+
+// The one sample of a point light (or of any light taken at one point, as
+// POV-Ray does for an area light's diffuse and highlights: its centre, with
+// the colour scaled by the lit fraction).
+inline LightSample pointLightSample(const Vec3& lightPosition, const Vec3& lightColor,
+                                    const Vec3& point, double litFraction = 1.0) {
+    const Vec3 d = lightPosition - point;
+    const double distance = glm::length(d);
+    return {distance > 0.0 ? d / distance : Vec3(0.0), distance, lightColor * litFraction};
+}
+
+// What the light callback is asked about.
+struct ShadingPoint {
+    int lightIndex = 0;
+    const Light* light = nullptr;
+    const SurfaceHit* hit = nullptr;
+    Vec3 position{0.0};  // == hit->position
+    Vec3 normal{0.0};    // unit surface normal turned toward the incoming ray
+    const Ray* ray = nullptr;
+    int depth = 1;       // trace level of the ray that hit (1: eye ray)
+};
+
+struct ShadingSettings {
+    Vec3 ambientLight{1.0};
+    int maxTraceLevel = 5;
+    double adcBailout = kDefaultAdcBailout;
+
+    static ShadingSettings from(const GlobalSettings& g) {
+        return {g.ambientLight, g.maxTraceLevel, kDefaultAdcBailout};
+    }
+};
+
+// The ray being shaded and where it ended. `depth` is POV-Ray's trace level
+// (eye rays 1, their reflections 2, ...) and `weight` its ADC weight (eye
+// rays 1).
+struct ShadeRequest {
+    const SurfaceHit& hit;
+    const Texture& texture;
+    const Ray& ray;
+    int depth = 1;
+    double weight = 1.0;
+};
+
+// The pigment's colour at a world point. Checker: POV-Ray 3.7's rule in
+// pattern space, the parity of floor(x + e) + floor(y + e) + floor(z + e) with
+// e = 1e-10 (odd: color2).
+Color evaluatePigment(const Pigment& pigment, const Vec3& worldPoint);
+// 0 or 1 at a pattern-space point, as POV-Ray's checker pattern.
+int checkerValue(const Vec3& patternPoint);
+
+// POV-Ray's light fade (Attenuate_Light): with fade_power > 0,
+// 2 / (1 + (d / fade_distance)^fade_power), or d^-fade_power when
+// fade_distance is 0; 1 otherwise.
+double lightFade(const Light& light, double distance);
+
+// The normal turned to face the incoming ray (POV-Ray flips it so).
+inline Vec3 facingNormal(const Vec3& normal, const Vec3& rayDir) {
+    return glm::dot(normal, rayDir) > 0.0 ? -normal : normal;
+}
+// Mirror direction of unit d about unit normal n.
+inline Vec3 reflectDirection(const Vec3& d, const Vec3& n) {
+    return glm::normalize(d - 2.0 * glm::dot(d, n) * n);
+}
+
+// ambient x pigment x ambient_light.
+Vec3 ambientTerm(const Finish& finish, const Vec3& pigment, const Vec3& ambientLight);
+
+// One light sample's diffuse, phong and specular (POV-Ray's
+// ComputeDiffuseColour, ComputePhongColour, ComputeSpecularColour). `normal`
+// faces the ray; `rayDir` is the unit direction of the ray that hit. A sample
+// from behind the surface gives nothing; shadowless lights give no highlights.
+Vec3 directLight(const Finish& finish, const Vec3& pigment, const Vec3& normal, const Vec3& rayDir,
+                 const Light& light, const LightSample& sample);
+
+// Whether the finish reacts to lights at all (otherwise no light is queried).
+inline bool usesLights(const Finish& f) {
+    return f.diffuse != 0.0 || f.phong != 0.0 || f.specular != 0.0;
+}
+
+// The colour of a ray that hits nothing.
+inline Vec3 backgroundColor(const SceneDescription& scene) { return scene.background.rgb; }
+
+// The shaded colour of a surface point.
+//
+// lightArriving(const ShadingPoint&) -> std::span<const LightSample>
+//   the light reaching the point from light `lightIndex`; the span must stay
+//   valid until the next call (e.g. a per-thread buffer). It is called only
+//   when the finish uses lights; it may return no samples (light blocked, or
+//   facing away: samples from behind the surface are ignored anyway).
+// traceReflected(const Ray& ray, int depth, double weight) -> Vec3
+//   the colour along the mirror ray (unit direction, origin at the hit point:
+//   the callee must skip the surface itself). Called only when the finish
+//   reflects, depth <= max_trace_level and weight >= adc_bailout, as POV-Ray's
+//   TraceRay decides; otherwise the reflection is black.
+template <class LightFn, class ReflectFn>
+Vec3 shadeSurface(const ShadeRequest& req, std::span<const Light> lights,
+                  const ShadingSettings& settings, LightFn&& lightArriving,
+                  ReflectFn&& traceReflected) {
+    const Finish& finish = req.texture.finish;
+    const Vec3 rayDir = glm::normalize(req.ray.dir);
+    const Vec3 normal = facingNormal(req.hit.normal, rayDir);
+    const Vec3 pigment = evaluatePigment(req.texture.pigment, req.hit.position).rgb;
+
+    Vec3 color = ambientTerm(finish, pigment, settings.ambientLight);
+    if (usesLights(finish)) {
+        for (int i = 0; i < static_cast<int>(lights.size()); ++i) {
+            const ShadingPoint point{i, &lights[i], &req.hit, req.hit.position, normal, &req.ray,
+                                     req.depth};
+            for (const LightSample& s : lightArriving(point))
+                color += directLight(finish, pigment, normal, rayDir, lights[i], s);
+        }
+    }
+    // Reflection (POV-Ray's ComputeReflectivity, ComputeReflection, and the
+    // trace-level and ADC tests at the top of TraceRay).
+    const Vec3& reflection = finish.reflection;
+    if (reflection != Vec3(0.0)) {
+        const double weight =
+            req.weight * std::max(reflection.x, std::max(reflection.y, reflection.z));
+        if (req.depth < settings.maxTraceLevel && weight >= settings.adcBailout) {
+            const Ray mirror{req.hit.position, reflectDirection(rayDir, normal)};
+            color += reflection * Vec3(traceReflected(mirror, req.depth + 1, weight));
+        }
+    }
+    return color;
+}
+
+}  // namespace asos

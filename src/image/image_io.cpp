@@ -1,0 +1,319 @@
+// The one translation unit that includes OpenImageIO.
+#include "asos/image/image_io.hpp"
+
+#include <fcntl.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <cctype>
+#include <cerrno>
+#include <cmath>
+#include <cstdint>
+#include <cstdio>
+#include <cstring>
+#include <random>
+#include <system_error>
+#include <vector>
+
+#include <OpenImageIO/imagebuf.h>
+#include <OpenImageIO/imagebufalgo.h>
+#include <OpenImageIO/imageio.h>
+
+#include "asos/image/encoding.hpp"
+
+namespace asos {
+namespace {
+
+namespace fs = std::filesystem;
+
+struct FormatCaps {
+    const char* extension;
+    bool uint8, uint16, half, float32;
+    SampleFormat preferred;
+};
+
+// What each format we know can store. An extension not listed here is still
+// written when OpenImageIO has a writer for it, as an 8-bit integer format.
+constexpr FormatCaps kFormats[] = {
+    {".png", true, true, false, false, SampleFormat::UInt8},
+    {".tif", true, true, true, true, SampleFormat::UInt8},
+    {".tiff", true, true, true, true, SampleFormat::UInt8},
+    {".jpg", true, false, false, false, SampleFormat::UInt8},
+    {".jpeg", true, false, false, false, SampleFormat::UInt8},
+    {".bmp", true, false, false, false, SampleFormat::UInt8},
+    {".tga", true, true, false, false, SampleFormat::UInt8},
+    {".ppm", true, true, false, false, SampleFormat::UInt8},
+    {".pnm", true, true, false, false, SampleFormat::UInt8},
+    {".webp", true, false, false, false, SampleFormat::UInt8},
+    {".exr", false, false, true, true, SampleFormat::Float},
+    {".hdr", false, false, false, true, SampleFormat::Float},
+    {".pfm", false, false, false, true, SampleFormat::Float},
+};
+
+std::string lowerExtension(const fs::path& path) {
+    std::string ext = path.extension().string();
+    std::transform(ext.begin(), ext.end(), ext.begin(),
+                   [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+    return ext;
+}
+
+const FormatCaps* findFormat(const std::string& ext) {
+    for (const FormatCaps& f : kFormats)
+        if (ext == f.extension) return &f;
+    return nullptr;
+}
+
+const char* formatName(SampleFormat f) {
+    switch (f) {
+        case SampleFormat::UInt8: return "8-bit";
+        case SampleFormat::UInt16: return "16-bit";
+        case SampleFormat::Half: return "half-float";
+        case SampleFormat::Float: return "float";
+        case SampleFormat::Auto: break;
+    }
+    return "default";
+}
+
+bool isInteger(SampleFormat f) { return f == SampleFormat::UInt8 || f == SampleFormat::UInt16; }
+
+// Resolves Auto and checks that the format can hold the samples.
+std::string resolveFormat(const fs::path& path, SampleFormat requested, SampleFormat& resolved) {
+    const std::string ext = lowerExtension(path);
+    if (ext.empty())
+        return "cannot choose an image format for '" + path.string() +
+               "': the file name has no extension (use .png, .exr, .tif, ...)";
+    const FormatCaps* caps = findFormat(ext);
+    if (!caps) {
+        // Unknown to us: ask OpenImageIO whether it has a writer.
+        auto probe = OIIO::ImageOutput::create(path.string());
+        if (!probe) {
+            (void)OIIO::geterror();
+            return "cannot write '" + path.string() + "': no image format for extension '" + ext +
+                   "' (use .png, .exr, .tif, .jpg, ...)";
+        }
+        resolved = requested == SampleFormat::Auto ? SampleFormat::UInt8 : requested;
+        if (!isInteger(resolved))
+            return "cannot write " + std::string(formatName(resolved)) + " samples to '" + ext +
+                   "' files (use .exr or .tif)";
+        return {};
+    }
+    resolved = requested == SampleFormat::Auto ? caps->preferred : requested;
+    const bool supported = (resolved == SampleFormat::UInt8 && caps->uint8) ||
+                           (resolved == SampleFormat::UInt16 && caps->uint16) ||
+                           (resolved == SampleFormat::Half && caps->half) ||
+                           (resolved == SampleFormat::Float && caps->float32);
+    if (!supported)
+        return "'" + ext + "' files cannot store " + formatName(resolved) + " samples";
+    return {};
+}
+
+OIIO::TypeDesc typeOf(SampleFormat f) {
+    switch (f) {
+        case SampleFormat::UInt8: return OIIO::TypeDesc::UINT8;
+        case SampleFormat::UInt16: return OIIO::TypeDesc::UINT16;
+        case SampleFormat::Half: return OIIO::TypeDesc::HALF;
+        default: return OIIO::TypeDesc::FLOAT;
+    }
+}
+
+// A new, empty, uniquely named file next to `path` (created with O_EXCL so
+// that two writers never share it). Returns an empty path and sets `error`
+// when the directory cannot take it.
+fs::path createTemporaryFile(const fs::path& path, std::string& error) {
+    const fs::path dir = path.has_parent_path() ? path.parent_path() : fs::path(".");
+    std::random_device device;
+    for (int attempt = 0; attempt < 16; ++attempt) {
+        char suffix[32];
+        std::snprintf(suffix, sizeof suffix, ".tmp-%08x%08x", device(), device());
+        std::string name = ".";
+        name += path.filename().string();
+        name += suffix;
+        const fs::path candidate = dir / name;
+        const int fd = ::open(candidate.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0666);
+        if (fd >= 0) {
+            ::close(fd);
+            return candidate;
+        }
+        if (errno != EEXIST) {
+            error = "cannot create a file in '" + dir.string() + "': " + std::strerror(errno);
+            return {};
+        }
+    }
+    error = "cannot create a temporary file in '" + dir.string() + "'";
+    return {};
+}
+
+std::string oiioError(const OIIO::ImageOutput& out) {
+    std::string e = out.geterror();
+    return e.empty() ? OIIO::geterror() : e;
+}
+
+}  // namespace
+
+IoStatus checkOutputPath(const fs::path& path, SampleFormat format) {
+    SampleFormat resolved{};
+    return {resolveFormat(path, format, resolved)};
+}
+
+IoStatus writeImage(const Image& image, const fs::path& path, const WriteOptions& options) {
+    if (image.width() <= 0 || image.height() <= 0)
+        return {"cannot write an empty image to '" + path.string() + "'"};
+    SampleFormat format{};
+    if (std::string e = resolveFormat(path, options.format, format); !e.empty()) return {e};
+
+    Transfer transfer = options.transfer;
+    if (transfer == Transfer::Auto) transfer = isInteger(format) ? Transfer::Srgb : Transfer::Linear;
+
+    // Convert the samples ourselves so that the rounding is exactly POV-Ray's
+    // (asos/image/encoding.hpp) rather than a library's.
+    const std::vector<float>& src = image.data();
+    std::vector<std::uint8_t> u8;
+    std::vector<std::uint16_t> u16;
+    std::vector<float> f32;
+    const void* pixels = nullptr;
+    auto value = [&](float v) -> double {
+        switch (transfer) {
+            case Transfer::Srgb: return srgbEncode(workingToLinear(v, options.assumedGamma));
+            case Transfer::Linear: return workingToLinear(v, options.assumedGamma);
+            default: return v;
+        }
+    };
+    if (format == SampleFormat::UInt8 || format == SampleFormat::UInt16) {
+        const double scale = format == SampleFormat::UInt8 ? 255.0 : 65535.0;
+        auto code = [&](float v) {
+            const double x = value(v);
+            return std::lround(std::isnan(x) ? 0.0 : std::clamp(x, 0.0, 1.0) * scale);
+        };
+        if (format == SampleFormat::UInt8) {
+            u8.resize(src.size());
+            for (std::size_t i = 0; i < src.size(); ++i) u8[i] = static_cast<std::uint8_t>(code(src[i]));
+            pixels = u8.data();
+        } else {
+            u16.resize(src.size());
+            for (std::size_t i = 0; i < src.size(); ++i) u16[i] = static_cast<std::uint16_t>(code(src[i]));
+            pixels = u16.data();
+        }
+    } else {
+        f32.resize(src.size());
+        for (std::size_t i = 0; i < src.size(); ++i) f32[i] = static_cast<float>(value(src[i]));
+        pixels = f32.data();
+    }
+
+    OIIO::ImageSpec spec(image.width(), image.height(), image.channels(), typeOf(format));
+    spec.channelnames = image.channelNames();
+    spec.attribute("oiio:ColorSpace", transfer == Transfer::Srgb ? "sRGB" : "Linear");
+    spec.attribute("Software", "asos");
+
+    auto out = OIIO::ImageOutput::create(path.string());
+    if (!out) return {"cannot write '" + path.string() + "': " + OIIO::geterror()};
+
+    std::string error;
+    const fs::path temporary = createTemporaryFile(path, error);
+    if (temporary.empty()) return {"cannot write '" + path.string() + "': " + error};
+    auto discard = [&](std::string message) {
+        std::error_code ignored;
+        fs::remove(temporary, ignored);
+        return IoStatus{"cannot write '" + path.string() + "': " + message};
+    };
+    if (!out->open(temporary.string(), spec)) return discard(oiioError(*out));
+    if (!out->write_image(typeOf(format), pixels)) {
+        const std::string e = oiioError(*out);
+        out->close();
+        return discard(e);
+    }
+    if (!out->close()) return discard(oiioError(*out));
+    std::error_code ec;
+    fs::rename(temporary, path, ec);
+    if (ec) return discard(ec.message());
+    return {};
+}
+
+ReadResult readImage(const fs::path& path) {
+    ReadResult result;
+    auto in = OIIO::ImageInput::open(path.string());
+    if (!in) {
+        result.error = "cannot read '" + path.string() + "': " + OIIO::geterror();
+        return result;
+    }
+    const OIIO::ImageSpec& spec = in->spec();
+    std::vector<std::string> names = spec.channelnames;
+    names.resize(spec.nchannels);
+    for (int c = 0; c < spec.nchannels; ++c)
+        if (names[c].empty()) names[c] = "channel" + std::to_string(c);
+    Image image(spec.width, spec.height, names);
+    if (!in->read_image(0, 0, 0, spec.nchannels, OIIO::TypeDesc::FLOAT, image.data().data())) {
+        result.error = "cannot read '" + path.string() + "': " + in->geterror();
+        return result;
+    }
+    in->close();
+    result.image = std::move(image);
+    return result;
+}
+
+std::string ImageComparison::summary() const {
+    if (!error.empty()) return "cannot compare: " + error;
+    char line[320];
+    std::snprintf(line, sizeof line,
+                  "%s: mean error %.6g, RMS %.6g, PSNR %.2f dB, max error %.6g at (%d, %d) "
+                  "channel %d; %zu of %zu pixels over the failure threshold, %zu over the "
+                  "warning threshold",
+                  passed ? "PASS" : "FAIL", meanError, rmsError, psnr, maxError, maxX, maxY,
+                  maxChannel, failPixels, pixels, warnPixels);
+    return line;
+}
+
+ImageComparison compareImages(const Image& a, const Image& b, const CompareThresholds& t) {
+    ImageComparison r;
+    if (a.width() != b.width() || a.height() != b.height() || a.channels() != b.channels()) {
+        r.error = "image sizes differ: " + std::to_string(a.width()) + "x" +
+                  std::to_string(a.height()) + "x" + std::to_string(a.channels()) + " and " +
+                  std::to_string(b.width()) + "x" + std::to_string(b.height()) + "x" +
+                  std::to_string(b.channels());
+        return r;
+    }
+    if (a.empty()) {
+        r.error = "images are empty";
+        return r;
+    }
+    const OIIO::ImageSpec spec(a.width(), a.height(), a.channels(), OIIO::TypeDesc::FLOAT);
+    // ImageBuf wraps the buffers without copying; compare only reads them.
+    const OIIO::ImageBuf bufA(spec, const_cast<float*>(a.data().data()));
+    const OIIO::ImageBuf bufB(spec, const_cast<float*>(b.data().data()));
+    const auto cr = OIIO::ImageBufAlgo::compare(bufA, bufB, static_cast<float>(t.failValue),
+                                                static_cast<float>(t.warnValue));
+    // OpenImageIO 2.4 also sets cr.error when some pixel fails; only a
+    // message means the comparison itself went wrong.
+    if (cr.error) {
+        std::string e = OIIO::geterror();
+        if (e.empty()) e = bufA.geterror();
+        if (!e.empty()) {
+            r.error = e;
+            return r;
+        }
+    }
+    r.meanError = cr.meanerror;
+    r.rmsError = cr.rms_error;
+    r.psnr = cr.PSNR;
+    r.maxError = cr.maxerror;
+    r.maxX = cr.maxx;
+    r.maxY = cr.maxy;
+    r.maxChannel = cr.maxc;
+    r.failPixels = cr.nfail;
+    r.warnPixels = cr.nwarn;
+    r.pixels = static_cast<std::size_t>(a.width()) * a.height();
+    // NaN differences fail: written as negated comparisons.
+    r.passed = !(static_cast<double>(r.failPixels) > t.failPercent / 100.0 * r.pixels) &&
+               (r.maxError <= t.hardFail);
+    return r;
+}
+
+Image absoluteDifference(const Image& a, const Image& b) {
+    if (a.width() != b.width() || a.height() != b.height() || a.channels() != b.channels())
+        throw std::invalid_argument("absoluteDifference: image sizes differ");
+    Image d(a.width(), a.height(), a.channelNames());
+    for (std::size_t i = 0; i < a.data().size(); ++i)
+        d.data()[i] = std::fabs(a.data()[i] - b.data()[i]);
+    return d;
+}
+
+}  // namespace asos

@@ -1,0 +1,87 @@
+#include "asos/render/shading.hpp"
+
+#include <cmath>
+
+namespace asos {
+
+int checkerValue(const Vec3& p) {
+    // POV-Ray 3.7 adds EPSILON (1e-10) before flooring, so that a surface on a
+    // cell boundary (a plane at y = 0, hit at y = -1e-16) falls in one cell.
+    // Measured with povray: a pattern point 1e-10 below an integer counts as
+    // the integer, 1.1e-10 below does not (older versions used 0.001).
+    const double sum = std::floor(p.x + kPovEpsilon) + std::floor(p.y + kPovEpsilon) +
+                       std::floor(p.z + kPovEpsilon);
+    // POV-Ray converts the sum to int and tests its low bit; fmod keeps huge
+    // coordinates from overflowing the conversion.
+    return std::fabs(std::fmod(sum, 2.0)) == 1.0 ? 1 : 0;
+}
+
+Color evaluatePigment(const Pigment& pigment, const Vec3& worldPoint) {
+    switch (pigment.kind) {
+        case Pigment::Kind::Solid: return pigment.color1;
+        case Pigment::Kind::Checker: {
+            const Vec3 p(pigment.worldFromPattern.inverseMatrix() * Vec4(worldPoint, 1.0));
+            return checkerValue(p) ? pigment.color2 : pigment.color1;
+        }
+    }
+    return pigment.color1;
+}
+
+double lightFade(const Light& light, double distance) {
+    if (!(light.fadePower > 0.0)) return 1.0;
+    if (std::fabs(light.fadeDistance) >= kPovEpsilon)
+        return 2.0 / (1.0 + std::pow(distance / light.fadeDistance, light.fadePower));
+    return std::pow(distance, -light.fadePower);
+}
+
+Vec3 ambientTerm(const Finish& finish, const Vec3& pigment, const Vec3& ambientLight) {
+    return pigment * finish.ambient * ambientLight;
+}
+
+Vec3 directLight(const Finish& finish, const Vec3& pigment, const Vec3& normal, const Vec3& rayDir,
+                 const Light& light, const LightSample& sample) {
+    const Vec3& toLight = sample.direction;
+    // Light on the far side of the surface from the viewer lights nothing
+    // (POV-Ray: cos_shadow_angle < EPSILON, no double_illuminate).
+    const double cosIncidence = glm::dot(normal, toLight);
+    if (cosIncidence < kPovEpsilon) return Vec3(0.0);
+    const Vec3 lightColor = sample.color * lightFade(light, sample.distance);
+    if (std::fabs(lightColor.x) <= kPovEpsilon && std::fabs(lightColor.y) <= kPovEpsilon &&
+        std::fabs(lightColor.z) <= kPovEpsilon)
+        return Vec3(0.0);
+
+    Vec3 result(0.0);
+    if (finish.diffuse > 0.0) {
+        const double intensity =
+            (finish.brilliance != 1.0 ? std::pow(cosIncidence, finish.brilliance) : cosIncidence) *
+            finish.diffuse;
+        result += intensity * pigment * lightColor;
+    }
+    // POV-Ray's shadowless lights (FILL_LIGHT_SOURCE) give no highlights.
+    if (light.shadowless) return result;
+    if (finish.phong > 0.0) {
+        // Phong: the mirror of the eye ray against the light direction.
+        const Vec3 mirror = rayDir - 2.0 * glm::dot(rayDir, normal) * normal;
+        const double cosMirror = glm::dot(mirror, toLight);
+        // POV-Ray skips tiny cosines for large exponents ("rgs" cut-off).
+        if (cosMirror > 0.0 && (finish.phongSize < 60.0 || cosMirror > 0.0008))
+            result += finish.phong * std::pow(cosMirror, finish.phongSize) * lightColor;
+    }
+    if (finish.specular > 0.0) {
+        // Blinn: the halfway vector between the eye and the light.
+        const Vec3 halfway = 0.5 * (toLight - rayDir);
+        const double length = glm::length(halfway);
+        if (length > 0.0) {
+            const double cosHalf = glm::dot(halfway, normal) / length;
+            if (cosHalf > 0.0) {
+                // POV-Ray stores 1/roughness as the exponent; a zero roughness
+                // is kept as a zero exponent (it warns "Zero roughness used").
+                const double exponent = finish.roughness != 0.0 ? 1.0 / finish.roughness : 0.0;
+                result += finish.specular * std::pow(cosHalf, exponent) * lightColor;
+            }
+        }
+    }
+    return result;
+}
+
+}  // namespace asos

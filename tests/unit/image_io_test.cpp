@@ -1,0 +1,197 @@
+#include <catch2/catch.hpp>
+
+#include <filesystem>
+
+#include "asos/image/encoding.hpp"
+#include "asos/image/image_io.hpp"
+
+using namespace asos;
+namespace fs = std::filesystem;
+
+namespace {
+fs::path outputDir(const std::string& name) {
+    const fs::path dir = fs::path(ASOS_BINARY_DIR) / "test-output" / "image_io" / name;
+    fs::remove_all(dir);
+    fs::create_directories(dir);
+    return dir;
+}
+
+// A 4x2 RGB image whose values cover the encoding's interesting cases.
+Image sampleImage() {
+    Image img = Image::rgb(4, 2);
+    const double values[] = {0.0, 0.0078125, 0.2578125, 0.5078125, 0.8828125, 1.0, 1.25, -0.5};
+    for (int i = 0; i < 8; ++i) img.setRgb(i % 4, i / 4, Vec3(values[i], values[7 - i], 0.5));
+    return img;
+}
+
+std::size_t filesIn(const fs::path& dir) {
+    std::size_t n = 0;
+    for ([[maybe_unused]] const auto& e : fs::directory_iterator(dir)) ++n;
+    return n;
+}
+}  // namespace
+
+TEST_CASE("8-bit encoding matches the codes POV-Ray 3.7 writes", "[image]") {
+    // Measured: `povray` with assumed_gamma 1, flat patches of these linear
+    // values, +FN8 (docs/rendering.md). sRGB, not a 2.2 power: 0.0078125
+    // would be 28 under a 2.2 power.
+    CHECK(encodeSrgb8(0.0078125) == 22);
+    CHECK(encodeSrgb8(0.0234375) == 42);
+    CHECK(encodeSrgb8(0.2578125) == 139);
+    CHECK(encodeSrgb8(0.5078125) == 189);
+    CHECK(encodeSrgb8(0.8828125) == 241);
+    CHECK(encodeSrgb8(1.25) == 255);   // clipped
+    CHECK(encodeSrgb8(-0.5) == 0);
+    // 16-bit codes from `povray +FN16` of linear ramps (POV-Ray works in
+    // float, so about 0.3% of its codes, those within 0.004 of a rounding
+    // tie, differ from these by one).
+    CHECK(encodeSrgb16(0.00341796875) == 2884);
+    CHECK(encodeSrgb16(0.09814453125) == 22678);
+    CHECK(encodeSrgb16(0.50048828125) == 48213);
+    CHECK(encodeSrgb16(0.87939453125) == 61930);
+    CHECK(srgbDecode(srgbEncode(0.3)) == Approx(0.3).epsilon(1e-12));
+    // assumed_gamma 2.2: POV-Ray decodes the working value first.
+    CHECK(encodeSrgb8(0.5, 2.2) == encodeSrgb8(std::pow(0.5, 2.2)));
+}
+
+TEST_CASE("PNG and TIFF and EXR files round-trip through OpenImageIO", "[image]") {
+    const fs::path dir = outputDir("roundtrip");
+    const Image img = sampleImage();
+
+    SECTION("8-bit PNG stores sRGB codes") {
+        REQUIRE(writeImage(img, dir / "a.png").ok());
+        const ReadResult r = readImage(dir / "a.png");
+        REQUIRE(r.ok());
+        REQUIRE(r.image.width() == 4);
+        REQUIRE(r.image.channels() == 3);
+        for (int y = 0; y < 2; ++y)
+            for (int x = 0; x < 4; ++x)
+                for (int c = 0; c < 3; ++c)
+                    CHECK(r.image.at(x, y, c) == Approx(encodeSrgb8(img.at(x, y, c)) / 255.0).margin(1e-7));
+    }
+    SECTION("16-bit PNG") {
+        REQUIRE(writeImage(img, dir / "b.png", {.format = SampleFormat::UInt16}).ok());
+        const ReadResult r = readImage(dir / "b.png");
+        REQUIRE(r.ok());
+        CHECK(r.image.at(3, 0, 0) == Approx(encodeSrgb16(0.5078125) / 65535.0).margin(1e-9));
+    }
+    SECTION("EXR is linear float and keeps channel names") {
+        Image aov(3, 2, {"rays", "level"});
+        aov.at(1, 1, 0) = 256.0f;
+        aov.at(2, 0, 1) = 4.0f;
+        REQUIRE(writeImage(aov, dir / "aov.exr").ok());
+        const ReadResult r = readImage(dir / "aov.exr");
+        REQUIRE(r.ok());
+        REQUIRE(r.image.channels() == 2);
+        const int rays = r.image.channelIndex("rays"), level = r.image.channelIndex("level");
+        REQUIRE(rays >= 0);
+        REQUIRE(level >= 0);
+        CHECK(r.image.at(1, 1, rays) == 256.0f);
+        CHECK(r.image.at(2, 0, level) == 4.0f);
+        CHECK(r.image.at(0, 0, rays) == 0.0f);
+        REQUIRE(writeImage(img, dir / "c.exr").ok());
+        const ReadResult c = readImage(dir / "c.exr");
+        REQUIRE(c.ok());
+        CHECK(c.image.at(2, 1, 0) == 1.25f);  // not clipped
+        CHECK(c.image.at(3, 1, 0) == -0.5f);
+    }
+    SECTION("TIFF: 8-bit by default, float on request") {
+        REQUIRE(writeImage(img, dir / "d.tif").ok());
+        const ReadResult r = readImage(dir / "d.tif");
+        REQUIRE(r.ok());
+        CHECK(r.image.at(0, 1, 0) == Approx(241 / 255.0).margin(1e-7));
+        REQUIRE(writeImage(img, dir / "e.tif", {.format = SampleFormat::Float}).ok());
+        const ReadResult f = readImage(dir / "e.tif");
+        REQUIRE(f.ok());
+        CHECK(f.image.at(0, 1, 0) == 0.8828125f);
+    }
+    CHECK(filesIn(dir) >= 1);
+}
+
+TEST_CASE("Failed writes report an error and leave no file behind", "[image]") {
+    const fs::path dir = outputDir("errors");
+    const Image img = sampleImage();
+
+    const IoStatus missingDir = writeImage(img, dir / "no" / "such" / "dir.png");
+    CHECK_FALSE(missingDir.ok());
+    CHECK_THAT(missingDir.error, Catch::Contains("dir.png"));
+
+    const IoStatus unknown = writeImage(img, dir / "image.nosuchformat");
+    CHECK_FALSE(unknown.ok());
+    CHECK_THAT(unknown.error, Catch::Contains(".nosuchformat"));
+
+    CHECK_FALSE(writeImage(img, dir / "noextension").ok());
+    CHECK_FALSE(writeImage(img, dir / "float.png", {.format = SampleFormat::Float}).ok());
+    CHECK_FALSE(writeImage(img, dir / "int.exr", {.format = SampleFormat::UInt8}).ok());
+    CHECK_FALSE(writeImage(Image(), dir / "empty.png").ok());
+    CHECK_FALSE(checkOutputPath(dir / "x.jpg", SampleFormat::UInt16).ok());
+    CHECK(checkOutputPath(dir / "x.jpg").ok());
+
+    // The file is complete before it takes the name: when the final rename
+    // fails (a directory is in the way) the temporary file is removed too.
+    fs::create_directory(dir / "taken.png");
+    fs::create_directory(dir / "taken.png" / "child");
+    const IoStatus blocked = writeImage(img, dir / "taken.png");
+    CHECK_FALSE(blocked.ok());
+    CHECK(filesIn(dir) == 1);  // only the directory
+
+    const ReadResult missing = readImage(dir / "missing.png");
+    CHECK_FALSE(missing.ok());
+    CHECK_THAT(missing.error, Catch::Contains("missing.png"));
+}
+
+TEST_CASE("Image comparison follows OpenImageIO's test-suite thresholds", "[image]") {
+    Image a = Image::rgb(100, 100);
+    for (float& v : a.data()) v = 0.5f;
+    Image b = a;
+    ImageComparison same = compareImages(a, b);
+    CHECK(same.passed);
+    CHECK(same.maxError == 0.0);
+    CHECK(same.pixels == 10000);
+
+    // 0.02% of 10000 pixels is 2: two failing pixels pass, three fail.
+    b.at(10, 20, 1) = 0.506f;
+    b.at(11, 20, 1) = 0.506f;
+    ImageComparison two = compareImages(a, b);
+    CHECK(two.failPixels == 2);
+    CHECK(two.passed);
+    b.at(12, 20, 1) = 0.506f;
+    CHECK_FALSE(compareImages(a, b).passed);
+
+    // Any single value over 0.012 fails; the worst pixel is reported.
+    Image c = a;
+    c.at(42, 7, 2) = 0.52f;
+    const ImageComparison hard = compareImages(a, c);
+    CHECK_FALSE(hard.passed);
+    CHECK(hard.maxX == 42);
+    CHECK(hard.maxY == 7);
+    CHECK(hard.maxChannel == 2);
+    CHECK(hard.maxError == Approx(0.02).margin(1e-6));
+    CHECK_THAT(hard.summary(), Catch::Contains("FAIL") && Catch::Contains("(42, 7)"));
+    CHECK(absoluteDifference(a, c).at(42, 7, 2) == Approx(0.02f).margin(1e-6));
+
+    Image nan = a;
+    nan.at(0, 0, 0) = std::nanf("");
+    CHECK_FALSE(compareImages(a, nan).passed);
+
+    const ImageComparison mismatch = compareImages(a, Image::rgb(10, 10));
+    CHECK_FALSE(mismatch.passed);
+    CHECK_FALSE(mismatch.error.empty());
+}
+
+TEST_CASE("Images crop to a rectangle", "[image]") {
+    Image img(5, 4, {"a", "b"});
+    for (int y = 0; y < 4; ++y)
+        for (int x = 0; x < 5; ++x) {
+            img.at(x, y, 0) = float(10 * y + x);
+            img.at(x, y, 1) = -float(10 * y + x);
+        }
+    const Image c = img.cropped(1, 2, 4, 4);
+    REQUIRE(c.width() == 3);
+    REQUIRE(c.height() == 2);
+    CHECK(c.channelNames() == img.channelNames());
+    CHECK(c.at(0, 0, 0) == 21.0f);
+    CHECK(c.at(2, 1, 1) == -33.0f);
+    CHECK_THROWS_AS(img.cropped(0, 0, 6, 1), std::invalid_argument);
+    CHECK_THROWS_AS(img.cropped(2, 2, 2, 3), std::invalid_argument);
+}

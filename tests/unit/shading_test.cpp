@@ -1,0 +1,239 @@
+#include <catch2/catch.hpp>
+
+#include <cmath>
+#include <vector>
+
+#include "asos/render/shading.hpp"
+
+using namespace asos;
+
+namespace {
+bool near(const Vec3& a, const Vec3& b, double tol = 1e-12) { return glm::length(a - b) <= tol; }
+
+Texture flat(const Vec3& rgb) {
+    Texture t;
+    t.pigment.color1.rgb = rgb;
+    return t;
+}
+
+// A hit on the plane y = 0 at the origin, seen from above along `dir`.
+SurfaceHit planeHit() {
+    SurfaceHit h;
+    h.position = {0, 0, 0};
+    h.normal = {0, 1, 0};
+    return h;
+}
+
+struct NoReflection {
+    int calls = 0;
+    Vec3 operator()(const Ray&, int, double) {
+        ++calls;
+        return Vec3(0.0);
+    }
+};
+}  // namespace
+
+TEST_CASE("Ambient is pigment times ambient times ambient_light", "[shading]") {
+    Texture t = flat({0.5, 0.25, 1.0});
+    t.finish.ambient = {0.2, 0.4, 0.1};
+    t.finish.diffuse = 0.0;
+    const SurfaceHit hit = planeHit();
+    const Ray ray{{0, 1, 0}, {0, -1, 0}};
+    ShadingSettings s;
+    s.ambientLight = {1.0, 0.5, 2.0};
+    int lightCalls = 0;
+    NoReflection refl;
+    const Vec3 c = shadeSurface({hit, t, ray}, {}, s,
+                                [&](const ShadingPoint&) {
+                                    ++lightCalls;
+                                    return std::span<const LightSample>();
+                                },
+                                refl);
+    CHECK(near(c, {0.5 * 0.2 * 1.0, 0.25 * 0.4 * 0.5, 1.0 * 0.1 * 2.0}));
+    CHECK(lightCalls == 0);
+    CHECK(refl.calls == 0);
+}
+
+TEST_CASE("Diffuse follows Lambert's cosine raised to brilliance", "[shading]") {
+    const Vec3 pigment{0.8, 0.6, 0.4};
+    Finish f;
+    f.diffuse = 0.6;
+    Light light;
+    // Light at 60 degrees from the normal: cos = 0.5.
+    const LightSample s{glm::normalize(Vec3(std::sqrt(3.0), 1.0, 0.0)), 10.0, {1.0, 1.0, 0.5}};
+    const Vec3 n{0, 1, 0}, eye{0, -1, 0};
+    CHECK(near(directLight(f, pigment, n, eye, light, s), 0.6 * 0.5 * pigment * s.color, 1e-12));
+    f.brilliance = 2.0;
+    CHECK(near(directLight(f, pigment, n, eye, light, s), 0.6 * 0.25 * pigment * s.color, 1e-12));
+    // From below the surface: nothing, whatever the finish.
+    f.phong = 1.0;
+    f.specular = 1.0;
+    const LightSample below{{0, -1, 0}, 1.0, {1, 1, 1}};
+    CHECK(directLight(f, pigment, n, eye, light, below) == Vec3(0.0));
+}
+
+TEST_CASE("Phong peaks along the mirror direction with phong_size as exponent", "[shading]") {
+    Finish f;
+    f.diffuse = 0.0;
+    f.phong = 0.7;
+    f.phongSize = 40.0;
+    Light light;
+    const Vec3 n{0, 1, 0};
+    const Vec3 eye = glm::normalize(Vec3(1, -1, 0));  // 45 degrees in
+    const Vec3 mirror = glm::normalize(Vec3(1, 1, 0));
+    const LightSample onMirror{mirror, 5.0, {1, 1, 1}};
+    CHECK(near(directLight(f, Vec3(1.0), n, eye, light, onMirror), Vec3(0.7)));
+    // 10 degrees off the mirror direction: cos(10)^40.
+    const double a = (45.0 - 10.0) * kPi / 180.0;
+    const LightSample off{{std::cos(a), std::sin(a), 0.0}, 5.0, {1, 1, 1}};
+    CHECK(near(directLight(f, Vec3(1.0), n, eye, light, off),
+               Vec3(0.7 * std::pow(std::cos(10.0 * kPi / 180.0), 40.0)), 1e-12));
+    // POV-Ray's cut-off: phong_size >= 60 ignores cosines below 0.0008.
+    f.phongSize = 80.0;
+    const double b = std::acos(0.0005);  // angle from the mirror direction
+    const Vec3 farOff = glm::normalize(std::cos(b) * mirror + std::sin(b) * Vec3(0, 0, 1));
+    CHECK(directLight(f, Vec3(1.0), n, eye, light, {farOff, 5.0, {1, 1, 1}}) == Vec3(0.0));
+    // Highlights are light colour, not pigment; shadowless lights have none.
+    light.shadowless = true;
+    CHECK(directLight(f, Vec3(1.0), n, eye, light, onMirror) == Vec3(0.0));
+}
+
+TEST_CASE("Specular uses the halfway vector and 1/roughness", "[shading]") {
+    Finish f;
+    f.diffuse = 0.0;
+    f.specular = 0.5;
+    f.roughness = 0.05;  // exponent 20
+    Light light;
+    const Vec3 n{0, 1, 0};
+    const Vec3 eye{0, -1, 0};  // looking straight down
+    // Light 30 degrees from the normal: halfway 15 degrees from it.
+    const double a = 30.0 * kPi / 180.0;
+    const LightSample s{{std::sin(a), std::cos(a), 0.0}, 3.0, {1, 0.5, 0.25}};
+    const double expected = 0.5 * std::pow(std::cos(a / 2.0), 20.0);
+    CHECK(near(directLight(f, Vec3(1.0), n, eye, light, s), expected * s.color, 1e-12));
+    f.roughness = 0.0;  // POV-Ray: exponent 0
+    CHECK(near(directLight(f, Vec3(1.0), n, eye, light, s), 0.5 * s.color, 1e-12));
+}
+
+TEST_CASE("Light fade follows POV-Ray's formula", "[shading]") {
+    Light l;
+    CHECK(lightFade(l, 123.0) == 1.0);
+    l.fadeDistance = 10.0;
+    l.fadePower = 2.0;
+    CHECK(lightFade(l, 10.0) == Approx(1.0));
+    CHECK(lightFade(l, 20.0) == Approx(2.0 / 5.0));
+    CHECK(lightFade(l, 0.0) == Approx(2.0));  // brighter than nominal up close
+    l.fadeDistance = 0.0;
+    CHECK(lightFade(l, 4.0) == Approx(1.0 / 16.0));
+    l.fadePower = 0.0;
+    l.fadeDistance = 5.0;
+    CHECK(lightFade(l, 50.0) == 1.0);
+    // Fade scales the sample's colour in directLight.
+    l.fadePower = 1.0;
+    Finish f;
+    const LightSample s{{0, 1, 0}, 15.0, {1, 1, 1}};
+    CHECK(near(directLight(f, Vec3(1.0), {0, 1, 0}, {0, -1, 0}, l, s), Vec3(0.6 * 2.0 / (1.0 + 3.0))));
+}
+
+TEST_CASE("Checker follows POV-Ray's cell rule in pattern space", "[shading]") {
+    CHECK(checkerValue({0.5, 0.5, 0.5}) == 0);
+    CHECK(checkerValue({1.5, 0.5, 0.5}) == 1);
+    CHECK(checkerValue({1.5, 1.5, 0.5}) == 0);
+    CHECK(checkerValue({-0.5, 0.5, 0.5}) == 1);
+    CHECK(checkerValue({-0.5, -0.5, 0.5}) == 0);
+    // POV-Ray 3.7's tolerance (measured): a point 1e-10 below a cell
+    // boundary is in the upper cell, 1.1e-10 below is not.
+    CHECK(checkerValue({0.5, -1e-16, 0.5}) == 0);
+    CHECK(checkerValue({0.5, -1e-10, 0.5}) == 0);
+    CHECK(checkerValue({0.5, -1.1e-10, 0.5}) == 1);
+    CHECK(checkerValue({0.5, -0.0005, 0.5}) == 1);
+    CHECK(checkerValue({0.9995, 0.5, 0.5}) == 0);
+    CHECK(checkerValue({1e12 + 1.5, 0.5, 0.5}) == 1);
+
+    Pigment p;
+    p.kind = Pigment::Kind::Checker;
+    p.color1.rgb = {1, 0, 0};
+    p.color2.rgb = {0, 0, 1};
+    p.worldFromPattern = Transform::scale({2, 2, 2});
+    CHECK(evaluatePigment(p, {1.5, 0.5, 0.5}).rgb == Vec3(1, 0, 0));  // pattern point 0.75
+    CHECK(evaluatePigment(p, {2.5, 0.5, 0.5}).rgb == Vec3(0, 0, 1));  // pattern point 1.25
+}
+
+TEST_CASE("Lights are summed over their samples and turned toward the viewer", "[shading]") {
+    Texture t = flat(Vec3(1.0));
+    t.finish.ambient = Vec3(0.0);
+    t.finish.diffuse = 1.0;
+    std::vector<Light> lights(2);
+    SurfaceHit hit = planeHit();
+    hit.normal = {0, -1, 0};  // the geometric normal points away from the eye: it gets flipped
+    const Ray ray{{0, 1, 0}, {0, -1, 0}};
+    const LightSample a[] = {{{0, 1, 0}, 1.0, {0.25, 0, 0}}, {{0, 1, 0}, 1.0, {0.25, 0, 0}}};
+    const LightSample b[] = {{{0, 1, 0}, 1.0, {0, 0.5, 0}}};
+    std::vector<int> asked;
+    NoReflection refl;
+    const Vec3 c = shadeSurface({hit, t, ray}, lights, ShadingSettings{},
+                                [&](const ShadingPoint& p) -> std::span<const LightSample> {
+                                    asked.push_back(p.lightIndex);
+                                    CHECK(p.normal == Vec3(0, 1, 0));
+                                    CHECK(p.light == &lights[p.lightIndex]);
+                                    if (p.lightIndex == 0) return a;
+                                    return b;
+                                },
+                                refl);
+    CHECK(near(c, {0.5, 0.5, 0.0}));
+    CHECK(asked == std::vector<int>{0, 1});
+}
+
+TEST_CASE("Reflection recurses with POV-Ray's trace level and ADC bailout", "[shading]") {
+    Texture t = flat(Vec3(0.0));
+    t.finish.ambient = Vec3(0.0);
+    t.finish.diffuse = 0.0;
+    t.finish.reflection = {0.5, 0.25, 0.0};
+    const SurfaceHit hit = planeHit();
+    const Ray ray{{-1, 1, 0}, glm::normalize(Vec3(1, -1, 0))};
+    auto noLights = [](const ShadingPoint&) { return std::span<const LightSample>(); };
+
+    struct Recorder {
+        Ray ray;
+        int depth = 0;
+        double weight = 0.0;
+        int calls = 0;
+        Vec3 operator()(const Ray& r, int d, double w) {
+            ray = r;
+            depth = d;
+            weight = w;
+            ++calls;
+            return {1.0, 1.0, 1.0};
+        }
+    } rec;
+    ShadingSettings s;
+    const Vec3 c = shadeSurface({hit, t, ray, 2, 0.8}, {}, s, noLights, rec);
+    CHECK(near(c, {0.5, 0.25, 0.0}));
+    REQUIRE(rec.calls == 1);
+    CHECK(near(rec.ray.dir, glm::normalize(Vec3(1, 1, 0))));
+    CHECK(near(rec.ray.origin, hit.position));
+    CHECK(rec.depth == 3);
+    CHECK(rec.weight == Approx(0.8 * 0.5));
+
+    // At max_trace_level the reflection is black and not traced.
+    s.maxTraceLevel = 2;
+    rec.calls = 0;
+    CHECK(shadeSurface({hit, t, ray, 2, 1.0}, {}, s, noLights, rec) == Vec3(0.0));
+    CHECK(rec.calls == 0);
+    // A weight below adc_bailout (1/255) is not traced either.
+    s.maxTraceLevel = 5;
+    t.finish.reflection = Vec3(0.003);
+    CHECK(shadeSurface({hit, t, ray, 1, 1.0}, {}, s, noLights, rec) == Vec3(0.0));
+    CHECK(rec.calls == 0);
+}
+
+TEST_CASE("A point light sample points at the light and scales by the lit fraction", "[shading]") {
+    const LightSample s = pointLightSample({3, 4, 0}, {1, 0.5, 0.25}, {0, 0, 0}, 0.5);
+    CHECK(near(s.direction, {0.6, 0.8, 0}));
+    CHECK(s.distance == Approx(5.0));
+    CHECK(near(s.color, {0.5, 0.25, 0.125}));
+    // A light at the point itself lights nothing (no direction).
+    const Light light;
+    CHECK(directLight(Finish{}, Vec3(1.0), {0, 1, 0}, {0, -1, 0}, light,
+                      pointLightSample({1, 1, 1}, Vec3(1.0), {1, 1, 1})) == Vec3(0.0));
+}
