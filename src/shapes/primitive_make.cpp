@@ -42,6 +42,12 @@ Primitive Primitive::make(const Shape& shape, const Transform& worldFromObject) 
         return Primitive(Sphere(s->radius), LocalFrame::make(worldFromObject, Mat3(1.0), s->center),
                          Sphere::kName);
     }
+    if (const auto* b = std::get_if<BoxShape>(&shape)) {
+        requireFinite(b->corner1, "box", "first corner");
+        requireFinite(b->corner2, "box", "second corner");
+        return Primitive(Box(b->corner1, b->corner2),
+                         LocalFrame::make(worldFromObject, Mat3(1.0), Vec3(0.0)), Box::kName);
+    }
     if (const auto* p = std::get_if<PlaneShape>(&shape)) {
         requireFinite(p->normal, "plane", "normal");
         requireFinite(p->distance, "plane", "distance");

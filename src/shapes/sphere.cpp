@@ -142,7 +142,9 @@ ConeClass Sphere::classify(const LocalCone& cone) const {
         const double exitLo = gLo + std::sqrt(std::max(0.0, gLo * gLo - band));
         const double exitHi = gHi + std::sqrt(gHi * gHi + band);
         if (cone.surelyBefore(exitHi)) return missClass();
-        if (cone.surelyWithin(exitLo, exitHi)) return fullClass(cone.tMin, exitHi);
+        // Full only when each ray surely enters (at t <= band / (2 g)) before it leaves.
+        if (gLo * gLo > 4.0 * band && cone.surelyWithin(exitLo, exitHi))
+            return fullClass(cone.tMin, exitHi);
         return marginalClass(cone, cone.tMin, exitHi);
     }
     return marginalClass(cone, cone.tMin, dist + r);

@@ -75,9 +75,10 @@ inline PlaneCrossing planeCrossing(DotRange range, double h) {
     return out;
 }
 
-// A point relative to the apex, split along the axis, with the cone's
+// A point w relative to the apex, split along the axis, with the cone's
 // membership polynomial q = s^2 sigma^2 - c^2 |perp|^2.
 struct ConePoint {
+    Vec3 w;
     double sigma;
     Vec3 perp;
     double q;
@@ -87,6 +88,7 @@ struct ConePoint {
 inline ConePoint conePoint(const LocalCone& cone, const Vec3& w) {
     const double c = cone.cosHalf, s = cone.sinHalf;
     ConePoint p;
+    p.w = w;
     p.sigma = glm::dot(w, cone.axis);
     p.perp = w - p.sigma * cone.axis;
     const double perp2 = glm::dot(p.perp, p.perp);
@@ -97,36 +99,60 @@ inline ConePoint conePoint(const LocalCone& cone, const Vec3& w) {
 
 // Whether the segment between two cone points meets the infinite cone.
 // Exact up to rounding (the cone is already widened by the angle margin).
+// q is a quadratic along the segment; it is expanded about the segment's
+// point nearest the apex, so that a segment passing very close to the apex
+// (where q is tiny next to its values at the ends) is still resolved.
 inline bool segmentMeetsCone(const LocalCone& cone, const ConePoint& a, const ConePoint& b) {
     if (a.inside || b.inside) return true;
     const double c = cone.cosHalf, s = cone.sinHalf;
     // A cone wider than a hemisphere has a convex complement holding both ends.
     if (c < 0.0) return false;
     if (a.sigma < 0.0 && b.sigma < 0.0) return false;
-    const double se = b.sigma - a.sigma;
-    // The part of the segment in front of the apex (sigma >= 0).
-    double t0 = 0.0, t1 = 1.0;
-    if (a.sigma < 0.0) t0 = -a.sigma / se;
-    else if (b.sigma < 0.0) t1 = -a.sigma / se;
-    const Vec3 pe = b.perp - a.perp;
+    const Vec3 e = b.w - a.w;
+    const double ee = glm::dot(e, e);
+    if (!(ee > 0.0)) return false;
+    const double tc = std::clamp(-glm::dot(a.w, e) / ee, 0.0, 1.0);
+    const ConePoint m = conePoint(cone, tc < 0.5 ? a.w + tc * e : b.w - (1.0 - tc) * e);
+    if (m.inside) return true;
+    const double se = glm::dot(e, cone.axis);
+    const Vec3 pe = e - se * cone.axis;
     const double s2 = s * s, c2 = c * c;
-    // q(t) = A t^2 + 2 B t + C along the segment.
+    // q(u) = A u^2 + 2 B u + C for the point at parameter tc + u.
     const double qa = s2 * se * se - c2 * glm::dot(pe, pe);
-    const double qb = s2 * a.sigma * se - c2 * glm::dot(a.perp, pe);
-    const double qc = a.q;
-    auto q = [&](double t) { return (qa * t + 2.0 * qb) * t + qc; };
-    if (t0 > 0.0 && q(t0) >= 0.0) return true;  // only when the apex is on the segment
-    if (t1 < 1.0 && q(t1) >= 0.0) return true;
-    if (qa < 0.0) {
-        const double tv = -qb / qa;
-        if (tv > t0 && tv < t1 && qc + qb * tv >= 0.0) return true;
+    const double qb = s2 * m.sigma * se - c2 * glm::dot(m.perp, pe);
+    const double qc = m.q;
+    auto q = [&](double u) { return (qa * u + 2.0 * qb) * u + qc; };
+    // Both sides of tc, each clipped to sigma >= 0 (in front of the apex).
+    const double ends[2][2] = {{-tc, 0.0}, {0.0, 1.0 - tc}};
+    for (const auto& end : ends) {
+        double u0 = end[0], u1 = end[1];
+        if (!(u1 > u0)) continue;
+        const double sigma0 = m.sigma + u0 * se, sigma1 = m.sigma + u1 * se;
+        if (sigma0 < 0.0 && sigma1 < 0.0) continue;
+        bool clipped0 = false, clipped1 = false;
+        if (sigma0 < 0.0) {
+            u0 = -m.sigma / se;
+            clipped0 = true;
+        } else if (sigma1 < 0.0) {
+            u1 = -m.sigma / se;
+            clipped1 = true;
+        }
+        // Where the clip cuts the segment, sigma = 0: q >= 0 only on the apex.
+        if (clipped0 && q(u0) >= 0.0) return true;
+        if (clipped1 && q(u1) >= 0.0) return true;
+        if (qa < 0.0) {
+            const double uv = -qb / qa;
+            if (uv > u0 && uv < u1 && qc + qb * uv >= 0.0) return true;
+        }
     }
     return false;
 }
 
 // True when no point of the ball (centre m, radius r) lies in the infinite
-// cone (angular test only). Exact: the distance from m to the cone exceeds r.
+// cone (angular test only). Exact: the distance from m to the cone exceeds r
+// (the ball grown by the cone's distance tolerance, for an apex on it).
 inline bool ballOutsideAngular(const LocalCone& cone, const Vec3& m, double r) {
+    r = r * (1.0 + 1e-12) + cone.absTol;
     const Vec3 w = m - cone.apex;
     const double d2 = glm::dot(w, w);
     if (d2 <= r * r) return false;
@@ -149,6 +175,7 @@ inline bool ballOutsideAngular(const LocalCone& cone, const Vec3& m, double r) {
 
 // True when the ball lies wholly nearer than the range or wholly beyond it.
 inline bool ballOutsideRange(const LocalCone& cone, const Vec3& m, double r) {
+    r = r * (1.0 + 1e-12) + cone.absTol;
     const Vec3 w = m - cone.apex;
     const double d2 = glm::dot(w, w);
     const double far = cone.tMaxOuter + r;  // |w| - r > tMaxOuter
@@ -173,16 +200,19 @@ struct Footprint {
     double tFar = 0.0;
 };
 
-inline Footprint footprintOnZPlane(const LocalCone& cone, double zc) {
+// The footprint on the plane x[axis] = value, in the coordinates
+// (x[(axis + 1) % 3], x[(axis + 2) % 3]).
+inline Footprint footprintOnPlane(const LocalCone& cone, int axis, double value) {
     Footprint f;
+    const int i = (axis + 1) % 3, j = (axis + 2) % 3;
     const Vec3& p = cone.apex;
     const Vec3& ax = cone.axis;
-    const double delta = zc - p.z;
+    const double delta = value - p[axis];
     const double c = cone.cosHalf, s = cone.sinHalf;
     if (delta == 0.0 || !(c > 0.0)) return f;
     const double h = std::abs(delta);
-    const double an = delta > 0.0 ? ax.z : -ax.z;  // cos of the axis to the plane normal
-    const double g2 = ax.x * ax.x + ax.y * ax.y;
+    const double an = delta > 0.0 ? ax[axis] : -ax[axis];  // cos of the axis to the plane normal
+    const double g2 = ax[i] * ax[i] + ax[j] * ax[j];
     // k = cos^2(theta) - sin^2(gamma) = cos(theta + gamma) cos(theta - gamma):
     // positive when every ray crosses; kept away from 0 so that the ellipse
     // is well conditioned (an elongated footprint goes to the fallbacks).
@@ -190,8 +220,8 @@ inline Footprint footprintOnZPlane(const LocalCone& cone, double zc) {
     if (!(an > 0.0) || !(k > 1e-6)) return f;
     const double g = std::sqrt(g2);
     f.bounded = true;
-    f.major = g > 0.0 ? Vec2(ax.x, ax.y) / g : Vec2(1.0, 0.0);
-    f.center = Vec2(p.x, p.y) + (h * an / k) * Vec2(ax.x, ax.y);
+    f.major = g > 0.0 ? Vec2(ax[i], ax[j]) / g : Vec2(1.0, 0.0);
+    f.center = Vec2(p[i], p[j]) + (h * an / k) * Vec2(ax[i], ax[j]);
     f.a = h * s * c / k;
     f.b = h * s / std::sqrt(k);
     const double lo = an * c - g * s;
@@ -199,6 +229,17 @@ inline Footprint footprintOnZPlane(const LocalCone& cone, double zc) {
     f.tNear = h / hi;
     f.tFar = h / lo;
     return f;
+}
+
+inline Footprint footprintOnZPlane(const LocalCone& cone, double zc) {
+    return footprintOnPlane(cone, 2, zc);
+}
+
+// Half-widths of the footprint ellipse's bounding box along its two coordinates.
+inline Vec2 footprintHalfWidths(const Footprint& f) {
+    const double u = f.major.x, v = f.major.y;
+    return {std::sqrt(f.a * f.a * u * u + f.b * f.b * v * v),
+            std::sqrt(f.a * f.a * v * v + f.b * f.b * u * u)};
 }
 
 // Support of the footprint ellipse in the unit direction nu: max over the

@@ -14,6 +14,7 @@
 #include "asos/geometry/ray.hpp"
 #include "asos/geometry/transform.hpp"
 #include "asos/scene/description.hpp"
+#include "asos/shapes/box.hpp"
 #include "asos/shapes/local_cone.hpp"
 #include "asos/shapes/local_frame.hpp"
 #include "asos/shapes/plane.hpp"
@@ -40,7 +41,7 @@ public:
     const LocalFrame& frame() const { return frame_; }
 
 private:
-    using LocalShape = std::variant<Sphere, Plane>;
+    using LocalShape = std::variant<Sphere, Box, Plane>;
 
     Primitive(LocalShape shape, LocalFrame frame, const char* name);
     ConeClass classifyGeneral(const PreparedCone& cone) const;
