@@ -1,0 +1,40 @@
+#pragma once
+// POV-Ray's box { corner1, corner2 } (corners in any order), axis-aligned in
+// its local frame, which is the object frame.
+#include <optional>
+
+#include "asos/geometry/bounds.hpp"
+#include "asos/geometry/cone.hpp"
+#include "asos/geometry/ray.hpp"
+#include "asos/shapes/local_cone.hpp"
+#include "asos/shapes/local_hit.hpp"
+
+namespace asos {
+
+class Box {
+public:
+    static constexpr const char* kName = "box";
+
+    Box(const Vec3& corner1, const Vec3& corner2)
+        : lo_(glm::min(corner1, corner2)), hi_(glm::max(corner1, corner2)) {}
+
+    const Vec3& lo() const { return lo_; }
+    const Vec3& hi() const { return hi_; }
+    BoundingSphere boundingSphere() const { return {0.5 * (lo_ + hi_), 0.5 * glm::length(hi_ - lo_)}; }
+    Bounds3 worldBounds(const Mat3& worldFromLocal, const Vec3& offset) const;
+
+    std::optional<LocalHit> intersect(const Ray& ray, double tMin, double tMax) const;
+    bool intersectAny(const Ray& ray, double tMin, double tMax) const;
+    // From outside: the silhouette edges (between a face turned to the apex
+    // and one turned away) tested against the cone; see docs/geometry.md.
+    ConeClass classify(const LocalCone& cone) const;
+
+private:
+    ConeClass classifyOutside(const LocalCone& cone) const;
+    ConeClass classifyInside(const LocalCone& cone) const;
+    ConeClass classifyOnSurface(const LocalCone& cone, double tol) const;
+
+    Vec3 lo_, hi_;
+};
+
+}  // namespace asos

@@ -1,0 +1,274 @@
+#pragma once
+// Conservative building blocks of cone classification, shared by the
+// primitives (paper: "Detection Phase"). Every function takes the cone in the
+// primitive's local frame. A test named "...Outside" answers true only when
+// sure; a test named "...Meets" may answer true when unsure. Angles are never
+// computed: each test compares sines and cosines, and the cone membership of a
+// point w (relative to the apex) is written s*sigma >= c*|perp| with
+// sigma = w.axis and perp = w - sigma*axis, which stays exact for tiny cones
+// where cos(halfAngle) rounds to 1.
+#include <algorithm>
+#include <cmath>
+
+#include "asos/geometry/vec.hpp"
+#include "asos/shapes/local_cone.hpp"
+
+namespace asos::conegeom {
+
+inline ConeClass missClass() { return {}; }
+inline ConeClass fullClass(double tNear, double tFar) {
+    return {Coverage::Full, tNear, tFar, false};
+}
+// Marginal, with the depth bounds clipped to the cone's range.
+inline ConeClass marginalClass(const LocalCone& cone, double tNear, double tFar,
+                               bool singleEdge = false) {
+    return {Coverage::Marginal, std::max(cone.tMin, tNear), std::min(cone.tMax, tFar), singleEdge};
+}
+
+// angle(n, axis) <= halfAngle, from k = n.axis and g = |n x axis|.
+inline bool angleWithin(double k, double g, double c, double s) {
+    if (k >= 0.0) return c < 0.0 || g <= s;
+    return c < 0.0 && g >= s;
+}
+
+// The range [lo, hi] of n.d over the unit directions d of the cone; n unit.
+struct DotRange {
+    double lo;
+    double hi;
+};
+
+inline DotRange dotRange(const LocalCone& cone, double k, double g) {
+    const double c = cone.cosHalf, s = cone.sinHalf;
+    const double hi = angleWithin(k, g, c, s) ? 1.0 : k * c + g * s;
+    const double lo = angleWithin(-k, g, c, s) ? -1.0 : k * c - g * s;
+    return {lo, hi};
+}
+
+inline DotRange dotRange(const LocalCone& cone, const Vec3& n) {
+    return dotRange(cone, glm::dot(n, cone.axis), glm::length(glm::cross(n, cone.axis)));
+}
+
+// The rays of a cone against the plane at signed distance h (h != 0) along
+// the unit normal n from the apex, given the DotRange of n: a ray crosses at
+// t = h / (n.d) when that is positive.
+struct PlaneCrossing {
+    bool any = false;  // some ray crosses
+    bool all = false;  // every ray crosses
+    double tNear = kInfinity;
+    double tFar = -kInfinity;  // infinite when not every ray crosses
+};
+
+inline PlaneCrossing planeCrossing(DotRange range, double h) {
+    double lo = range.lo, hi = range.hi;
+    if (h < 0.0) {
+        h = -h;
+        const double oldLo = lo;
+        lo = -hi;
+        hi = -oldLo;
+    }
+    PlaneCrossing out;
+    if (!(hi > 0.0)) return out;
+    out.any = true;
+    out.all = lo > 0.0;
+    out.tNear = h / hi;
+    out.tFar = out.all ? h / lo : kInfinity;
+    return out;
+}
+
+// A point w relative to the apex, split along the axis, with the cone's
+// membership polynomial q = s^2 sigma^2 - c^2 |perp|^2.
+struct ConePoint {
+    Vec3 w;
+    double sigma;
+    Vec3 perp;
+    double q;
+    bool inside;
+};
+
+inline ConePoint conePoint(const LocalCone& cone, const Vec3& w) {
+    const double c = cone.cosHalf, s = cone.sinHalf;
+    ConePoint p;
+    p.w = w;
+    p.sigma = glm::dot(w, cone.axis);
+    p.perp = w - p.sigma * cone.axis;
+    const double perp2 = glm::dot(p.perp, p.perp);
+    p.q = s * s * p.sigma * p.sigma - c * c * perp2;
+    p.inside = c >= 0.0 ? (p.sigma >= 0.0 && p.q >= 0.0) : (p.sigma >= 0.0 || p.q <= 0.0);
+    return p;
+}
+
+// Whether the segment between two cone points meets the infinite cone.
+// Exact up to rounding (the cone is already widened by the angle margin).
+// q is a quadratic along the segment; it is expanded about the segment's
+// point nearest the apex, so that a segment passing very close to the apex
+// (where q is tiny next to its values at the ends) is still resolved.
+inline bool segmentMeetsCone(const LocalCone& cone, const ConePoint& a, const ConePoint& b) {
+    if (a.inside || b.inside) return true;
+    const double c = cone.cosHalf, s = cone.sinHalf;
+    // A cone wider than a hemisphere has a convex complement holding both ends.
+    if (c < 0.0) return false;
+    if (a.sigma < 0.0 && b.sigma < 0.0) return false;
+    const Vec3 e = b.w - a.w;
+    const double ee = glm::dot(e, e);
+    if (!(ee > 0.0)) return false;
+    const double tc = std::clamp(-glm::dot(a.w, e) / ee, 0.0, 1.0);
+    const ConePoint m = conePoint(cone, tc < 0.5 ? a.w + tc * e : b.w - (1.0 - tc) * e);
+    if (m.inside) return true;
+    const double se = glm::dot(e, cone.axis);
+    const Vec3 pe = e - se * cone.axis;
+    const double s2 = s * s, c2 = c * c;
+    // q(u) = A u^2 + 2 B u + C for the point at parameter tc + u.
+    const double qa = s2 * se * se - c2 * glm::dot(pe, pe);
+    const double qb = s2 * m.sigma * se - c2 * glm::dot(m.perp, pe);
+    const double qc = m.q;
+    auto q = [&](double u) { return (qa * u + 2.0 * qb) * u + qc; };
+    // Both sides of tc, each clipped to sigma >= 0 (in front of the apex).
+    const double ends[2][2] = {{-tc, 0.0}, {0.0, 1.0 - tc}};
+    for (const auto& end : ends) {
+        double u0 = end[0], u1 = end[1];
+        if (!(u1 > u0)) continue;
+        const double sigma0 = m.sigma + u0 * se, sigma1 = m.sigma + u1 * se;
+        if (sigma0 < 0.0 && sigma1 < 0.0) continue;
+        bool clipped0 = false, clipped1 = false;
+        if (sigma0 < 0.0) {
+            u0 = -m.sigma / se;
+            clipped0 = true;
+        } else if (sigma1 < 0.0) {
+            u1 = -m.sigma / se;
+            clipped1 = true;
+        }
+        // Where the clip cuts the segment, sigma = 0: q >= 0 only on the apex.
+        if (clipped0 && q(u0) >= 0.0) return true;
+        if (clipped1 && q(u1) >= 0.0) return true;
+        if (qa < 0.0) {
+            const double uv = -qb / qa;
+            if (uv > u0 && uv < u1 && qc + qb * uv >= 0.0) return true;
+        }
+    }
+    return false;
+}
+
+// True when no point of the ball (centre m, radius r) lies in the infinite
+// cone (angular test only). Exact: the distance from m to the cone exceeds r
+// (the ball grown by the cone's distance tolerance, for an apex on it).
+inline bool ballOutsideAngular(const LocalCone& cone, const Vec3& m, double r) {
+    r = r * (1.0 + 1e-12) + cone.absTol;
+    const Vec3 w = m - cone.apex;
+    const double d2 = glm::dot(w, w);
+    if (d2 <= r * r) return false;
+    const double c = cone.cosHalf, s = cone.sinHalf;
+    const double sigma = glm::dot(w, cone.axis);
+    const Vec3 perp = w - sigma * cone.axis;
+    const double p2 = glm::dot(perp, perp);
+    if (c >= 0.0) {
+        // Nearest cone point is the apex (sigma c + |perp| s < 0), or the
+        // perpendicular distance to the rim line |perp| c - sigma s exceeds r.
+        if (sigma < 0.0 && sigma * sigma * c * c > p2 * s * s) return true;
+        const double rhs = sigma * s + r;
+        return rhs < 0.0 || p2 * c * c > rhs * rhs;
+    }
+    // Wider than a hemisphere: the same distance, once m is outside the cone.
+    const double dp = std::sqrt(p2);
+    if (s * sigma >= c * dp) return false;
+    return sigma * c + dp * s < 0.0 || dp * c - sigma * s > r;
+}
+
+// True when the ball lies wholly nearer than the range or wholly beyond it.
+inline bool ballOutsideRange(const LocalCone& cone, const Vec3& m, double r) {
+    r = r * (1.0 + 1e-12) + cone.absTol;
+    const Vec3 w = m - cone.apex;
+    const double d2 = glm::dot(w, w);
+    const double far = cone.tMaxOuter + r;  // |w| - r > tMaxOuter
+    if (std::isfinite(far) && d2 > far * far) return true;
+    const double near = cone.tMinOuter - r;  // |w| + r < tMinOuter
+    return near > 0.0 && d2 < near * near;
+}
+
+inline bool ballOutside(const LocalCone& cone, const Vec3& m, double r) {
+    return ballOutsideAngular(cone, m, r) || ballOutsideRange(cone, m, r);
+}
+
+// The cone's footprint on the plane z = zc when every ray crosses it: an
+// ellipse in (x, y), and the range of crossing distances.
+struct Footprint {
+    bool bounded = false;  // false: some ray does not cross, or badly conditioned
+    Vec2 center{0.0};
+    Vec2 major{1.0, 0.0};  // unit
+    double a = 0.0;        // semi-axes, a >= b
+    double b = 0.0;
+    double tNear = 0.0;
+    double tFar = 0.0;
+};
+
+// The footprint on the plane x[axis] = value, in the coordinates
+// (x[(axis + 1) % 3], x[(axis + 2) % 3]).
+inline Footprint footprintOnPlane(const LocalCone& cone, int axis, double value) {
+    Footprint f;
+    const int i = (axis + 1) % 3, j = (axis + 2) % 3;
+    const Vec3& p = cone.apex;
+    const Vec3& ax = cone.axis;
+    const double delta = value - p[axis];
+    const double c = cone.cosHalf, s = cone.sinHalf;
+    if (delta == 0.0 || !(c > 0.0)) return f;
+    const double h = std::abs(delta);
+    const double an = delta > 0.0 ? ax[axis] : -ax[axis];  // cos of the axis to the plane normal
+    const double g2 = ax[i] * ax[i] + ax[j] * ax[j];
+    // k = cos^2(theta) - sin^2(gamma) = cos(theta + gamma) cos(theta - gamma):
+    // positive when every ray crosses; kept away from 0 so that the ellipse
+    // is well conditioned (an elongated footprint goes to the fallbacks).
+    const double k = c * c - g2;
+    if (!(an > 0.0) || !(k > 1e-6)) return f;
+    const double g = std::sqrt(g2);
+    f.bounded = true;
+    f.major = g > 0.0 ? Vec2(ax[i], ax[j]) / g : Vec2(1.0, 0.0);
+    f.center = Vec2(p[i], p[j]) + (h * an / k) * Vec2(ax[i], ax[j]);
+    f.a = h * s * c / k;
+    f.b = h * s / std::sqrt(k);
+    const double lo = an * c - g * s;
+    const double hi = angleWithin(an, g, c, s) ? 1.0 : an * c + g * s;
+    f.tNear = h / hi;
+    f.tFar = h / lo;
+    return f;
+}
+
+inline Footprint footprintOnZPlane(const LocalCone& cone, double zc) {
+    return footprintOnPlane(cone, 2, zc);
+}
+
+// Half-widths of the footprint ellipse's bounding box along its two coordinates.
+inline Vec2 footprintHalfWidths(const Footprint& f) {
+    const double u = f.major.x, v = f.major.y;
+    return {std::sqrt(f.a * f.a * u * u + f.b * f.b * v * v),
+            std::sqrt(f.a * f.a * v * v + f.b * f.b * u * u)};
+}
+
+// Support of the footprint ellipse in the unit direction nu: max over the
+// ellipse of nu.(y - center).
+inline double footprintSupport(const Footprint& f, const Vec2& nu) {
+    const double u = glm::dot(nu, f.major);
+    const double v = nu.y * f.major.x - nu.x * f.major.y;
+    return std::sqrt(f.a * f.a * u * u + f.b * f.b * v * v);
+}
+
+// Where an ellipse lies relative to a disc.
+enum class DiscRelation { EllipseInside, EllipseOutside, Crossing };
+
+// The footprint ellipse against the disc (centre, radius rho) in its plane;
+// Crossing when the disc's circle meets the ellipse (or when unsure).
+DiscRelation footprintVsDisc(const Footprint& f, const Vec2& center, double rho);
+
+// Distances from the point (y0, y1), y0, y1 >= 0, to the ellipse
+// (x/a)^2 + (y/b)^2 = 1 with a >= b > 0: the nearest (for a point outside)
+// and the farthest boundary point.
+double ellipseMinDistance(double a, double b, double y0, double y1);
+double ellipseMaxDistance(double a, double b, double y0, double y1);
+
+// Whether the circle {z = zc, x^2 + y^2 = rho^2} may meet the infinite cone.
+// With an arc given (nu unit, kappa), only the arc nu.(x, y) <= kappa counts.
+struct Arc {
+    Vec2 nu{1.0, 0.0};
+    double kappa = kInfinity;
+};
+bool circleMayMeetCone(const LocalCone& cone, double zc, double rho, const Arc& arc = {});
+
+}  // namespace asos::conegeom

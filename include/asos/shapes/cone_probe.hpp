@@ -1,0 +1,35 @@
+#pragma once
+// Checks a cone classification against a dense set of rays of the cone: its
+// axis, rings of rays at fractions of the half-angle, and the rim itself, each
+// traced exactly. Used by the property tests (any contradiction fails) and by
+// `asos bench intersect` (the spurious-marginal rate: a Marginal cone whose
+// rays all hit or all miss).
+#include <string>
+
+#include "asos/geometry/cone.hpp"
+#include "asos/shapes/primitive.hpp"
+
+namespace asos {
+
+struct ProbeDensity {
+    int rings = 6;        // rings at k/rings of the half-angle, k = 1..rings
+    int raysPerRing = 6;  // ring k carries raysPerRing * k rays
+    int rimRays = 48;     // extra rays on the rim
+};
+
+struct ProbeResult {
+    int rays = 0;
+    int hits = 0;
+    int violations = 0;  // rays contradicting the classification
+    std::string firstViolation;  // what the first contradicting ray saw
+
+    bool allHit() const { return hits == rays; }
+    bool allMiss() const { return hits == 0; }
+};
+
+// Rays are apex + t d for the directions d of the cone (its half-angle as
+// given, not widened), traced over [max(tMin, 0), tMax].
+ProbeResult probeCone(const Primitive& primitive, const Cone& cone, const ConeClass& answer,
+                      const ProbeDensity& density = {});
+
+}  // namespace asos

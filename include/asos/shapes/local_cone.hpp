@@ -1,0 +1,98 @@
+#pragma once
+// Cones as the primitives see them (paper: "Detection Phase").
+//
+// PreparedCone is a world cone with its trigonometry done once, since the
+// tracer asks one cone about many objects. Its half-angle is already widened
+// by kConeAngleMargin: every primitive classifies that slightly larger cone,
+// which keeps both Miss and Full conservative for the real one under rounding.
+//
+// LocalCone is the same cone carried into a primitive's local frame, where t
+// is local distance, with [tMin, tMax] also kept in a widened (outer) and a
+// narrowed (inner) form: "no hit can lie in the range" is proved against the
+// outer range, "every hit lies in the range" against the inner one.
+#include <algorithm>
+#include <cmath>
+
+#include "asos/geometry/cone.hpp"
+#include "asos/geometry/vec.hpp"
+
+namespace asos {
+
+// Radians added to every half-angle (plus the same fraction of the angle).
+inline constexpr double kConeAngleMargin = 1e-9;
+// Relative tolerance on distances compared against the t-range.
+inline constexpr double kConeDistanceTolerance = 1e-9;
+
+struct PreparedCone {
+    Vec3 apex{0.0};
+    Vec3 axis{0.0, 0.0, 1.0};  // unit
+    double cosHalf = 1.0;      // of the widened half-angle
+    double sinHalf = 0.0;
+    double tMin = 0.0;  // clamped to >= 0
+    double tMax = kInfinity;
+    // False for input that is not a cone (NaN, zero axis): such a cone is
+    // answered Marginal over its whole range, which is always conservative.
+    bool valid = true;
+
+    PreparedCone() = default;
+    explicit PreparedCone(const Cone& cone) {
+        apex = cone.apex;
+        tMin = std::max(cone.tMin, 0.0);
+        tMax = cone.tMax;
+        const double len = glm::length(cone.axis);
+        valid = std::isfinite(len) && len > 0.0 && std::isfinite(apex.x) &&
+                std::isfinite(apex.y) && std::isfinite(apex.z) && !std::isnan(tMin) &&
+                !std::isnan(tMax) && !std::isnan(cone.halfAngle) && cone.halfAngle >= 0.0;
+        if (!valid) return;
+        axis = cone.axis / len;
+        const double widened =
+            cone.halfAngle + kConeAngleMargin * (1.0 + cone.halfAngle);
+        if (widened >= kPi) {
+            cosHalf = -1.0;
+            sinHalf = 0.0;
+        } else {
+            cosHalf = std::cos(widened);
+            sinHalf = std::sin(widened);
+        }
+    }
+};
+
+struct LocalCone {
+    Vec3 apex{0.0};
+    Vec3 axis{0.0, 0.0, 1.0};  // unit
+    double cosHalf = 1.0;
+    double sinHalf = 0.0;
+    double tMin = 0.0;
+    double tMax = kInfinity;
+    double tMinOuter = 0.0, tMinInner = 0.0;
+    double tMaxOuter = kInfinity, tMaxInner = kInfinity;
+    double absTol = 0.0;  // absolute distance tolerance in local units
+
+    // Sets the range and its tolerant forms; absTol covers rounding of
+    // distances of the size of the scene around the apex.
+    void setRange(double t0, double t1, double tolerance) {
+        tMin = t0;
+        tMax = t1;
+        absTol = tolerance;
+        const double tol0 = kConeDistanceTolerance * t0 + absTol;
+        tMinOuter = t0 - tol0;
+        tMinInner = t0 + tol0;
+        if (std::isfinite(t1)) {
+            const double tol1 = kConeDistanceTolerance * t1 + absTol;
+            tMaxOuter = t1 + tol1;
+            tMaxInner = t1 - tol1;
+        } else {
+            tMaxOuter = tMaxInner = t1;
+        }
+    }
+
+    // Every hit is at t <= tFarBound and that is provably before the range.
+    bool surelyBefore(double tFarBound) const { return tFarBound < tMinOuter; }
+    // Every hit is at t >= tNearBound and that is provably after the range.
+    bool surelyAfter(double tNearBound) const { return tNearBound > tMaxOuter; }
+    // [lo, hi] provably lies inside the range.
+    bool surelyWithin(double lo, double hi) const { return lo >= tMinInner && hi <= tMaxInner; }
+    bool rangeEmpty() const { return tMin > tMax; }
+};
+
+}  // namespace asos

@@ -1,0 +1,59 @@
+#pragma once
+// Where a primitive's local frame sits in the world. Each primitive is stored
+// in a canonical local frame (a cylinder along +z from the origin, a disc in
+// z = 0, ...) placed by a rigid objectFromLocal motion; the world sees it
+// through worldFromObject. The composition is classified once so that the
+// common cases run without matrix work: Translate (rays and cones are only
+// shifted), Similarity (rotation and uniform scale: cones stay circular and
+// exact) and General (non-uniform scale or shear).
+#include <cstdint>
+
+#include "asos/geometry/ray.hpp"
+#include "asos/geometry/transform.hpp"
+#include "asos/geometry/vec.hpp"
+
+namespace asos {
+
+struct LocalFrame {
+    enum class Kind : std::uint8_t { Translate, Similarity, General };
+    Kind kind = Kind::Translate;
+    Mat3 localFromWorld{1.0};  // local = localFromWorld * world + localOffset
+    Vec3 localOffset{0.0};
+    Mat3 worldFromLocal{1.0};  // world = worldFromLocal * local + worldOffset
+    Vec3 worldOffset{0.0};
+    double worldPerLocal = 1.0;  // Similarity: world length of a unit local length
+    double sigmaMax = 1.0;       // largest and smallest singular values of localFromWorld
+    double sigmaMin = 1.0;
+    Mat3 objectFromLocal{1.0};  // object = objectFromLocal * local + objectOffset
+    Vec3 objectOffset{0.0};
+
+    // worldFromObject after the rigid placement (objectFromLocal, objectOffset).
+    // Throws std::invalid_argument when the transform is singular or not finite.
+    static LocalFrame make(const Transform& worldFromObject, const Mat3& objectFromLocal,
+                           const Vec3& objectOffset);
+
+    Ray rayToLocal(const Ray& r) const {
+        if (kind == Kind::Translate) return {r.origin + localOffset, r.dir};
+        return {localFromWorld * r.origin + localOffset, localFromWorld * r.dir};
+    }
+    Vec3 pointToLocal(const Vec3& p) const {
+        if (kind == Kind::Translate) return p + localOffset;
+        return localFromWorld * p + localOffset;
+    }
+    Vec3 pointToWorld(const Vec3& p) const {
+        if (kind == Kind::Translate) return p - localOffset;
+        return worldFromLocal * p + worldOffset;
+    }
+    // Unit world normal of a local normal (inverse transpose).
+    Vec3 normalToWorld(const Vec3& n) const {
+        if (kind == Kind::Translate) return glm::normalize(n);
+        return glm::normalize(n * localFromWorld);
+    }
+    Vec3 pointToObject(const Vec3& p) const { return objectFromLocal * p + objectOffset; }
+};
+
+// A rotation taking +z to the unit vector n (columns: two unit vectors
+// perpendicular to n, then n). Exact for coordinate axes.
+Mat3 frameAroundAxis(const Vec3& n);
+
+}  // namespace asos

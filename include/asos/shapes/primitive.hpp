@@ -1,0 +1,59 @@
+#pragma once
+// The one face every primitive shows the rest of the renderer: bounds, the
+// nearest ray hit, an any-hit test for shadows, and the classification of a
+// cone (paper: "Detection Phase"). A Primitive is a concrete local shape in a
+// std::variant plus the frame placing it in the world, so dispatch is a jump
+// on the variant's index, without virtual calls, and rays and cones reach the
+// shape through the cheapest path its frame allows (see LocalFrame).
+#include <optional>
+#include <variant>
+
+#include "asos/geometry/bounds.hpp"
+#include "asos/geometry/cone.hpp"
+#include "asos/geometry/hit.hpp"
+#include "asos/geometry/ray.hpp"
+#include "asos/geometry/transform.hpp"
+#include "asos/scene/description.hpp"
+#include "asos/shapes/box.hpp"
+#include "asos/shapes/local_cone.hpp"
+#include "asos/shapes/local_frame.hpp"
+#include "asos/shapes/plane.hpp"
+#include "asos/shapes/sphere.hpp"
+
+namespace asos {
+
+class Primitive {
+public:
+    // Throws std::invalid_argument with a clear message for meaningless shapes.
+    static Primitive make(const Shape& shape, const Transform& worldFromObject);
+
+    bool bounded() const;         // false for planes
+    Bounds3 worldBounds() const;  // tight-ish, conservative; unspecified when !bounded()
+    // The nearest hit with t in [tMin, tMax] of a ray with a unit direction.
+    std::optional<SurfaceHit> intersect(const Ray& worldRay, double tMin, double tMax) const;
+    bool intersectAny(const Ray& worldRay, double tMin, double tMax) const;
+    ConeClass classify(const Cone& worldCone) const;
+    // The same, for a cone whose trigonometry is done once for many objects.
+    ConeClass classify(const PreparedCone& worldCone) const;
+
+    // The POV-Ray keyword of the shape ("sphere", "cone", ...).
+    const char* kindName() const;
+    const LocalFrame& frame() const { return frame_; }
+
+private:
+    using LocalShape = std::variant<Sphere, Box, Plane>;
+
+    Primitive(LocalShape shape, LocalFrame frame, const char* name);
+    ConeClass classifyGeneral(const PreparedCone& cone) const;
+    template <class F>
+    decltype(auto) visit(F&& f) const;
+
+    LocalShape shape_;
+    LocalFrame frame_;
+    const char* name_;
+    Bounds3 worldBounds_;
+    BoundingSphere localSphere_;
+    double sphereTolerance_ = 0.0;  // scale of the local coordinates, for rounding tolerances
+};
+
+}  // namespace asos

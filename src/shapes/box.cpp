@@ -1,0 +1,236 @@
+#include "asos/shapes/box.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "asos/shapes/cone_geometry.hpp"
+
+namespace asos {
+
+using namespace conegeom;
+
+namespace {
+
+// The slab test: the interval of t over which the line o + t d is inside the
+// box, and the axes through which it enters and leaves.
+struct Slab {
+    bool hit = false;
+    double tEnter = -kInfinity, tExit = kInfinity;
+    int enterAxis = -1, exitAxis = -1;
+};
+
+Slab slab(const Vec3& lo, const Vec3& hi, const Vec3& o, const Vec3& d) {
+    Slab s;
+    for (int i = 0; i < 3; ++i) {
+        if (d[i] == 0.0) {
+            if (o[i] < lo[i] || o[i] > hi[i]) return s;
+            continue;
+        }
+        const double inv = 1.0 / d[i];
+        double t0 = (lo[i] - o[i]) * inv, t1 = (hi[i] - o[i]) * inv;
+        if (t0 > t1) std::swap(t0, t1);
+        if (t0 > s.tEnter) {
+            s.tEnter = t0;
+            s.enterAxis = i;
+        }
+        if (t1 < s.tExit) {
+            s.tExit = t1;
+            s.exitAxis = i;
+        }
+    }
+    s.hit = s.tEnter <= s.tExit;
+    return s;
+}
+
+double sq(double x) { return x * x; }
+
+}  // namespace
+
+Bounds3 Box::worldBounds(const Mat3& m, const Vec3& offset) const {
+    Bounds3 b;
+    for (int i = 0; i < 8; ++i) {
+        const Vec3 c((i & 1) ? hi_.x : lo_.x, (i & 2) ? hi_.y : lo_.y, (i & 4) ? hi_.z : lo_.z);
+        b.extend(m * c + offset);
+    }
+    return b;
+}
+
+std::optional<LocalHit> Box::intersect(const Ray& ray, double tMin, double tMax) const {
+    const Slab s = slab(lo_, hi_, ray.origin, ray.dir);
+    if (!s.hit) return std::nullopt;
+    double t;
+    int axis;
+    double sign;
+    if (s.tEnter >= tMin && s.tEnter <= tMax && s.enterAxis >= 0) {
+        t = s.tEnter;
+        axis = s.enterAxis;
+        sign = ray.dir[axis] > 0.0 ? -1.0 : 1.0;
+    } else if (s.tExit >= tMin && s.tExit <= tMax && s.exitAxis >= 0) {
+        t = s.tExit;
+        axis = s.exitAxis;
+        sign = ray.dir[axis] > 0.0 ? 1.0 : -1.0;
+    } else {
+        return std::nullopt;
+    }
+    Vec3 n(0.0);
+    n[axis] = sign;
+    Vec3 p = ray.at(t);
+    p[axis] = (sign > 0.0) ? hi_[axis] : lo_[axis];  // exactly on the face
+    return LocalHit{t, p, n};
+}
+
+bool Box::intersectAny(const Ray& ray, double tMin, double tMax) const {
+    const Slab s = slab(lo_, hi_, ray.origin, ray.dir);
+    return s.hit && ((s.tEnter >= tMin && s.tEnter <= tMax && s.enterAxis >= 0) ||
+                     (s.tExit >= tMin && s.tExit <= tMax && s.exitAxis >= 0));
+}
+
+ConeClass Box::classify(const LocalCone& cone) const {
+    const BoundingSphere ball = boundingSphere();
+    if (ballOutside(cone, ball.center, ball.radius)) return missClass();
+    const Vec3& p = cone.apex;
+    // Positional tolerance: within it the apex counts as on the surface.
+    const double tol = 1e-14 * (std::abs(p.x) + std::abs(p.y) + std::abs(p.z) +
+                                glm::length(ball.center) + ball.radius) +
+                       cone.absTol;
+    bool outside = false, inside = true;
+    for (int i = 0; i < 3; ++i) {
+        if (p[i] < lo_[i] - tol || p[i] > hi_[i] + tol) outside = true;
+        if (!(p[i] > lo_[i] + tol && p[i] < hi_[i] - tol)) inside = false;
+    }
+    if (outside) return classifyOutside(cone);
+    if (inside) return classifyInside(cone);
+    return classifyOnSurface(cone, tol);
+}
+
+ConeClass Box::classifyOutside(const LocalCone& cone) const {
+    const Vec3& p = cone.apex;
+    // Depths: the nearest point of the box, the farthest corner, and the
+    // farthest point of the faces turned to the apex (where rays enter).
+    Vec3 gap, far2;
+    int front[3];  // +1: the hi face of this axis faces the apex, -1: the lo face, 0: neither
+    for (int i = 0; i < 3; ++i) {
+        front[i] = p[i] > hi_[i] ? 1 : p[i] < lo_[i] ? -1 : 0;
+        gap[i] = std::max({lo_[i] - p[i], 0.0, p[i] - hi_[i]});
+        far2[i] = std::max(sq(p[i] - lo_[i]), sq(p[i] - hi_[i]));
+    }
+    const double dNear = glm::length(gap);
+    const double dFar = std::sqrt(far2.x + far2.y + far2.z);
+    if (cone.surelyAfter(dNear) || cone.surelyBefore(dFar)) return missClass();
+    double frontFar2 = 0.0;
+    for (int i = 0; i < 3; ++i)
+        if (front[i] != 0)
+            frontFar2 = std::max(frontFar2, sq(gap[i]) + far2[(i + 1) % 3] + far2[(i + 2) % 3]);
+    const double frontFar = std::sqrt(frontFar2);
+    const double firstFar = dNear >= cone.tMinInner ? frontFar : dFar;
+
+    // Quick Full: the footprint on the face the axis enters through lies
+    // inside that face, so every ray enters there.
+    const Slab axisSlab = slab(lo_, hi_, p, cone.axis);
+    const bool axisHits = axisSlab.hit && axisSlab.tExit >= 0.0;
+    if (axisHits && axisSlab.enterAxis >= 0 && axisSlab.tEnter >= 0.0) {
+        const int a = axisSlab.enterAxis;
+        const double face = front[a] > 0 ? hi_[a] : lo_[a];
+        const Footprint f = footprintOnPlane(cone, a, face);
+        if (f.bounded) {
+            const int i = (a + 1) % 3, j = (a + 2) % 3;
+            const Vec2 half = footprintHalfWidths(f);
+            const double slack = 1e-12 * (f.a + std::abs(f.center.x) + std::abs(f.center.y));
+            if (f.center.x - half.x > lo_[i] + slack && f.center.x + half.x < hi_[i] - slack &&
+                f.center.y - half.y > lo_[j] + slack && f.center.y + half.y < hi_[j] - slack &&
+                front[a] != 0) {
+                if (cone.surelyWithin(f.tNear, f.tFar)) return fullClass(f.tNear, f.tFar);
+                return marginalClass(cone, f.tNear, f.tNear >= cone.tMinInner ? f.tFar : dFar);
+            }
+        }
+    }
+
+    // The silhouette: edges between a face turned to the apex and one turned
+    // away (paper: "Detection Phase"; the boundary seen from the apex).
+    ConePoint corner[8];
+    for (int c = 0; c < 8; ++c) {
+        const Vec3 x((c & 1) ? hi_.x : lo_.x, (c & 2) ? hi_.y : lo_.y, (c & 4) ? hi_.z : lo_.z);
+        corner[c] = conePoint(cone, x - p);
+    }
+    int meeting = 0;
+    bool endpointInside = false;
+    for (int k = 0; k < 3; ++k) {  // edges along axis k
+        const int i = (k + 1) % 3, j = (k + 2) % 3;
+        for (int si = 0; si < 2; ++si) {
+            for (int sj = 0; sj < 2; ++sj) {
+                const bool frontI = front[i] == (si ? 1 : -1);
+                const bool frontJ = front[j] == (sj ? 1 : -1);
+                if (frontI == frontJ) continue;
+                const int base = (si << i) | (sj << j);
+                const ConePoint& a = corner[base];
+                const ConePoint& b = corner[base | (1 << k)];
+                if (segmentMeetsCone(cone, a, b)) {
+                    ++meeting;
+                    endpointInside = endpointInside || a.inside || b.inside;
+                }
+            }
+        }
+    }
+    if (meeting > 0) {
+        const bool single = meeting == 1 && !endpointInside && cone.surelyWithin(dNear, dFar);
+        return marginalClass(cone, dNear, firstFar, single);
+    }
+    // No silhouette in the cone: every ray hits or none does, as the axis.
+    if (!axisHits) return missClass();
+    if (cone.surelyWithin(dNear, frontFar)) return fullClass(dNear, frontFar);
+    return marginalClass(cone, dNear, firstFar);
+}
+
+ConeClass Box::classifyInside(const LocalCone& cone) const {
+    // Every ray leaves: no sooner than the nearest face plane, no later than
+    // the farthest corner.
+    const Vec3& p = cone.apex;
+    double exitNear = kInfinity, far2 = 0.0;
+    for (int i = 0; i < 3; ++i) {
+        exitNear = std::min({exitNear, p[i] - lo_[i], hi_[i] - p[i]});
+        far2 += std::max(sq(p[i] - lo_[i]), sq(p[i] - hi_[i]));
+    }
+    const double exitFar = std::sqrt(far2);
+    if (cone.surelyAfter(exitNear) || cone.surelyBefore(exitFar)) return missClass();
+    if (cone.surelyWithin(exitNear, exitFar)) return fullClass(exitNear, exitFar);
+    return marginalClass(cone, exitNear, exitFar);
+}
+
+ConeClass Box::classifyOnSurface(const LocalCone& cone, double tol) const {
+    // The apex is on the surface (to rounding). The box lies behind each face
+    // plane: rays leaving through a face the apex is on meet the box again
+    // only within t <= tol / (n.d).
+    const Vec3& p = cone.apex;
+    double far2 = 0.0;
+    for (int i = 0; i < 3; ++i) far2 += std::max(sq(p[i] - lo_[i]), sq(p[i] - hi_[i]));
+    const double dFar = std::sqrt(far2) + tol;
+    // Rays turned into the box through every face the apex is on have
+    // entered by entryFar and leave no sooner than the nearest other face.
+    bool allInward = true;
+    double exitNear = kInfinity, entryFar = 0.0;
+    for (int i = 0; i < 3; ++i) {
+        const int j = (i + 1) % 3, k = (i + 2) % 3;
+        const double g = std::sqrt(sq(cone.axis[j]) + sq(cone.axis[k]));
+        for (int side = 0; side < 2; ++side) {
+            const double sign = side ? 1.0 : -1.0;
+            const double gapOut = side ? p[i] - hi_[i] : lo_[i] - p[i];  // > 0 outside
+            if (std::abs(gapOut) > tol) {
+                exitNear = std::min(exitNear, -gapOut);
+                continue;
+            }
+            const DotRange r = dotRange(cone, sign * cone.axis[i], g);
+            if (r.lo > 0.0) {
+                const double tHit = (tol + std::max(0.0, -gapOut)) / r.lo;
+                if (cone.surelyBefore(tHit)) return missClass();
+            }
+            if (r.hi < 0.0) entryFar = std::max(entryFar, (tol + std::max(0.0, gapOut)) / -r.hi);
+            else allInward = false;
+        }
+    }
+    if (cone.surelyBefore(dFar)) return missClass();
+    if (allInward && entryFar < 0.5 * exitNear && cone.surelyWithin(exitNear, dFar))
+        return fullClass(cone.tMin, dFar);
+    return marginalClass(cone, cone.tMin, dFar);
+}
+
+}  // namespace asos

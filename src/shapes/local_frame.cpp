@@ -1,0 +1,108 @@
+#include "asos/shapes/local_frame.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+
+namespace asos {
+
+namespace {
+
+bool finite(const Mat3& m) {
+    for (int c = 0; c < 3; ++c)
+        for (int r = 0; r < 3; ++r)
+            if (!std::isfinite(m[c][r])) return false;
+    return true;
+}
+
+// Eigenvalues of a symmetric 3x3 matrix by cyclic Jacobi rotations.
+Vec3 symmetricEigenvalues(Mat3 a) {
+    for (int sweep = 0; sweep < 50; ++sweep) {
+        const double off = a[0][1] * a[0][1] + a[0][2] * a[0][2] + a[1][2] * a[1][2];
+        const double diag = a[0][0] * a[0][0] + a[1][1] * a[1][1] + a[2][2] * a[2][2];
+        if (off <= 1e-30 * diag) break;
+        for (int p = 0; p < 2; ++p) {
+            for (int q = p + 1; q < 3; ++q) {
+                if (a[p][q] == 0.0) continue;
+                const double theta = (a[q][q] - a[p][p]) / (2.0 * a[p][q]);
+                const double t = (theta >= 0.0 ? 1.0 : -1.0) /
+                                 (std::abs(theta) + std::sqrt(theta * theta + 1.0));
+                const double c = 1.0 / std::sqrt(t * t + 1.0), s = t * c;
+                Mat3 j(1.0);
+                j[p][p] = c;
+                j[q][q] = c;
+                j[q][p] = s;   // column q, row p
+                j[p][q] = -s;  // column p, row q
+                a = glm::transpose(j) * a * j;
+            }
+        }
+    }
+    return {a[0][0], a[1][1], a[2][2]};
+}
+
+}  // namespace
+
+Mat3 frameAroundAxis(const Vec3& n) {
+    // Duff et al., "Building an Orthonormal Basis, Revisited" (2017).
+    const double sign = std::copysign(1.0, n.z);
+    const double a = -1.0 / (sign + n.z);
+    const double b = n.x * n.y * a;
+    const Vec3 u(1.0 + sign * n.x * n.x * a, sign * b, -sign * n.x);
+    const Vec3 v(b, sign + n.y * n.y * a, -n.y);
+    return Mat3(u, v, n);
+}
+
+LocalFrame LocalFrame::make(const Transform& worldFromObject, const Mat3& objectFromLocal,
+                            const Vec3& objectOffset) {
+    LocalFrame f;
+    f.objectFromLocal = objectFromLocal;
+    f.objectOffset = objectOffset;
+    const Mat4& m = worldFromObject.matrix();
+    const Mat4& inv = worldFromObject.inverseMatrix();
+    const Mat3 wo(m), ow(inv);
+    // The placement is rigid: its inverse is its transpose.
+    const Mat3 lo = glm::transpose(objectFromLocal);
+    f.worldFromLocal = wo * objectFromLocal;
+    f.worldOffset = wo * objectOffset + Vec3(m[3]);
+    f.localFromWorld = lo * ow;
+    f.localOffset = lo * (ow * Vec3(0.0) + Vec3(inv[3]) - objectOffset);
+    const Mat3& w = f.worldFromLocal;
+    if (!finite(w) || !std::isfinite(f.worldOffset.x + f.worldOffset.y + f.worldOffset.z))
+        throw std::invalid_argument("the object's transform is not finite");
+    const double colNorms = glm::length(w[0]) * glm::length(w[1]) * glm::length(w[2]);
+    if (!(std::abs(glm::determinant(w)) > 1e-12 * colNorms))
+        throw std::invalid_argument(
+            "the object's transform is singular (a zero scale flattens the object)");
+    if (!finite(f.localFromWorld) ||
+        !std::isfinite(f.localOffset.x + f.localOffset.y + f.localOffset.z))
+        throw std::invalid_argument("the object's inverse transform is not finite");
+
+    if (w == Mat3(1.0)) {
+        f.kind = Kind::Translate;
+        f.localFromWorld = Mat3(1.0);
+        f.worldFromLocal = Mat3(1.0);
+        f.localOffset = -f.worldOffset;
+        return f;
+    }
+    const Mat3 gram = glm::transpose(w) * w;
+    const double s2 = (gram[0][0] + gram[1][1] + gram[2][2]) / 3.0;
+    bool similar = true;
+    for (int c = 0; c < 3; ++c)
+        for (int r = 0; r < 3; ++r)
+            if (std::abs(gram[c][r] - (c == r ? s2 : 0.0)) > 1e-12 * s2) similar = false;
+    if (similar) {
+        f.kind = Kind::Similarity;
+        f.worldPerLocal = std::sqrt(s2);
+        f.sigmaMax = f.sigmaMin = 1.0 / f.worldPerLocal;
+        return f;
+    }
+    f.kind = Kind::General;
+    const Vec3 ev = symmetricEigenvalues(glm::transpose(f.localFromWorld) * f.localFromWorld);
+    const double hi = std::max({ev.x, ev.y, ev.z}), low = std::min({ev.x, ev.y, ev.z});
+    // Singular values, rounded outward.
+    f.sigmaMax = std::sqrt(hi) * (1.0 + 1e-12);
+    f.sigmaMin = std::sqrt(std::max(low, 0.0)) * (1.0 - 1e-12);
+    return f;
+}
+
+}  // namespace asos

@@ -1,0 +1,47 @@
+#include "asos/shapes/plane.hpp"
+
+#include <cmath>
+
+#include "asos/shapes/cone_geometry.hpp"
+
+namespace asos {
+
+using namespace conegeom;
+
+std::optional<LocalHit> Plane::intersect(const Ray& ray, double tMin, double tMax) const {
+    const double denom = glm::dot(normal_, ray.dir);
+    if (denom == 0.0) return std::nullopt;
+    const double t = (distance_ - glm::dot(normal_, ray.origin)) / denom;
+    if (!(t >= tMin && t <= tMax)) return std::nullopt;
+    return LocalHit{t, ray.at(t), normal_};
+}
+
+ConeClass Plane::classify(const LocalCone& cone) const {
+    // The plane lies at signed distance h along n from the apex; a ray
+    // crosses it at t = h / (n.d) when that is positive.
+    const double h = distance_ - glm::dot(normal_, cone.apex);
+    const double hTol = 1e-15 * (std::abs(distance_) + glm::length(cone.apex)) + cone.absTol;
+    const DotRange range = dotRange(cone, normal_);
+    if (std::abs(h) <= hTol) {
+        // Apex on the plane (to rounding): rays cross at |t| <= hTol / |n.d|.
+        const double slope = range.lo > 0.0 ? range.lo : range.hi < 0.0 ? -range.hi : 0.0;
+        if (slope > 0.0) {
+            const double tHit = hTol / slope;
+            if (cone.surelyBefore(tHit)) return missClass();
+            return marginalClass(cone, cone.tMin, tHit);
+        }
+        return marginalClass(cone, cone.tMin, cone.tMax);
+    }
+    const PlaneCrossing crossing = planeCrossing(range, h);
+    if (!crossing.any) return missClass();
+    if (cone.surelyAfter(crossing.tNear) || cone.surelyBefore(crossing.tFar)) return missClass();
+    if (crossing.all && cone.surelyWithin(crossing.tNear, crossing.tFar))
+        return fullClass(crossing.tNear, crossing.tFar);
+    // The boundary in the cone is the horizon (a straight line in any image
+    // plane) unless the range cuts the footprint.
+    const bool horizonOnly =
+        !crossing.all && !std::isfinite(cone.tMax) && crossing.tNear >= cone.tMinInner;
+    return marginalClass(cone, crossing.tNear, crossing.tFar, horizonOnly);
+}
+
+}  // namespace asos

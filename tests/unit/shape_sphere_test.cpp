@@ -1,0 +1,167 @@
+#include <catch2/catch.hpp>
+
+#include <cmath>
+
+#include "asos/shapes/primitive.hpp"
+#include "shape_property.hpp"
+
+using namespace asos;
+
+namespace {
+Primitive sphere(Vec3 center, double radius, const Transform& t = {}) {
+    return Primitive::make(SphereShape{center, radius}, t);
+}
+bool near(const Vec3& a, const Vec3& b, double tol = 1e-12) { return glm::length(a - b) <= tol; }
+}  // namespace
+
+TEST_CASE("Sphere ray hits from outside, inside, tangent and far away", "[shapes][sphere]") {
+    const Primitive s = sphere({0, 0, 0}, 1.0);
+    auto hit = s.intersect({{0, 0, -5}, {0, 0, 1}}, 0.0, kInfinity);
+    REQUIRE(hit);
+    CHECK(hit->t == Approx(4.0));
+    CHECK(near(hit->position, {0, 0, -1}));
+    CHECK(near(hit->normal, {0, 0, -1}));
+    CHECK(hit->objectIndex == -1);
+
+    // From inside, the exit, with the outward normal.
+    hit = s.intersect({{0, 0, 0}, {0, 1, 0}}, 0.0, kInfinity);
+    REQUIRE(hit);
+    CHECK(hit->t == Approx(1.0));
+    CHECK(near(hit->normal, {0, 1, 0}));
+
+    // Tangent: exactly grazing hits, a hair outside misses.
+    hit = s.intersect({{1, 0, -5}, {0, 0, 1}}, 0.0, kInfinity);
+    REQUIRE(hit);
+    CHECK(hit->t == Approx(5.0));
+    CHECK_FALSE(s.intersect({{1.0 + 1e-9, 0, -5}, {0, 0, 1}}, 0.0, kInfinity));
+
+    // The t-interval picks the hit inside it.
+    CHECK_FALSE(s.intersect({{0, 0, -5}, {0, 0, 1}}, 0.0, 3.9));
+    hit = s.intersect({{0, 0, -5}, {0, 0, 1}}, 4.5, kInfinity);
+    REQUIRE(hit);
+    CHECK(hit->t == Approx(6.0));
+    CHECK(s.intersectAny({{0, 0, -5}, {0, 0, 1}}, 4.5, kInfinity));
+    CHECK_FALSE(s.intersectAny({{0, 0, -5}, {0, 0, 1}}, 6.5, kInfinity));
+
+    // 1e5 units away, off-axis: t = d cos(b) - sqrt(r^2 - d^2 sin^2(b)).
+    const Primitive far = sphere({0, 0, 1e5}, 1.0);
+    const double b = 0.5e-5;
+    const Vec3 dir(std::sin(b), 0, std::cos(b));
+    hit = far.intersect({{0, 0, 0}, dir}, 0.0, kInfinity);
+    REQUIRE(hit);
+    const double expected = 1e5 * std::cos(b) - std::sqrt(1.0 - 1e10 * std::sin(b) * std::sin(b));
+    CHECK(std::abs(hit->t - expected) < 1e-9);
+    CHECK(std::abs(glm::length(hit->position - Vec3(0, 0, 1e5)) - 1.0) < 1e-9);
+}
+
+TEST_CASE("Sphere under transforms: ellipsoid normals and object points", "[shapes][sphere]") {
+    // scale <2,1,1>: an ellipsoid with semi-axes 2, 1, 1.
+    const Primitive e = sphere({0, 0, 0}, 1.0, Transform::scale({2, 1, 1}));
+    auto hit = e.intersect({{-5, 0, 0}, {1, 0, 0}}, 0.0, kInfinity);
+    REQUIRE(hit);
+    CHECK(hit->t == Approx(3.0));
+    CHECK(near(hit->normal, {-1, 0, 0}));
+    CHECK(near(hit->objectPoint, {-1, 0, 0}));
+    // At (sqrt(2), sqrt(0.5), 0) the normal is along (x/4, y, 0).
+    const Vec3 p(std::sqrt(2.0), std::sqrt(0.5), 0);
+    hit = e.intersect({{p.x, 5, 0}, {0, -1, 0}}, 0.0, kInfinity);
+    REQUIRE(hit);
+    CHECK(near(hit->position, p, 1e-12));
+    CHECK(near(hit->normal, glm::normalize(Vec3(p.x / 4, p.y, 0)), 1e-12));
+    // Translated and rotated: the object point stays in object space.
+    const Primitive t = sphere({1, 0, 0}, 0.5, Transform::translate({0, 3, 0}) *
+                                                   Transform::rotateDegrees({0, 0, 90}));
+    hit = t.intersect({{0, 1, 0}, {0, 1, 0}}, 0.0, kInfinity);  // centre at (0, 4, 0)
+    REQUIRE(hit);
+    CHECK(hit->t == Approx(2.5));
+    CHECK(near(hit->objectPoint, {0.5, 0, 0}));
+    CHECK(t.worldBounds().contains({0, 4.4999, 0}));
+    CHECK(near(t.worldBounds().lo, {-0.5, 3.5, -0.5}, 1e-9));
+}
+
+TEST_CASE("Sphere cone classification: known answers", "[shapes][sphere]") {
+    const Primitive s = sphere({0, 0, 0}, 1.0);
+    const double tangent = std::asin(0.1);  // seen from 10 units away
+    Cone c;
+    c.apex = {0, 0, -10};
+    c.axis = {0, 0, 1};
+    c.halfAngle = 0.5 * tangent;
+    ConeClass k = s.classify(c);
+    CHECK(k.coverage == Coverage::Full);
+    CHECK(k.tNear == Approx(9.0).epsilon(1e-6));
+    CHECK(k.tFar <= std::sqrt(99.0));
+    c.halfAngle = 1.5 * tangent;
+    CHECK(s.classify(c).coverage == Coverage::Marginal);
+    CHECK_FALSE(s.classify(c).singleEdge);
+    c.axis = {std::sin(0.3), 0, std::cos(0.3)};
+    c.halfAngle = 0.1;
+    CHECK(s.classify(c).coverage == Coverage::Miss);
+    // A Full cone whose hits all lie beyond tMax misses; one cut by tMax is marginal.
+    c.axis = {0, 0, 1};
+    c.halfAngle = 0.01;
+    c.tMax = 8.9;
+    CHECK(s.classify(c).coverage == Coverage::Miss);
+    c.tMax = 9.0005;
+    CHECK(s.classify(c).coverage == Coverage::Marginal);
+    // From inside every ray leaves between r - d and r + d.
+    c = Cone{};
+    c.apex = {0, 0, 0.5};
+    c.axis = {1, 0, 0};
+    c.halfAngle = 1.0;
+    k = s.classify(c);
+    CHECK(k.coverage == Coverage::Full);
+    CHECK(k.tNear >= 0.5 - 1e-9);
+    CHECK(k.tFar <= 1.5 + 1e-9);
+    // A shadow cone leaving the lit side of the surface it starts on misses.
+    c.apex = {0, 0, 1};
+    c.axis = glm::normalize(Vec3(0.3, 0, 1));
+    c.halfAngle = 0.2;
+    c.tMin = 1e-6;
+    CHECK(s.classify(c).coverage == Coverage::Miss);
+    c.axis = glm::normalize(Vec3(1, 0, 0.01));  // straddles the tangent plane
+    CHECK(s.classify(c).coverage == Coverage::Marginal);
+}
+
+TEST_CASE("Sphere degenerate input has defined answers", "[shapes][sphere]") {
+    CHECK_THROWS_WITH(sphere({0, 0, 0}, -1.0), Catch::Contains("radius must not be negative"));
+    CHECK_THROWS_WITH(sphere({0, 0, 0}, 1.0, Transform::scale({1, 0, 1})),
+                      Catch::Contains("singular"));
+    const Primitive empty = sphere({0, 0, 0}, 0.0);
+    CHECK_FALSE(empty.intersect({{0, 0, -5}, {0, 0, 1}}, 0.0, kInfinity));
+    Cone c;
+    c.apex = {0, 0, -5};
+    c.halfAngle = 0.5;
+    CHECK(empty.classify(c).coverage == Coverage::Miss);
+    const Primitive s = sphere({0, 0, 0}, 1.0);
+    // A ray-thin cone along a hitting ray is Full.
+    c.halfAngle = 0.0;
+    CHECK(s.classify(c).coverage == Coverage::Full);
+    // Wider than a hemisphere: marginal, never NaN.
+    c.halfAngle = 2.5;
+    const ConeClass wide = s.classify(c);
+    CHECK(wide.coverage == Coverage::Marginal);
+    CHECK_FALSE(std::isnan(wide.tNear + wide.tFar));
+    // Not a cone at all.
+    c.apex = {std::nan(""), 0, 0};
+    const ConeClass bad = s.classify(c);
+    CHECK(bad.coverage == Coverage::Marginal);
+    CHECK_FALSE(std::isnan(bad.tNear + bad.tFar));
+}
+
+TEST_CASE("Sphere cone classification is conservative (property)", "[shapes][sphere][property]") {
+    using namespace shapetest;
+    const PropertyStats stats = runConeProperty("sphere", 0x5b11e7e5ull, 100000, [](Rng& rng) {
+        ShapeCase sc;
+        const Vec3 center(rng.uniform(-2, 2), rng.uniform(-2, 2), rng.uniform(-2, 2));
+        const double radius = rng.logUniform(-1.0, 1.0);
+        sc.shape = SphereShape{center, radius};
+        sc.size = radius;
+        sc.surfacePoint = [=](Rng& r) { return center + radius * r.unitVector(); };
+        sc.text = "sphere { " + fmt(center) + ", " + fmt(radius) + " }";
+        return sc;
+    });
+    CHECK(stats.failures == 0);
+    CHECK(stats.full > 0);
+    CHECK(stats.marginal > 0);
+    CHECK(stats.miss > 0);
+}
