@@ -1,0 +1,393 @@
+#pragma once
+// A bounding volume hierarchy over the scene's bounded objects (paper:
+// "Detection Phase" needs, for a pyray's cone, the objects it may meet; the
+// classic methods need nearest and any hits). Built by the binned surface area
+// heuristic into a binary tree, then collapsed into four-wide nodes whose
+// child boxes are floats rounded outward, so every box still holds what it
+// bounds. Layout, build and the robustness argument: docs/accel.md.
+//
+// The tree knows items only by index and bounds; the caller supplies the
+// per-item tests as callables, which the traversals (templates here) inline.
+#include <array>
+#include <bit>
+#include <cmath>
+#include <cstdint>
+#include <cstring>
+#include <limits>
+#include <optional>
+#include <span>
+#include <type_traits>
+#include <utility>
+#include <vector>
+
+#include "asos/accel/cone_box.hpp"
+#include "asos/geometry/bounds.hpp"
+#include "asos/geometry/cone.hpp"
+#include "asos/geometry/ray.hpp"
+
+namespace asos {
+
+struct BvhBuildOptions {
+    int maxLeafSize = 4;         // items per leaf, 1..15
+    double traversalCost = 1.0;  // SAH cost of visiting a node, in item tests
+    int binCount = 32;           // SAH bins per axis, 2..256
+};
+
+namespace bvh_detail {
+
+using Float4 = float __attribute__((vector_size(16)));
+using Int4 = std::int32_t __attribute__((vector_size(16)));
+
+// Four children's boxes, structure of arrays: box[side][axis][child], side 0
+// the low corner and 1 the high one. An unused slot has lo = +inf, hi = -inf.
+struct alignas(64) Node {
+    Float4 box[2][3];
+    std::uint32_t child[4];
+};
+
+// A child reference: a node index, or (top bit set) a leaf holding `count`
+// items from slot `first` of the item order.
+inline constexpr std::uint32_t kLeafBit = 0x80000000u;
+inline constexpr int kCountShift = 27;
+inline constexpr std::uint32_t kFirstMask = (1u << kCountShift) - 1;
+inline constexpr std::uint32_t kEmptyLeaf = kLeafBit;  // a leaf of no items
+
+inline bool isLeaf(std::uint32_t ref) { return (ref & kLeafBit) != 0; }
+inline std::uint32_t leafFirst(std::uint32_t ref) { return ref & kFirstMask; }
+inline std::uint32_t leafCount(std::uint32_t ref) { return (ref >> kCountShift) & 15u; }
+
+// The smallest float >= x and the largest float <= x.
+inline float nextFloatUp(float f) {
+    if (std::isnan(f) || f == std::numeric_limits<float>::infinity()) return f;
+    if (f == 0.0f) return std::numeric_limits<float>::denorm_min();
+    std::uint32_t bits = std::bit_cast<std::uint32_t>(f);
+    bits = f > 0.0f ? bits + 1 : bits - 1;
+    return std::bit_cast<float>(bits);
+}
+inline float nextFloatDown(float f) { return -nextFloatUp(-f); }
+inline float roundUpToFloat(double x) {
+    const float f = static_cast<float>(x);
+    return static_cast<double>(f) < x ? nextFloatUp(f) : f;
+}
+inline float roundDownToFloat(double x) {
+    const float f = static_cast<float>(x);
+    return static_cast<double>(f) > x ? nextFloatDown(f) : f;
+}
+
+// The float slab test is made conservative for a double ray (docs/accel.md):
+// the origin is rounded toward the far side of each slab plane it is compared
+// with (oNear, oFar), the t-range is rounded outward, and the far distance is
+// scaled by kFarScale, which exceeds the worst relative error of the three
+// float roundings in (plane - origin) * invDir on both ends. NaN (0 * inf,
+// for a direction component of exactly 0 and an origin exactly on a plane)
+// drops that one constraint, never the box.
+inline constexpr float kFarScale = 1.0f + 0x1p-20f;
+
+struct RayPrep {
+    Float4 oNear[3];
+    Float4 oFar[3];
+    Float4 inv[3];
+    int nearSide[3];  // 0: the low plane is entered first (direction >= 0)
+    Float4 tMin;
+    Float4 tMax;
+
+    RayPrep(const Ray& ray, double tMinD, double tMaxD) {
+        for (int i = 0; i < 3; ++i) {
+            const double d = ray.dir[i];
+            const double o = ray.origin[i];
+            float invD, oN, oF;
+            int side;
+            if (d == 0.0) {
+                // Parallel to the slab: inside iff oFar <= hi and lo <= oNear.
+                side = std::signbit(d) ? 1 : 0;
+                invD = side ? -std::numeric_limits<float>::infinity()
+                            : std::numeric_limits<float>::infinity();
+                oN = side ? roundDownToFloat(o) : roundUpToFloat(o);
+                oF = side ? roundUpToFloat(o) : roundDownToFloat(o);
+            } else if (std::abs(d) < 1e-30) {
+                // 1/d overflows a float: drop this axis's constraint
+                // (conservative; a unit direction has another, larger
+                // component that still culls).
+                side = 0;
+                invD = std::numeric_limits<float>::infinity();
+                oN = std::numeric_limits<float>::infinity();
+                oF = -std::numeric_limits<float>::infinity();
+            } else {
+                side = d < 0.0 ? 1 : 0;
+                invD = static_cast<float>(1.0 / d);
+                oN = side ? roundDownToFloat(o) : roundUpToFloat(o);
+                oF = side ? roundUpToFloat(o) : roundDownToFloat(o);
+            }
+            nearSide[i] = side;
+            oNear[i] = Float4{oN, oN, oN, oN};
+            oFar[i] = Float4{oF, oF, oF, oF};
+            inv[i] = Float4{invD, invD, invD, invD};
+        }
+        setRange(tMinD, tMaxD);
+    }
+
+    void setRange(double tMinD, double tMaxD) {
+        const float lo = roundDownToFloat(tMinD > 0.0 ? tMinD : 0.0);
+        const float hi = roundUpToFloat(tMaxD);
+        tMin = Float4{lo, lo, lo, lo};
+        tMax = Float4{hi, hi, hi, hi};
+    }
+    float farLimit() const { return tMax[0] * kFarScale; }
+};
+
+inline unsigned moveMask(Int4 m) {
+#if defined(__SSE__)
+    using M128 = float __attribute__((vector_size(16)));
+    return static_cast<unsigned>(__builtin_ia32_movmskps(reinterpret_cast<M128>(m)));
+#else
+    return (m[0] & 1u) | (m[1] & 2u) | (m[2] & 4u) | (m[3] & 8u);
+#endif
+}
+
+// Bit k set when child k's box meets the ray within its t-range; tNear gets
+// the entry distances.
+inline unsigned intersectChildren(const Node& node, const RayPrep& r, Float4& tNear) {
+    const Float4 n0 = (node.box[r.nearSide[0]][0] - r.oNear[0]) * r.inv[0];
+    const Float4 n1 = (node.box[r.nearSide[1]][1] - r.oNear[1]) * r.inv[1];
+    const Float4 n2 = (node.box[r.nearSide[2]][2] - r.oNear[2]) * r.inv[2];
+    const Float4 f0 = (node.box[1 - r.nearSide[0]][0] - r.oFar[0]) * r.inv[0];
+    const Float4 f1 = (node.box[1 - r.nearSide[1]][1] - r.oFar[1]) * r.inv[1];
+    const Float4 f2 = (node.box[1 - r.nearSide[2]][2] - r.oFar[2]) * r.inv[2];
+    // `x > acc ? x : acc` keeps acc when x is NaN (and compiles to maxps).
+    Float4 lo = r.tMin;
+    lo = n0 > lo ? n0 : lo;
+    lo = n1 > lo ? n1 : lo;
+    lo = n2 > lo ? n2 : lo;
+    Float4 hi = r.tMax;
+    hi = f0 < hi ? f0 : hi;
+    hi = f1 < hi ? f1 : hi;
+    hi = f2 < hi ? f2 : hi;
+    tNear = lo;
+    return moveMask(lo <= hi * kFarScale);
+}
+
+struct StackEntry {
+    std::uint32_t ref;
+    float tNear;
+};
+
+// Depth is bounded by the build (median splits past a depth limit), so a
+// fixed stack suffices: at most three entries pushed per level.
+inline constexpr int kMaxDepth = 96;
+inline constexpr int kStackSize = 3 * kMaxDepth + 4;
+
+template <class F, class... Args>
+using ResultOf = std::invoke_result_t<F&, Args...>;
+
+}  // namespace bvh_detail
+
+class Bvh {
+public:
+    Bvh() = default;
+
+    // Builds over the items' bounds (item i has bounds itemBounds[i]). Items
+    // with empty bounds are left out: no ray or cone can touch them. Throws
+    // std::invalid_argument on NaN or infinite bounds or bad options, and
+    // std::length_error past 2^27 - 1 items.
+    static Bvh build(std::span<const Bounds3> itemBounds, const BvhBuildOptions& options = {});
+
+    bool empty() const { return nodes_.empty(); }
+    std::size_t itemCount() const { return order_.size(); }
+    std::size_t nodeCount() const { return nodes_.size(); }
+    int depth() const { return depth_; }
+    const Bounds3& bounds() const { return bounds_; }
+    // The items in leaf order (a caller may lay out its data this way).
+    std::span<const std::uint32_t> itemOrder() const { return order_; }
+
+    // The nearest hit in [tMin, tMax] (0 <= tMin). The callable
+    //   f(std::uint32_t item, const Ray& ray, double tMin, double tMax) -> std::optional<H>
+    // returns the item's nearest hit in the range, where H has a member `t`;
+    // the range it is given shrinks as nearer hits are found.
+    template <class Intersect>
+    auto nearest(const Ray& ray, double tMin, double tMax, Intersect&& f) const
+        -> bvh_detail::ResultOf<Intersect, std::uint32_t, const Ray&, double, double>;
+
+    // Whether some item is hit in [tMin, tMax] (0 <= tMin), stopping at the
+    // first: f(std::uint32_t item, const Ray& ray, double tMin, double tMax) -> bool.
+    template <class Test>
+    bool any(const Ray& ray, double tMin, double tMax, Test&& f) const;
+
+    // Visits every item in a leaf whose box the cone may touch (a superset of
+    // the items whose bounds it touches: ConeBoxTest), boxes nearer the apex
+    // first. f(std::uint32_t item) may return
+    //   void:   visit all;
+    //   bool:   false stops the traversal;
+    //   double: a new far limit for the cone (e.g. the far depth of an item
+    //           that blocks the whole cone): boxes wholly beyond it are skipped.
+    template <class Visit>
+    void cone(const Cone& cone, Visit&& f) const;
+
+private:
+    friend struct BvhBuilder;
+    template <class Leaf>
+    void traverseRay(const Ray& ray, double tMin, double tMax, bool ordered, Leaf&& leaf) const;
+
+    std::vector<bvh_detail::Node> nodes_;  // nodes_[0] is the root
+    std::vector<std::uint32_t> order_;     // item index per leaf slot
+    Bounds3 bounds_;
+    int depth_ = 0;
+};
+
+// The ray traversal shared by nearest and any. `leaf(first, count, prep)`
+// tests a leaf's items and returns false to stop; it may shrink prep's range.
+template <class Leaf>
+void Bvh::traverseRay(const Ray& ray, double tMin, double tMax, bool ordered, Leaf&& leaf) const {
+    using namespace bvh_detail;
+    if (nodes_.empty()) return;
+    RayPrep prep(ray, tMin, tMax);
+    StackEntry stack[kStackSize];
+    int top = 0;
+    std::uint32_t ref = 0;
+    for (;;) {
+        while (!isLeaf(ref)) {
+            const Node& node = nodes_[ref];
+            Float4 tNear;
+            unsigned mask = intersectChildren(node, prep, tNear);
+            if (mask == 0) goto pop;
+            {
+                // Near-first: the nearest hit child next, the others pushed
+                // farthest first so they pop in order of entry distance.
+                const int first = std::countr_zero(mask);
+                mask &= mask - 1;
+                if (mask == 0) {
+                    ref = node.child[first];
+                    continue;
+                }
+                StackEntry hits[4];
+                int count = 0;
+                hits[count++] = {node.child[first], tNear[first]};
+                while (mask != 0) {
+                    const int k = std::countr_zero(mask);
+                    mask &= mask - 1;
+                    StackEntry e{node.child[k], tNear[k]};
+                    int j = count++;
+                    if (ordered) {
+                        // insertion sort, farthest first
+                        while (j > 0 && hits[j - 1].tNear < e.tNear) {
+                            hits[j] = hits[j - 1];
+                            --j;
+                        }
+                    }
+                    hits[j] = e;
+                }
+                for (int j = 0; j + 1 < count; ++j) stack[top++] = hits[j];
+                ref = hits[count - 1].ref;
+            }
+        }
+        if (!leaf(leafFirst(ref), leafCount(ref), prep)) return;
+    pop:
+        for (;;) {
+            if (top == 0) return;
+            const StackEntry& e = stack[--top];
+            if (e.tNear <= prep.farLimit()) {
+                ref = e.ref;
+                break;
+            }
+        }
+    }
+}
+
+template <class Intersect>
+auto Bvh::nearest(const Ray& ray, double tMin, double tMax, Intersect&& f) const
+    -> bvh_detail::ResultOf<Intersect, std::uint32_t, const Ray&, double, double> {
+    using Result = bvh_detail::ResultOf<Intersect, std::uint32_t, const Ray&, double, double>;
+    Result best;
+    double far = tMax;
+    traverseRay(ray, tMin, tMax, true,
+                [&](std::uint32_t first, std::uint32_t count, bvh_detail::RayPrep& prep) {
+                    for (std::uint32_t k = 0; k < count; ++k) {
+                        Result hit = f(order_[first + k], ray, tMin, far);
+                        if (hit && hit->t >= tMin && hit->t <= far) {
+                            far = hit->t;
+                            best = std::move(hit);
+                            prep.setRange(tMin, far);
+                        }
+                    }
+                    return true;
+                });
+    return best;
+}
+
+template <class Test>
+bool Bvh::any(const Ray& ray, double tMin, double tMax, Test&& f) const {
+    bool found = false;
+    traverseRay(ray, tMin, tMax, false,
+                [&](std::uint32_t first, std::uint32_t count, bvh_detail::RayPrep&) {
+                    for (std::uint32_t k = 0; k < count; ++k) {
+                        if (f(order_[first + k], ray, tMin, tMax)) {
+                            found = true;
+                            return false;
+                        }
+                    }
+                    return true;
+                });
+    return found;
+}
+
+template <class Visit>
+void Bvh::cone(const Cone& cone, Visit&& f) const {
+    using namespace bvh_detail;
+    using Result = ResultOf<Visit, std::uint32_t>;
+    if (nodes_.empty()) return;
+    ConeBoxTest test(cone);
+    double far = test.cone().tMax;
+    struct Entry {
+        std::uint32_t ref;
+        double distance;
+    };
+    Entry stack[kStackSize];
+    int top = 0;
+    stack[top++] = {0u, 0.0};
+    while (top > 0) {
+        const Entry e = stack[--top];
+        if (e.distance > far) continue;
+        if (isLeaf(e.ref)) {
+            const std::uint32_t first = leafFirst(e.ref);
+            const std::uint32_t count = leafCount(e.ref);
+            for (std::uint32_t k = 0; k < count; ++k) {
+                const std::uint32_t item = order_[first + k];
+                if constexpr (std::is_void_v<Result>) {
+                    f(item);
+                } else if constexpr (std::is_same_v<Result, bool>) {
+                    if (!f(item)) return;
+                } else {
+                    static_assert(std::is_floating_point_v<Result>,
+                                  "a cone visitor returns void, bool or a new far limit");
+                    const double limit = static_cast<double>(f(item));
+                    if (limit < far) {
+                        far = limit;
+                        test.setTMax(far);
+                    }
+                }
+            }
+            continue;
+        }
+        const Node& node = nodes_[e.ref];
+        Entry hits[4];
+        int count = 0;
+        for (int k = 0; k < 4; ++k) {
+            Bounds3 box;
+            for (int axis = 0; axis < 3; ++axis) {
+                box.lo[axis] = node.box[0][axis][k];
+                box.hi[axis] = node.box[1][axis][k];
+            }
+            const double distance = test.entryDistance(box);
+            if (distance == kInfinity || distance > far) continue;
+            Entry h{node.child[k], distance};
+            int j = count++;
+            while (j > 0 && hits[j - 1].distance < h.distance) {
+                hits[j] = hits[j - 1];
+                --j;
+            }
+            hits[j] = h;
+        }
+        for (int j = 0; j < count; ++j) stack[top++] = hits[j];
+    }
+}
+
+}  // namespace asos

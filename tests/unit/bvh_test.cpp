@@ -1,0 +1,381 @@
+#include <catch2/catch.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <optional>
+#include <random>
+#include <set>
+#include <vector>
+
+#include "asos/accel/bvh.hpp"
+
+using namespace asos;
+
+namespace {
+
+struct Hit {
+    double t;
+    std::uint32_t item;
+};
+
+struct Sphere {
+    Vec3 centre;
+    double radius;
+    Bounds3 bounds() const { return {centre - Vec3(radius), centre + Vec3(radius)}; }
+};
+
+// Test-local exact intersectors (double precision): the nearest root in range.
+std::optional<double> hitSphere(const Sphere& s, const Ray& ray, double tMin, double tMax) {
+    const Vec3 oc = ray.origin - s.centre;
+    const double b = glm::dot(oc, ray.dir);
+    const double c = glm::dot(oc, oc) - s.radius * s.radius;
+    const double disc = b * b - c;
+    if (disc < 0.0) return std::nullopt;
+    const double root = std::sqrt(disc);
+    // Stable roots of t^2 + 2bt + c = 0.
+    const double q = b > 0.0 ? -b - root : -b + root;
+    double t0 = q, t1 = q != 0.0 ? c / q : 0.0;
+    if (t0 > t1) std::swap(t0, t1);
+    if (t0 >= tMin && t0 <= tMax) return t0;
+    if (t1 >= tMin && t1 <= tMax) return t1;
+    return std::nullopt;
+}
+
+std::optional<double> hitBox(const Bounds3& b, const Ray& ray, double tMin, double tMax) {
+    double lo = tMin, hi = tMax;
+    for (int i = 0; i < 3; ++i) {
+        if (ray.dir[i] == 0.0) {
+            if (ray.origin[i] < b.lo[i] || ray.origin[i] > b.hi[i]) return std::nullopt;
+            continue;
+        }
+        double t0 = (b.lo[i] - ray.origin[i]) / ray.dir[i];
+        double t1 = (b.hi[i] - ray.origin[i]) / ray.dir[i];
+        if (t0 > t1) std::swap(t0, t1);
+        lo = std::max(lo, t0);
+        hi = std::min(hi, t1);
+    }
+    if (lo > hi) return std::nullopt;
+    return lo;
+}
+
+Vec3 randomUnit(std::mt19937_64& rng) {
+    std::normal_distribution<double> n;
+    for (;;) {
+        const Vec3 d(n(rng), n(rng), n(rng));
+        const double l = glm::length(d);
+        if (l > 1e-6) return d / l;
+    }
+}
+
+// Directions that include exact zeros and exact axis directions, which
+// stress the float slab test's handling of infinities.
+Vec3 randomDirection(std::mt19937_64& rng) {
+    Vec3 d = randomUnit(rng);
+    switch (rng() % 6) {
+        case 0: d[rng() % 3] = 0.0; break;
+        case 1: {
+            d = Vec3(0.0);
+            d[rng() % 3] = rng() % 2 ? 1.0 : -1.0;
+            break;
+        }
+        default: break;
+    }
+    return glm::normalize(d);
+}
+
+std::vector<Sphere> randomSpheres(std::mt19937_64& rng, int n) {
+    std::uniform_real_distribution<double> u01(0.0, 1.0);
+    std::vector<Sphere> s(n);
+    for (auto& x : s) {
+        x.centre = Vec3(u01(rng), u01(rng), u01(rng)) * 10.0 - 5.0;
+        x.radius = std::pow(10.0, -2.0 + 1.5 * u01(rng));
+    }
+    return s;
+}
+
+// Axis-aligned boxes, a fifth of them flat (an axis-aligned polygon's box),
+// with corners on a coarse grid so that rays often graze faces and edges.
+std::vector<Bounds3> randomBoxes(std::mt19937_64& rng, int n) {
+    std::uniform_int_distribution<int> grid(-40, 40);
+    std::vector<Bounds3> boxes(n);
+    for (auto& b : boxes) {
+        Vec3 a(grid(rng), grid(rng), grid(rng)), c(grid(rng), grid(rng), grid(rng));
+        a *= 0.125;
+        c = a + glm::abs(c) * (1.0 / 64.0);
+        b = {glm::min(a, c), glm::max(a, c)};
+        if (rng() % 5 == 0) {
+            const int axis = static_cast<int>(rng() % 3);
+            b.hi[axis] = b.lo[axis];
+        }
+    }
+    return boxes;
+}
+
+Ray randomRay(std::mt19937_64& rng, bool onGrid) {
+    std::uniform_real_distribution<double> u01(0.0, 1.0);
+    Ray r;
+    if (onGrid) {
+        std::uniform_int_distribution<int> grid(-48, 48);
+        r.origin = Vec3(grid(rng), grid(rng), grid(rng)) * 0.125;
+    } else {
+        r.origin = Vec3(u01(rng), u01(rng), u01(rng)) * 14.0 - 7.0;
+    }
+    r.dir = randomDirection(rng);
+    return r;
+}
+
+template <class HitFn>
+std::optional<Hit> bruteNearest(std::size_t n, const Ray& ray, double tMin, double tMax, HitFn&& hit) {
+    std::optional<Hit> best;
+    for (std::uint32_t i = 0; i < n; ++i) {
+        if (auto t = hit(i, ray, tMin, best ? best->t : tMax)) {
+            if (!best || *t < best->t) best = Hit{*t, i};
+        }
+    }
+    return best;
+}
+
+template <class HitFn>
+void checkAgainstBruteForce(const Bvh& bvh, std::size_t n, std::mt19937_64& rng, bool onGrid, HitFn&& hit) {
+    std::uniform_real_distribution<double> u01(0.0, 1.0);
+    for (int trial = 0; trial < 4000; ++trial) {
+        const Ray ray = randomRay(rng, onGrid);
+        const double tMin = rng() % 2 ? 0.0 : 0.5 * u01(rng);
+        const double tMax = rng() % 2 ? kInfinity : tMin + 10.0 * u01(rng);
+        const auto expected = bruteNearest(n, ray, tMin, tMax, hit);
+        const auto got = bvh.nearest(ray, tMin, tMax,
+                                     [&](std::uint32_t i, const Ray& r, double lo, double hi) -> std::optional<Hit> {
+                                         if (auto t = hit(i, r, lo, hi)) return Hit{*t, i};
+                                         return std::nullopt;
+                                     });
+        INFO("trial " << trial << " origin " << ray.origin.x << "," << ray.origin.y << "," << ray.origin.z
+                      << " dir " << ray.dir.x << "," << ray.dir.y << "," << ray.dir.z << " t [" << tMin << ","
+                      << tMax << "]");
+        REQUIRE(expected.has_value() == got.has_value());
+        if (expected) {
+            // Equal distances; where items tie (shared faces), either item.
+            REQUIRE(got->t == expected->t);
+            const auto again = hit(got->item, ray, tMin, tMax);
+            REQUIRE(again);
+            REQUIRE(*again == got->t);
+        }
+        const bool anyHit = bvh.any(ray, tMin, tMax, [&](std::uint32_t i, const Ray& r, double lo, double hi) {
+            return hit(i, r, lo, hi).has_value();
+        });
+        REQUIRE(anyHit == expected.has_value());
+    }
+}
+
+}  // namespace
+
+TEST_CASE("BVH nearest and any hit equal brute force on random spheres", "[accel][bvh]") {
+    std::mt19937_64 rng(1);
+    for (int n : {1, 7, 300, 3000}) {
+        const auto spheres = randomSpheres(rng, n);
+        std::vector<Bounds3> bounds;
+        for (const auto& s : spheres) bounds.push_back(s.bounds());
+        const Bvh bvh = Bvh::build(bounds);
+        CHECK(bvh.itemCount() == spheres.size());
+        checkAgainstBruteForce(bvh, spheres.size(), rng, false,
+                               [&](std::uint32_t i, const Ray& r, double lo, double hi) {
+                                   return hitSphere(spheres[i], r, lo, hi);
+                               });
+    }
+}
+
+TEST_CASE("BVH nearest and any hit equal brute force on grazed and flat boxes", "[accel][bvh]") {
+    std::mt19937_64 rng(2);
+    for (int n : {5, 2000}) {
+        const auto boxes = randomBoxes(rng, n);
+        for (int leaf : {1, 4, 15}) {
+            BvhBuildOptions options;
+            options.maxLeafSize = leaf;
+            const Bvh bvh = Bvh::build(boxes, options);
+            checkAgainstBruteForce(bvh, boxes.size(), rng, true,
+                                   [&](std::uint32_t i, const Ray& r, double lo, double hi) {
+                                       return hitBox(boxes[i], r, lo, hi);
+                                   });
+        }
+    }
+}
+
+TEST_CASE("BVH keeps hits on the edges of flat boxes (float rounding of the slab test)", "[accel][bvh]") {
+    // Flat boxes at arbitrary (non-float) coordinates, rays aimed at points on
+    // their edges and corners from arbitrary origins: the double-precision
+    // hits must survive the float node boxes and float slab arithmetic.
+    std::mt19937_64 rng(9);
+    std::uniform_real_distribution<double> u01(0.0, 1.0);
+    std::vector<Bounds3> boxes(400);
+    for (auto& b : boxes) {
+        const Vec3 c = (Vec3(u01(rng), u01(rng), u01(rng)) - 0.5) * 20.0;
+        Vec3 h = Vec3(u01(rng), u01(rng), u01(rng)) * 0.3;
+        h[rng() % 3] = 0.0;
+        b = {c - h, c + h};
+    }
+    const Bvh bvh = Bvh::build(boxes);
+    int hits = 0;
+    for (int trial = 0; trial < 20000; ++trial) {
+        const Bounds3& target = boxes[rng() % boxes.size()];
+        // A point on the target's boundary: each coordinate at lo, hi or between.
+        Vec3 p;
+        for (int i = 0; i < 3; ++i) {
+            const int pick = static_cast<int>(rng() % 3);
+            p[i] = pick == 0 ? target.lo[i] : pick == 1 ? target.hi[i] : target.lo[i] + u01(rng) * (target.hi[i] - target.lo[i]);
+        }
+        Ray ray;
+        ray.origin = p + randomUnit(rng) * (0.5 + 30.0 * u01(rng));
+        ray.dir = glm::normalize(p - ray.origin);
+        const auto hit = [&](std::uint32_t i, const Ray& r, double lo, double hi) { return hitBox(boxes[i], r, lo, hi); };
+        const auto expected = bruteNearest(boxes.size(), ray, 0.0, kInfinity, hit);
+        const auto got = bvh.nearest(ray, 0.0, kInfinity, [&](std::uint32_t i, const Ray& r, double lo, double hi) -> std::optional<Hit> {
+            if (auto t = hit(i, r, lo, hi)) return Hit{*t, i};
+            return std::nullopt;
+        });
+        REQUIRE(expected.has_value() == got.has_value());
+        if (expected) {
+            ++hits;
+            REQUIRE(got->t == expected->t);
+        }
+    }
+    CHECK(hits > 10000);
+}
+
+TEST_CASE("BVH handles coincident items, far coordinates and degenerate input", "[accel][bvh]") {
+    std::mt19937_64 rng(3);
+    // 1000 identical boxes: no SAH split exists; median splits must still
+    // give a valid tree.
+    std::vector<Bounds3> same(1000, Bounds3{Vec3(1, 1, 1), Vec3(2, 2, 2)});
+    const Bvh bvh = Bvh::build(same);
+    CHECK(bvh.itemCount() == 1000);
+    CHECK(bvh.depth() < bvh_detail::kMaxDepth);
+    int count = 0;
+    bvh.cone(Cone{Vec3(0.0), glm::normalize(Vec3(1, 1, 1)), 0.01, 0.0, kInfinity},
+             [&](std::uint32_t) { ++count; });
+    CHECK(count == 1000);
+    const Ray ray{Vec3(1.5, 1.5, 0), Vec3(0, 0, 1)};
+    CHECK(bvh.any(ray, 0.0, kInfinity, [](std::uint32_t, const Ray&, double, double) { return true; }));
+
+    // Far away (1e5) small items: float boxes rounded outward keep the hits.
+    std::vector<Sphere> far;
+    for (int i = 0; i < 500; ++i) far.push_back({Vec3(1e5) + randomUnit(rng) * 3.0, 0.01 + 0.001 * i});
+    std::vector<Bounds3> farBounds;
+    for (const auto& s : far) farBounds.push_back(s.bounds());
+    const Bvh farBvh = Bvh::build(farBounds);
+    for (int trial = 0; trial < 2000; ++trial) {
+        const Sphere& target = far[rng() % far.size()];
+        Ray r;
+        r.origin = Vec3(0.0);
+        r.dir = glm::normalize(target.centre + randomUnit(rng) * target.radius * 0.999 - r.origin);
+        const auto expected = bruteNearest(far.size(), r, 0.0, kInfinity,
+                                           [&](std::uint32_t i, const Ray& q, double lo, double hi) {
+                                               return hitSphere(far[i], q, lo, hi);
+                                           });
+        REQUIRE(expected);
+        const auto got = farBvh.nearest(r, 0.0, kInfinity,
+                                        [&](std::uint32_t i, const Ray& q, double lo, double hi) -> std::optional<Hit> {
+                                            if (auto t = hitSphere(far[i], q, lo, hi)) return Hit{*t, i};
+                                            return std::nullopt;
+                                        });
+        REQUIRE(got);
+        REQUIRE(got->t == expected->t);
+    }
+
+    // Empty input, empty items, bad bounds.
+    CHECK(Bvh::build(std::vector<Bounds3>{}).empty());
+    const Bvh skipped = Bvh::build(std::vector<Bounds3>{Bounds3{}, Bounds3{Vec3(0.0), Vec3(1.0)}});
+    CHECK(skipped.itemCount() == 1);
+    CHECK(skipped.itemOrder()[0] == 1);
+    CHECK_FALSE(skipped.nearest(Ray{Vec3(5.0), Vec3(0, 0, 1)}, 0.0, kInfinity,
+                                [](std::uint32_t, const Ray&, double, double) { return std::optional<Hit>(); }));
+    CHECK_THROWS_AS(Bvh::build(std::vector<Bounds3>{Bounds3{Vec3(0.0), Vec3(kInfinity)}}), std::invalid_argument);
+    CHECK_THROWS_AS(Bvh::build(std::vector<Bounds3>{Bounds3{Vec3(std::nan("")), Vec3(1.0)}}),
+                    std::invalid_argument);
+    BvhBuildOptions bad;
+    bad.maxLeafSize = 16;
+    CHECK_THROWS_AS(Bvh::build(same, bad), std::invalid_argument);
+}
+
+namespace {
+
+// Dense evidence that a cone touches a box (as in cone_box_test.cpp): box
+// grid points inside the cone, or points of the cone's rays inside the box.
+bool coneTouchesBox(const ConeBoxTest& test, const Bounds3& b) {
+    const Cone& c = test.cone();
+    constexpr int n = 5;
+    for (int i = 0; i < n; ++i)
+        for (int j = 0; j < n; ++j)
+            for (int k = 0; k < n; ++k) {
+                const Vec3 f(i / double(n - 1), j / double(n - 1), k / double(n - 1));
+                if (test.contains(b.lo + f * (b.hi - b.lo))) return true;
+            }
+    const Vec3 a = std::abs(c.axis.x) < 0.6 ? Vec3(1, 0, 0) : Vec3(0, 1, 0);
+    const Vec3 u = glm::normalize(glm::cross(c.axis, a)), v = glm::cross(c.axis, u);
+    const double far = std::isfinite(c.tMax) ? c.tMax : c.tMin + 30.0;
+    for (int ring = 0; ring <= 3; ++ring) {
+        const int azimuths = ring == 0 ? 1 : 16;
+        for (int az = 0; az < azimuths; ++az) {
+            const double psi = c.halfAngle * ring / 3.0, phi = 2 * kPi * az / azimuths;
+            const Vec3 d = std::cos(psi) * c.axis + std::sin(psi) * (std::cos(phi) * u + std::sin(phi) * v);
+            for (int s = 0; s <= 60; ++s)
+                if (b.contains(c.apex + (c.tMin + (far - c.tMin) * s / 60.0) * d)) return true;
+        }
+    }
+    return false;
+}
+
+}  // namespace
+
+TEST_CASE("BVH cone traversal visits every item whose box the cone touches", "[accel][bvh][cone]") {
+    std::mt19937_64 rng(4);
+    std::uniform_real_distribution<double> u01(0.0, 1.0);
+    const auto spheres = randomSpheres(rng, 1500);
+    std::vector<Bounds3> bounds;
+    for (const auto& s : spheres) bounds.push_back(s.bounds());
+    const Bvh bvh = Bvh::build(bounds);
+    std::size_t visitedTotal = 0, touchedTotal = 0;
+    for (int trial = 0; trial < 100; ++trial) {
+        Cone c;
+        c.apex = Vec3(u01(rng), u01(rng), u01(rng)) * 12.0 - 6.0;
+        c.axis = randomDirection(rng);
+        const double angles[] = {0.0, 1e-3, 0.02, 0.2, 1.2, 2.2};
+        c.halfAngle = angles[rng() % 6];
+        c.tMin = rng() % 2 ? 0.0 : u01(rng);
+        c.tMax = rng() % 2 ? kInfinity : c.tMin + 8.0 * u01(rng);
+        const ConeBoxTest test(c);
+        std::set<std::uint32_t> visited;
+        bvh.cone(c, [&](std::uint32_t i) { CHECK(visited.insert(i).second); });
+        for (std::uint32_t i = 0; i < spheres.size(); ++i) {
+            if (coneTouchesBox(test, bounds[i])) {
+                ++touchedTotal;
+                if (!visited.count(i)) FAIL("cone trial " << trial << " missed item " << i);
+            }
+        }
+        visitedTotal += visited.size();
+    }
+    // It prunes: narrow cones visit a small part of the scene.
+    CHECK(touchedTotal > 0);
+    CHECK(visitedTotal < 100 * spheres.size() / 2);
+}
+
+TEST_CASE("BVH cone traversal stops early and honours a shrinking far limit", "[accel][bvh][cone]") {
+    // A row of unit boxes along +z; a cone down the row.
+    std::vector<Bounds3> row;
+    for (int i = 0; i < 64; ++i) row.push_back({Vec3(-0.5, -0.5, 2.0 * i), Vec3(0.5, 0.5, 2.0 * i + 1.0)});
+    const Bvh bvh = Bvh::build(row);
+    const Cone c{Vec3(0, 0, -1), Vec3(0, 0, 1), 0.01, 0.0, kInfinity};
+    std::set<std::uint32_t> all;
+    bvh.cone(c, [&](std::uint32_t i) { all.insert(i); });
+    CHECK(all.size() == 64);
+    int visits = 0;
+    bvh.cone(c, [&](std::uint32_t) { return ++visits < 3; });
+    CHECK(visits == 3);
+    // Item 10 blocks everything past z = 21: items whose boxes start beyond
+    // it are skipped; all nearer ones are visited.
+    std::set<std::uint32_t> seen;
+    bvh.cone(c, [&](std::uint32_t i) {
+        seen.insert(i);
+        return i == 10 ? 22.0 : kInfinity;
+    });
+    for (std::uint32_t i = 0; i <= 10; ++i) CHECK(seen.count(i) == 1);
+    for (std::uint32_t i = 12; i < 64; ++i) CHECK(seen.count(i) == 0);
+}
