@@ -1,0 +1,52 @@
+#pragma once
+// A scene ready to render: the description's objects as world-space
+// primitives and a BVH over the bounded ones (planes are kept aside and
+// tested always). Built once; every query is const and thread-safe.
+#include <cstdint>
+#include <memory>
+#include <optional>
+#include <vector>
+
+#include "asos/accel/bvh.hpp"
+#include "asos/diag/diagnostics.hpp"
+#include "asos/scene/description.hpp"
+#include "asos/shapes/primitive.hpp"
+
+namespace asos {
+
+class Scene {
+public:
+    // Reports every object that cannot be built (a meaningless shape) to
+    // `diagnostics` with its source location, and returns null then.
+    static std::unique_ptr<Scene> build(SceneDescription description, Diagnostics& diagnostics);
+
+    const SceneDescription& description() const { return description_; }
+    std::uint32_t objectCount() const { return static_cast<std::uint32_t>(primitives_.size()); }
+    const Primitive& primitive(std::uint32_t object) const { return primitives_[object]; }
+    const Object& object(std::uint32_t object) const { return description_.objects[object]; }
+    const Bvh& bvh() const { return bvh_; }
+
+    // The nearest hit in [tMin, tMax], with objectIndex set.
+    std::optional<SurfaceHit> intersect(const Ray& ray, double tMin, double tMax) const;
+    // Whether an object that casts shadows (not `no_shadow`) is hit in [tMin, tMax].
+    bool occluded(const Ray& ray, double tMin, double tMax) const;
+    // Calls visit(object) for every object whose bounds the cone may touch,
+    // unbounded ones included: a superset of the objects the cone meets.
+    template <class Visit>
+    void coneCandidates(const Cone& cone, Visit&& visit) const {
+        for (std::uint32_t i : unbounded_) visit(i);
+        bvh_.cone(cone, [&](std::uint32_t item) { visit(bounded_[item]); });
+    }
+
+private:
+    Scene() = default;
+
+    SceneDescription description_;
+    std::vector<Primitive> primitives_;
+    std::vector<std::uint8_t> castsShadow_;
+    std::vector<std::uint32_t> bounded_;    // BVH item -> object
+    std::vector<std::uint32_t> unbounded_;  // objects outside the BVH
+    Bvh bvh_;
+};
+
+}  // namespace asos
