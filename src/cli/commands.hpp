@@ -15,4 +15,10 @@ struct CommandResult {
 // the `bench` subcommand returned by addBenchCommand.
 CLI::App* addBenchCommand(CLI::App& app);
 
+// `asos parse SCENE`: prints the canonical dump of the scene description.
+void addParseCommand(CLI::App& app, CommandResult& result);
+
+// `asos bench parse`: parse time and peak memory for 10^3 … 10^6 spheres.
+void addBenchParseCommand(CLI::App& bench, CommandResult& result);
+
 }  // namespace asos::cli

@@ -7,8 +7,10 @@ int main(int argc, char** argv) {
     CommandResult result;
 
     // Subcommands register here, one line each.
-    [[maybe_unused]] CLI::App* bench = addBenchCommand(app);
+    addParseCommand(app, result);
+    CLI::App* bench = addBenchCommand(app);
     // Benchmarks register under `bench`, one line each.
+    addBenchParseCommand(*bench, result);
 
     try {
         app.parse(argc, argv);

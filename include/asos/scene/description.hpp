@@ -3,6 +3,7 @@
 // by every later stage (dump writer, scene build, renderer). No text, no
 // behaviour. Every record keeps the SourceLoc it came from. Field meanings and
 // defaults are POV-Ray 3.7's unless a comment says otherwise.
+#include <memory>
 #include <optional>
 #include <string>
 #include <variant>
@@ -75,8 +76,12 @@ struct ConeShape {
 };
 struct CylinderShape { Vec3 base{0.0}; Vec3 cap{0.0, 1.0, 0.0}; double radius = 1.0; bool open = false; };
 struct DiscShape { Vec3 center{0.0}; Vec3 normal{0.0, 1.0, 0.0}; double radius = 1.0; double holeRadius = 0.0; };
-// POV-Ray's vertex-list form: sub-polygons are closed by repeating their first vertex.
+// POV-Ray's vertex-list form, points as written (2-D points have z = 0): a
+// sub-polygon is closed by repeating its first vertex; the last one may be left
+// open. The interpreter has checked: at least 3 points, all in one plane.
 struct PolygonShape { std::vector<Vec3> points; };
+// POV-Ray normalises the normal and keeps the distance: the plane is
+// {p : dot(normalize(normal), p) = distance}, its inside on the -normal side.
 struct PlaneShape { Vec3 normal{0.0, 1.0, 0.0}; double distance = 0.0; };
 
 using Shape = std::variant<SphereShape, BoxShape, ConeShape, CylinderShape, DiscShape,
@@ -109,7 +114,10 @@ struct Texture {
 struct Object {
     Shape shape;
     Transform worldFromObject;
-    Texture texture;
+    // Shared, never null: objects given the same declared texture (or none, the
+    // default) point to one Texture, as in POV-Ray. This keeps a million
+    // spheres under 1 GiB (a Texture with its pattern transform is 432 bytes).
+    std::shared_ptr<const Texture> texture;
     bool noShadow = false;
     AsosOptions asos;
     SourceLoc loc;

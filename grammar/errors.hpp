@@ -1,0 +1,146 @@
+#pragma once
+// The one table of error messages. must_if raises with `error_message<Rule>`
+// wherever Rule fails and refuses, at compile time, a rule under must<> that
+// has none. The parser appends what it found instead ("…, found 'foo'").
+//
+// Rules that cannot fail (opt, star, success and sequences of those) get an
+// empty message that is never shown: must<> instantiates raise() for them too.
+//
+// The second table, `rejection_message<Rule>`, holds what the parser reports
+// when Rule MATCHES: the POV-Ray constructs asos does not support, named at
+// their keyword. "{}" stands for the word that was met.
+#include "grammar/scene.hpp"
+
+namespace asos::grammar {
+
+namespace detail {
+template <typename RuleT>
+inline constexpr bool never_fails_rt = false;
+template <typename Rule>
+inline constexpr bool never_fails = never_fails_rt<typename Rule::rule_t>;
+template <typename Rule>
+inline constexpr bool never_fails_rt<internal::opt<Rule>> = true;
+template <typename Rule>
+inline constexpr bool never_fails_rt<internal::star<Rule>> = true;
+template <>
+inline constexpr bool never_fails_rt<internal::success> = true;
+template <>
+inline constexpr bool never_fails_rt<blank_run> = true;
+template <typename... Rules>
+inline constexpr bool never_fails_rt<internal::seq<Rules...>> = (never_fails<Rules> && ...);
+}  // namespace detail
+
+template <typename Rule>
+inline constexpr const char* error_message = detail::never_fails<Rule> ? "" : nullptr;
+
+// clang-format off
+// lexical
+template <> inline constexpr auto error_message<block_comment_body> = "unterminated comment: the file ends inside '/* … */'";
+template <> inline constexpr auto error_message<string_body> = "unterminated string: expected '\"' before the end of the line";
+// expressions
+template <> inline constexpr auto error_message<logical_expression> = "expected an expression";
+template <> inline constexpr auto error_message<rparen> = "expected ')'";
+template <> inline constexpr auto error_message<vector_components> = "expected a vector component";
+template <> inline constexpr auto error_message<vector_component> = "expected a vector component";
+template <> inline constexpr auto error_message<vector_close> = "expected ',' or '>' to close the vector";
+template <> inline constexpr auto error_message<call_open> = "expected '(' after the function name";
+template <> inline constexpr auto error_message<call_arguments> = "expected a function argument";
+template <> inline constexpr auto error_message<call_argument> = "expected a function argument";
+template <> inline constexpr auto error_message<colour_operand> = "expected a value after the colour keyword";
+template <> inline constexpr auto error_message<colour_after_keyword> = "expected a colour after 'color'";
+template <> inline constexpr auto error_message<member_name> = "expected a member name: x, y, z, t, u, v, red, green, blue, filter, transmit or gray";
+template <> inline constexpr auto error_message<unary_operand> = "expected an operand";
+template <> inline constexpr auto error_message<factor_operand> = "expected an operand";
+template <> inline constexpr auto error_message<term_operand> = "expected an operand";
+template <> inline constexpr auto error_message<comparison_operand> = "expected an operand";
+template <> inline constexpr auto error_message<conjunction_operand> = "expected an operand";
+template <> inline constexpr auto error_message<disjunction_operand> = "expected an operand";
+template <> inline constexpr auto error_message<op_colon> = "expected ':' of the '?:' expression";
+// directives
+template <> inline constexpr auto error_message<condition> = "expected a condition in parentheses";
+template <> inline constexpr auto error_message<if_end> = "expected #elseif, #else or #end to close #if";
+template <> inline constexpr auto error_message<while_end> = "expected #end to close #while";
+template <> inline constexpr auto error_message<for_end> = "expected #end to close #for";
+template <> inline constexpr auto error_message<ifdef_condition> = "expected '(' and an identifier";
+template <> inline constexpr auto error_message<tested_name> = "expected an identifier";
+template <> inline constexpr auto error_message<for_open> = "expected '(' after #for";
+template <> inline constexpr auto error_message<for_variable> = "expected the name of the loop variable";
+template <> inline constexpr auto error_message<for_comma> = "expected ','";
+template <> inline constexpr auto error_message<for_value> = "expected an expression";
+template <> inline constexpr auto error_message<declared_name> = "expected an identifier to declare";
+template <> inline constexpr auto error_message<declare_equals> = "expected '='";
+template <> inline constexpr auto error_message<declared_value> = "expected a value to declare: an expression, an object, a light_source, a camera, a pigment, a finish or a texture";
+template <> inline constexpr auto error_message<declare_semicolon> = "expected ';' after the declared value";
+template <> inline constexpr auto error_message<undefined_name> = "expected an identifier";
+template <> inline constexpr auto error_message<included_file> = "expected the name of the file to include";
+template <> inline constexpr auto error_message<version_value> = "expected a version number";
+template <> inline constexpr auto error_message<message_value> = "expected a message";
+// modifiers
+template <> inline constexpr auto error_message<float_value> = "expected a float expression";
+template <> inline constexpr auto error_message<vector_value> = "expected a vector expression";
+template <> inline constexpr auto error_message<colour_value> = "expected a colour expression";
+template <> inline constexpr auto error_message<block_open> = "expected '{'";
+template <> inline constexpr auto error_message<matrix_values> = "expected '<' and the 12 numbers of a matrix";
+template <> inline constexpr auto error_message<matrix_components> = "expected a number of the matrix";
+template <> inline constexpr auto error_message<matrix_value> = "expected a number of the matrix";
+template <> inline constexpr auto error_message<matrix_close> = "expected ',' or '>' after the numbers of the matrix";
+template <> inline constexpr auto error_message<asos_end> = "expected eps, max, jitter or '}' in the asos block";
+template <> inline constexpr auto error_message<checker_second> = "expected the second colour of checker";
+template <> inline constexpr auto error_message<pigment_end> = "expected a colour, checker, a transform or '}' in the pigment";
+template <> inline constexpr auto error_message<reflection_value> = "expected a colour or a float after reflection";
+template <> inline constexpr auto error_message<finish_end> = "expected a finish item (ambient, diffuse, brilliance, phong, phong_size, specular, roughness, reflection) or '}'";
+template <> inline constexpr auto error_message<texture_end> = "expected pigment, finish, a transform or '}' in the texture";
+// objects
+template <> inline constexpr auto error_message<object_end> = "expected an object modifier or '}'";
+template <> inline constexpr auto error_message<sphere_center> = "expected the center of the sphere";
+template <> inline constexpr auto error_message<sphere_radius> = "expected the radius of the sphere";
+template <> inline constexpr auto error_message<box_corner> = "expected a corner of the box";
+template <> inline constexpr auto error_message<cone_base> = "expected the base point of the cone";
+template <> inline constexpr auto error_message<cone_base_radius> = "expected the base radius of the cone";
+template <> inline constexpr auto error_message<cone_cap> = "expected the cap point of the cone";
+template <> inline constexpr auto error_message<cone_cap_radius> = "expected the cap radius of the cone";
+template <> inline constexpr auto error_message<cylinder_base> = "expected the base point of the cylinder";
+template <> inline constexpr auto error_message<cylinder_cap> = "expected the cap point of the cylinder";
+template <> inline constexpr auto error_message<cylinder_radius> = "expected the radius of the cylinder";
+template <> inline constexpr auto error_message<disc_center> = "expected the center of the disc";
+template <> inline constexpr auto error_message<disc_normal> = "expected the normal of the disc";
+template <> inline constexpr auto error_message<disc_radius> = "expected the radius of the disc";
+template <> inline constexpr auto error_message<polygon_count> = "expected the number of points of the polygon";
+template <> inline constexpr auto error_message<polygon_points> = "expected the points of the polygon";
+template <> inline constexpr auto error_message<polygon_point> = "expected a point of the polygon";
+template <> inline constexpr auto error_message<plane_normal> = "expected the normal of the plane";
+template <> inline constexpr auto error_message<plane_distance> = "expected the distance of the plane";
+template <> inline constexpr auto error_message<union_end> = "expected an object, a light_source, an object modifier or '}' in the union";
+template <> inline constexpr auto error_message<object_base> = "expected an object or the name of a declared object";
+template <> inline constexpr auto error_message<light_position> = "expected the position of the light";
+template <> inline constexpr auto error_message<light_end> = "expected a light_source item or '}'";
+template <> inline constexpr auto error_message<camera_end> = "expected a camera item or '}'";
+template <> inline constexpr auto error_message<global_settings_end> = "expected assumed_gamma, max_trace_level, ambient_light, asos or '}' in global_settings";
+template <> inline constexpr auto error_message<background_colour> = "expected the colour of the background";
+template <> inline constexpr auto error_message<background_end> = "expected '}' after the colour of the background";
+// top
+template <> inline constexpr auto error_message<end_of_file> = "expected a scene item (camera, light_source, an object, global_settings, background) or a directive";
+template <> inline constexpr auto error_message<lone_expression> = "expected an expression";
+template <> inline constexpr auto error_message<end_of_expression> = "expected the end of the expression";
+
+template <typename Rule> inline constexpr const char* rejection_message = nullptr;
+template <> inline constexpr auto rejection_message<unsupported_item> = "'{}' is not supported by asos";
+template <> inline constexpr auto rejection_message<unsupported_in_expression> = "'{}' is not supported by asos";
+template <> inline constexpr auto rejection_message<unsupported_directive> = "'#{}' is not supported by asos";
+template <> inline constexpr auto rejection_message<unknown_directive> = "unknown directive '#{}'";
+template <> inline constexpr auto rejection_message<cylinder_light> = "'cylinder' lights are not supported by asos";
+template <> inline constexpr auto rejection_message<cylinder_camera> = "the 'cylinder' camera is not supported by asos";
+template <> inline constexpr auto rejection_message<texture_pattern> = "texture patterns ('checker' of textures) are not supported by asos; use checker in the pigment";
+template <> inline constexpr auto rejection_message<reflection_block> = "'reflection { … }' is not supported by asos; write reflection followed by a colour or a float";
+template <> inline constexpr auto rejection_message<checker_of_blocks> = "'checker' of pigments or textures is not supported by asos; give checker two colours";
+// clang-format on
+
+struct errors {
+    template <typename Rule>
+    static constexpr const char* message = error_message<Rule>;
+};
+
+template <typename Rule>
+using control = must_if<errors>::control<Rule>;
+
+}  // namespace asos::grammar

@@ -1,0 +1,170 @@
+#pragma once
+// Expressions, as POV-Ray 3.7 parses them. Outside parentheses an expression
+// is arithmetic only (so `<` and `>` can delimit vectors and `=` follow
+// #declare); comparisons, logic and `?:` live inside parentheses. Precedence
+// ladder, loosest first:
+//   ?:   |   &   < <= = != >= >   + -   * /   unary - + !   .member   primary
+#include "grammar/keywords.hpp"
+
+namespace asos::grammar {
+
+struct expression;
+struct logical_expression;
+
+// --- operators ----------------------------------------------------------------
+struct op_plus : tok<one<'+'>> {};
+struct op_minus : tok<one<'-'>> {};
+struct op_times : tok<one<'*'>> {};
+struct op_divide : tok<one<'/'>> {};
+struct op_not : tok<seq<one<'!'>, not_at<one<'='>>>> {};
+struct op_less_equal : tok<string<'<', '='>> {};
+struct op_less : tok<one<'<'>> {};
+struct op_greater_equal : tok<string<'>', '='>> {};
+struct op_greater : tok<one<'>'>> {};
+struct op_equal : tok<one<'='>> {};
+struct op_not_equal : tok<string<'!', '='>> {};
+struct op_and : tok<one<'&'>> {};
+struct op_or : tok<one<'|'>> {};
+struct op_query : tok<one<'?'>> {};
+struct op_colon : tok<one<':'>> {};
+// A member dot; `.5` after an expression is a number, not a member.
+struct op_dot : tok<seq<one<'.'>, not_at<ascii::digit>>> {};
+
+// --- primaries ------------------------------------------------------------------
+struct parenthesized : if_must<lparen, logical_expression, rparen> {};
+
+struct vector_component : seq<expression> {};
+// The common case `<1.5, -2, 3e-1>`, numbers and blanks on one line, scanned
+// in one go; anything else falls through to vector_literal. (A big scene is
+// mostly such vectors.)
+struct plain_vector_text {
+    using rule_t = plain_vector_text;
+    using subs_t = empty_list;
+
+    template <typename ParseInput>
+    static bool match(ParseInput& in) {
+        const char* const begin = in.current();
+        const char* const end = in.end();
+        const char* p = begin;
+        auto blanks = [&] {
+            while (p < end && (*p == ' ' || *p == '\t')) ++p;
+        };
+        auto digit = [&](const char* q) { return q < end && *q >= '0' && *q <= '9'; };
+        auto number = [&] {
+            if (p < end && *p == '-') ++p;
+            const char* start = p;
+            while (digit(p)) ++p;
+            bool any = p != start;
+            if (p < end && *p == '.') {
+                ++p;
+                while (digit(p)) {
+                    ++p;
+                    any = true;
+                }
+            }
+            if (!any) return false;
+            if (p < end && (*p == 'e' || *p == 'E')) {
+                const char* q = p + 1;
+                if (q < end && (*q == '+' || *q == '-')) ++q;
+                if (!digit(q)) return false;
+                while (digit(q)) ++q;
+                p = q;
+            }
+            return p == end || !((*p >= 'a' && *p <= 'z') || (*p >= 'A' && *p <= 'Z') || *p == '_' || *p == '.');
+        };
+        if (p == end || *p != '<') return false;
+        ++p;
+        int components = 0;
+        while (true) {
+            blanks();
+            if (!number()) return false;
+            ++components;
+            blanks();
+            if (p < end && *p == ',' && components < 5) {
+                ++p;
+                continue;
+            }
+            if (p < end && *p == '>' && components >= 2) {
+                ++p;
+                break;
+            }
+            return false;
+        }
+        in.bump_in_this_line(static_cast<std::size_t>(p - begin));
+        return true;
+    }
+};
+struct plain_vector : tok<plain_vector_text> {};
+
+struct vector_components : list_must<vector_component, comma> {};
+struct vector_literal : if_must<vector_open, vector_components, vector_close> {};
+
+struct call_argument : seq<expression> {};
+struct call_arguments : list_must<call_argument, comma> {};
+struct call_open : lparen {};
+struct function_call : if_must<function_name, call_open, call_arguments, rparen> {};
+
+// Colours: `rgb <1,0,0>`, `color Red filter 0.5`, `colour red 1 green .5`, …
+// An item's operand is a whole arithmetic expression: `rgb <1,1,1>*0.5`.
+struct colour_operand : seq<expression> {};
+struct colour_item : if_must<colour_item_name, colour_operand> {};
+struct colour_base : seq<expression> {};
+struct colour_after_keyword : sor<plus<colour_item>, seq<colour_base, star<colour_item>>> {};
+struct colour_keyword_form : if_must<kw_color, colour_after_keyword> {};
+struct colour_start : success {};  // opens the colour's node
+struct colour_expression
+    : seq<at<sor<kw_color, colour_item_name>>, colour_start, sor<colour_keyword_form, plus<colour_item>>> {};
+
+struct name_reference : name {};
+struct unsupported_in_expression : unsupported_keyword {};
+
+struct primary : sor<number_literal, string_literal, parenthesized, plain_vector, vector_literal, function_call,
+                     colour_expression, constant, name_reference, unsupported_in_expression> {};
+
+// --- operators, tightest first -------------------------------------------------------
+struct unary;
+struct member_access : if_must<op_dot, member_name> {};
+struct postfix : seq<primary, star<member_access>> {};
+struct unary_operand : seq<unary> {};
+struct negation : if_must<op_minus, unary_operand> {};
+struct plus_sign : if_must<op_plus, unary_operand> {};
+struct logical_not : if_must<op_not, unary_operand> {};
+// (The at<> guards spare failed attempts at every operand.)
+struct unary : sor<seq<at<one<'-', '+', '!'>>, sor<negation, plus_sign, logical_not>>, postfix> {};
+
+struct factor_operand : seq<unary> {};
+struct multiply : if_must<op_times, factor_operand> {};
+struct divide : if_must<op_divide, factor_operand> {};
+struct product : seq<unary, star<at<one<'*', '/'>>, sor<multiply, divide>>> {};
+
+struct term_operand : seq<product> {};
+struct add : if_must<op_plus, term_operand> {};
+struct subtract : if_must<op_minus, term_operand> {};
+// An arithmetic expression: what POV-Ray accepts without parentheses.
+struct expression : seq<product, star<at<one<'+', '-'>>, sor<add, subtract>>> {};
+
+// Inside parentheses only.
+struct comparison_operand : seq<expression> {};
+struct less_equal : if_must<op_less_equal, comparison_operand> {};
+struct less : if_must<op_less, comparison_operand> {};
+struct greater_equal : if_must<op_greater_equal, comparison_operand> {};
+struct greater : if_must<op_greater, comparison_operand> {};
+struct equal : if_must<op_equal, comparison_operand> {};
+struct not_equal : if_must<op_not_equal, comparison_operand> {};
+struct comparison
+    : seq<expression, star<sor<less_equal, less, greater_equal, greater, not_equal, equal>>> {};
+struct conjunction_operand : seq<comparison> {};
+struct conjunction : if_must<op_and, conjunction_operand> {};
+struct logical_and : seq<comparison, star<conjunction>> {};
+struct disjunction_operand : seq<logical_and> {};
+struct disjunction : if_must<op_or, disjunction_operand> {};
+struct logical_or : seq<logical_and, star<disjunction>> {};
+struct conditional_tail : if_must<op_query, logical_expression, op_colon, logical_expression> {};
+struct logical_expression : seq<logical_or, opt<conditional_tail>> {};
+
+}  // namespace asos::grammar
+
+namespace tao::pegtl {
+template <typename Name>
+struct analyze_traits<Name, asos::grammar::plain_vector_text> : analyze_any_traits<> {};
+}  // namespace tao::pegtl

@@ -1,0 +1,109 @@
+#pragma once
+// Keywords. A keyword never matches the front of a longer identifier
+// (`spheres` is not `sphere`), and no keyword — ours or POV-Ray's — can be
+// declared as an identifier. Big families (functions, constants, member
+// names, colour items, unsupported POV-Ray words) are matched through the
+// word table in asos/lang/words.hpp.
+#include "grammar/lexical.hpp"
+
+namespace asos::grammar {
+
+#define ASOS_KEYWORD(rule, text) \
+    struct rule : tok<TAO_PEGTL_KEYWORD(text)> {};
+
+// scene items and objects
+ASOS_KEYWORD(kw_camera, "camera")
+ASOS_KEYWORD(kw_light_source, "light_source")
+ASOS_KEYWORD(kw_sphere, "sphere")
+ASOS_KEYWORD(kw_box, "box")
+ASOS_KEYWORD(kw_cone, "cone")
+ASOS_KEYWORD(kw_cylinder, "cylinder")
+ASOS_KEYWORD(kw_disc, "disc")
+ASOS_KEYWORD(kw_polygon, "polygon")
+ASOS_KEYWORD(kw_plane, "plane")
+ASOS_KEYWORD(kw_union, "union")
+ASOS_KEYWORD(kw_object, "object")
+ASOS_KEYWORD(kw_global_settings, "global_settings")
+ASOS_KEYWORD(kw_background, "background")
+// camera
+ASOS_KEYWORD(kw_perspective, "perspective")
+ASOS_KEYWORD(kw_orthographic, "orthographic")
+ASOS_KEYWORD(kw_location, "location")
+ASOS_KEYWORD(kw_look_at, "look_at")
+ASOS_KEYWORD(kw_angle, "angle")
+ASOS_KEYWORD(kw_right, "right")
+ASOS_KEYWORD(kw_up, "up")
+ASOS_KEYWORD(kw_direction, "direction")
+ASOS_KEYWORD(kw_sky, "sky")
+// lights
+ASOS_KEYWORD(kw_area_light, "area_light")
+ASOS_KEYWORD(kw_adaptive, "adaptive")
+ASOS_KEYWORD(kw_jitter, "jitter")
+ASOS_KEYWORD(kw_circular, "circular")
+ASOS_KEYWORD(kw_orient, "orient")
+ASOS_KEYWORD(kw_fade_distance, "fade_distance")
+ASOS_KEYWORD(kw_fade_power, "fade_power")
+ASOS_KEYWORD(kw_shadowless, "shadowless")
+// modifiers
+ASOS_KEYWORD(kw_open, "open")
+ASOS_KEYWORD(kw_pigment, "pigment")
+ASOS_KEYWORD(kw_finish, "finish")
+ASOS_KEYWORD(kw_texture, "texture")
+ASOS_KEYWORD(kw_translate, "translate")
+ASOS_KEYWORD(kw_rotate, "rotate")
+ASOS_KEYWORD(kw_scale, "scale")
+ASOS_KEYWORD(kw_matrix, "matrix")
+ASOS_KEYWORD(kw_no_shadow, "no_shadow")
+ASOS_KEYWORD(kw_checker, "checker")
+ASOS_KEYWORD(kw_ambient, "ambient")
+ASOS_KEYWORD(kw_diffuse, "diffuse")
+ASOS_KEYWORD(kw_brilliance, "brilliance")
+ASOS_KEYWORD(kw_phong, "phong")
+ASOS_KEYWORD(kw_phong_size, "phong_size")
+ASOS_KEYWORD(kw_specular, "specular")
+ASOS_KEYWORD(kw_roughness, "roughness")
+ASOS_KEYWORD(kw_reflection, "reflection")
+ASOS_KEYWORD(kw_assumed_gamma, "assumed_gamma")
+ASOS_KEYWORD(kw_max_trace_level, "max_trace_level")
+ASOS_KEYWORD(kw_ambient_light, "ambient_light")
+// our extension
+ASOS_KEYWORD(kw_asos, "asos")
+ASOS_KEYWORD(kw_eps, "eps")
+ASOS_KEYWORD(kw_max, "max")
+// colours
+struct kw_color : tok<sor<TAO_PEGTL_KEYWORD("color"), TAO_PEGTL_KEYWORD("colour")>> {};
+// directives (after '#')
+ASOS_KEYWORD(kw_declare, "declare")
+ASOS_KEYWORD(kw_local, "local")
+ASOS_KEYWORD(kw_undef, "undef")
+ASOS_KEYWORD(kw_include, "include")
+ASOS_KEYWORD(kw_if, "if")
+ASOS_KEYWORD(kw_ifdef, "ifdef")
+ASOS_KEYWORD(kw_ifndef, "ifndef")
+ASOS_KEYWORD(kw_elseif, "elseif")
+ASOS_KEYWORD(kw_else, "else")
+ASOS_KEYWORD(kw_end, "end")
+ASOS_KEYWORD(kw_while, "while")
+ASOS_KEYWORD(kw_for, "for")
+ASOS_KEYWORD(kw_version, "version")
+ASOS_KEYWORD(kw_debug, "debug")
+ASOS_KEYWORD(kw_warning, "warning")
+ASOS_KEYWORD(kw_error, "error")
+
+#undef ASOS_KEYWORD
+
+// Families matched through the word table.
+struct function_word : word_if<accept_class<lang::kFunction>> {};
+struct function_name : tok<function_word> {};
+struct constant_word : word_if<accept_class<lang::kConstant>> {};
+struct constant : tok<constant_word> {};
+struct member_word : word_if<accept_class<lang::kMember>> {};
+struct member_name : tok<member_word> {};
+struct colour_item_word : word_if<accept_class<lang::kColourItem>> {};
+struct colour_item_name : tok<colour_item_word> {};
+
+// A POV-Ray keyword asos does not accept. Wherever it is met, its action
+// reports "'isosurface' is not supported by asos" at the keyword.
+struct unsupported_keyword : word_if<accept_unsupported> {};
+
+}  // namespace asos::grammar

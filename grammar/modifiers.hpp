@@ -1,0 +1,85 @@
+#pragma once
+// Modifiers: transforms, pigment, finish, texture, our `asos { … }` block,
+// and the modifiers an object accepts.
+#include "grammar/directives.hpp"
+
+namespace asos::grammar {
+
+// Values after a keyword; each name carries its own error message.
+struct float_value : seq<expression> {};
+struct vector_value : seq<expression> {};
+struct colour_value : seq<expression> {};
+struct block_open : lbrace {};
+
+// A POV-Ray keyword we do not support, met where an item may stand.
+struct unsupported_item : unsupported_keyword {};
+
+// --- transforms ---------------------------------------------------------------
+struct translate_item : if_must<kw_translate, vector_value> {};
+struct rotate_item : if_must<kw_rotate, vector_value> {};
+struct scale_item : if_must<kw_scale, vector_value> {};  // a float scales uniformly
+// matrix <m00, m01, m02,  m10, m11, m12,  m20, m21, m22,  m30, m31, m32>
+struct matrix_value : seq<expression> {};
+struct matrix_components : list_must<matrix_value, comma> {};
+struct matrix_close : vector_close {};
+struct matrix_values : if_must<vector_open, matrix_components, matrix_close> {};
+struct matrix_item : if_must<kw_matrix, matrix_values> {};
+struct transform_item : sor<translate_item, rotate_item, scale_item, matrix_item> {};
+
+// --- asos { eps E  max M  jitter on|off } ----------------------------------------
+struct eps_item : if_must<kw_eps, float_value> {};
+struct max_item : if_must<kw_max, float_value> {};
+struct asos_jitter_item : if_must<kw_jitter, float_value> {};
+struct asos_entry : sor<eps_item, max_item, asos_jitter_item> {};
+struct asos_end : rbrace {};
+struct asos_block : if_must<kw_asos, block_open, entries<asos_entry>, asos_end> {};
+
+// --- pigment { colour | checker c1, c2 | Name  transforms } ----------------------
+struct checker_start : success {};
+// `checker pigment {…} pigment {…}` (pigments rather than colours) is not ours.
+struct checker_of_blocks : seq<at<sor<kw_pigment, kw_texture>>> {};
+struct checker_second : seq<expression> {};
+struct checker_colours
+    : seq<checker_start, opt<checker_of_blocks>,
+          opt<expression, sor<seq<comma, checker_second>, opt<expression>>>> {};
+struct checker_item : if_must<kw_checker, checker_colours> {};
+struct pigment_colour : seq<expression> {};  // a colour, or a declared pigment
+struct pigment_entry : sor<checker_item, transform_item, pigment_colour, unsupported_item> {};
+struct pigment_end : rbrace {};
+struct pigment_block : if_must<kw_pigment, block_open, entries<pigment_entry>, pigment_end> {};
+
+// --- finish { Name  ambient C  diffuse F  … } ---------------------------------------
+// `reflection { … }` (POV-Ray's block form) is not ours; `reflection C` is.
+struct reflection_block : at<one<'{'>> {};
+struct reflection_value : sor<reflection_block, seq<expression>> {};
+struct ambient_item : if_must<kw_ambient, colour_value> {};
+struct diffuse_item : if_must<kw_diffuse, float_value> {};
+struct brilliance_item : if_must<kw_brilliance, float_value> {};
+struct phong_item : if_must<kw_phong, float_value> {};
+struct phong_size_item : if_must<kw_phong_size, float_value> {};
+struct specular_item : if_must<kw_specular, float_value> {};
+struct roughness_item : if_must<kw_roughness, float_value> {};
+struct reflection_item : if_must<kw_reflection, reflection_value> {};
+struct finish_name : name {};
+struct finish_entry
+    : sor<ambient_item, diffuse_item, brilliance_item, phong_item, phong_size_item, specular_item,
+          roughness_item, reflection_item, finish_name, unsupported_item> {};
+struct finish_end : rbrace {};
+struct finish_block : if_must<kw_finish, block_open, entries<finish_entry>, finish_end> {};
+
+// --- texture { Name  pigment {…}  finish {…}  transforms } ------------------------
+// A pattern of textures (`texture { checker texture {…} … }`) is not ours.
+struct texture_pattern : kw_checker {};
+struct texture_name : name {};
+struct texture_entry
+    : sor<pigment_block, finish_block, transform_item, texture_pattern, texture_name, unsupported_item> {};
+struct texture_end : rbrace {};
+struct texture_block : if_must<kw_texture, block_open, entries<texture_entry>, texture_end> {};
+
+// --- what an object accepts ------------------------------------------------------
+struct open_item : kw_open {};  // cones and cylinders only; the interpreter checks
+struct no_shadow_item : kw_no_shadow {};
+struct object_modifier : sor<pigment_block, finish_block, texture_block, transform_item, no_shadow_item,
+                             open_item, asos_block, unsupported_item> {};
+
+}  // namespace asos::grammar

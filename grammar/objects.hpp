@@ -1,0 +1,128 @@
+#pragma once
+// Scene items: camera, light_source, the objects, global_settings and
+// background. An object's leading arguments are separated by optional commas,
+// as in POV-Ray; `arguments_end` marks where they stop and modifiers begin.
+#include "grammar/modifiers.hpp"
+
+namespace asos::grammar {
+
+struct arguments_end : success {};
+struct object_end : rbrace {};
+struct object_body : entries<object_modifier> {};
+
+// --- shapes -------------------------------------------------------------------------
+struct sphere_center : seq<expression> {};
+struct sphere_radius : seq<expression> {};
+struct sphere_block : if_must<kw_sphere, block_open, sphere_center, opt_comma, sphere_radius,
+                              arguments_end, object_body, object_end> {};
+
+struct box_corner : seq<expression> {};
+struct box_block : if_must<kw_box, block_open, box_corner, opt_comma, box_corner, arguments_end,
+                           object_body, object_end> {};
+
+struct cone_base : seq<expression> {};
+struct cone_base_radius : seq<expression> {};
+struct cone_cap : seq<expression> {};
+struct cone_cap_radius : seq<expression> {};
+struct cone_block : if_must<kw_cone, block_open, cone_base, opt_comma, cone_base_radius, opt_comma,
+                            cone_cap, opt_comma, cone_cap_radius, arguments_end, object_body,
+                            object_end> {};
+
+struct cylinder_base : seq<expression> {};
+struct cylinder_cap : seq<expression> {};
+struct cylinder_radius : seq<expression> {};
+struct cylinder_block : if_must<kw_cylinder, block_open, cylinder_base, opt_comma, cylinder_cap,
+                                opt_comma, cylinder_radius, arguments_end, object_body,
+                                object_end> {};
+
+struct disc_center : seq<expression> {};
+struct disc_normal : seq<expression> {};
+struct disc_radius : seq<expression> {};
+struct disc_hole_radius : opt<opt_comma, expression> {};
+struct disc_block : if_must<kw_disc, block_open, disc_center, opt_comma, disc_normal, opt_comma,
+                            disc_radius, disc_hole_radius, arguments_end, object_body, object_end> {};
+
+// polygon { N, <p1>, … <pN> }: the points become one Sequence node.
+struct polygon_count : seq<expression> {};
+struct polygon_point : seq<expression> {};
+struct polygon_points : seq<sequence_start, polygon_point, star<opt_comma, expression>> {};
+struct polygon_block : if_must<kw_polygon, block_open, polygon_count, opt_comma, polygon_points,
+                               arguments_end, object_body, object_end> {};
+
+struct plane_normal : seq<expression> {};
+struct plane_distance : seq<expression> {};
+struct plane_block : if_must<kw_plane, block_open, plane_normal, opt_comma, plane_distance,
+                             arguments_end, object_body, object_end> {};
+
+// --- grouping ---------------------------------------------------------------------
+// union { objects and lights…  modifiers… }
+struct union_entry;
+struct union_end : rbrace {};
+struct union_block : if_must<kw_union, block_open, arguments_end, entries<union_entry>, union_end> {};
+
+// object { Name | an object,  modifiers… }
+struct object_base : sor<object_statement, name> {};
+struct object_block : if_must<kw_object, block_open, object_base, arguments_end, object_body,
+                              object_end> {};
+
+struct object_statement : sor<sphere_block, box_block, cone_block, cylinder_block, disc_block,
+                              polygon_block, plane_block, union_block, object_block> {};
+
+// --- light_source { <position>, colour  modifiers… } --------------------------------
+struct light_position : seq<expression> {};
+struct light_colour : opt<opt_comma, expression> {};  // absent only after a light identifier
+struct area_light_item : if_must<kw_area_light, vector_value, opt_comma, vector_value, opt_comma,
+                                 float_value, opt_comma, float_value> {};
+struct adaptive_item : if_must<kw_adaptive, float_value> {};
+struct jitter_item : kw_jitter {};
+struct circular_item : kw_circular {};
+struct orient_item : kw_orient {};
+struct fade_distance_item : if_must<kw_fade_distance, float_value> {};
+struct fade_power_item : if_must<kw_fade_power, float_value> {};
+struct shadowless_item : kw_shadowless {};
+struct cylinder_light : kw_cylinder {};  // POV-Ray's cylindrical light: not ours
+struct light_entry
+    : sor<area_light_item, adaptive_item, jitter_item, circular_item, orient_item, fade_distance_item,
+          fade_power_item, shadowless_item, transform_item, asos_block, cylinder_light,
+          unsupported_item> {};
+struct light_end : rbrace {};
+struct light_source_block : if_must<kw_light_source, block_open, light_position, light_colour,
+                                    arguments_end, entries<light_entry>, light_end> {};
+
+struct union_entry : sor<object_statement, light_source_block, object_modifier> {};
+
+// --- camera { perspective | orthographic  location …  look_at … } -------------------
+struct perspective_item : kw_perspective {};
+struct orthographic_item : kw_orthographic {};
+struct location_item : if_must<kw_location, vector_value> {};
+struct look_at_item : if_must<kw_look_at, vector_value> {};
+struct angle_item : if_must<kw_angle, float_value> {};
+struct right_item : if_must<kw_right, vector_value> {};
+struct up_item : if_must<kw_up, vector_value> {};
+struct direction_item : if_must<kw_direction, vector_value> {};
+struct sky_item : if_must<kw_sky, vector_value> {};
+struct cylinder_camera : kw_cylinder {};  // POV-Ray's cylindrical projection: not ours
+struct camera_name : name {};
+struct camera_entry
+    : sor<perspective_item, orthographic_item, location_item, look_at_item, angle_item, right_item,
+          up_item, direction_item, sky_item, transform_item, cylinder_camera, camera_name,
+          unsupported_item> {};
+struct camera_end : rbrace {};
+struct camera_block : if_must<kw_camera, block_open, entries<camera_entry>, camera_end> {};
+
+// --- global_settings { … }   background { colour } ----------------------------------
+struct assumed_gamma_item : if_must<kw_assumed_gamma, float_value> {};
+struct max_trace_level_item : if_must<kw_max_trace_level, float_value> {};
+struct ambient_light_item : if_must<kw_ambient_light, colour_value> {};
+struct global_entry
+    : sor<assumed_gamma_item, max_trace_level_item, ambient_light_item, asos_block, unsupported_item> {};
+struct global_settings_end : rbrace {};
+struct global_settings_block
+    : if_must<kw_global_settings, block_open, entries<global_entry>, global_settings_end> {};
+
+struct background_colour : seq<expression> {};
+struct background_end : rbrace {};
+struct background_block
+    : if_must<kw_background, block_open, background_colour, arguments_end, background_end> {};
+
+}  // namespace asos::grammar

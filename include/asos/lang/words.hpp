@@ -1,0 +1,97 @@
+#pragma once
+// The vocabulary of the scene language: every keyword, built-in constant,
+// function, member name and operator we accept, and the list of POV-Ray 3.7
+// keywords we do not (so that they are rejected by name, never as a puzzling
+// syntax error later). Shared by the grammar, the interpreter and the dump.
+#include <cstdint>
+#include <string_view>
+
+namespace asos::lang {
+
+// WORD(enumerator, spelling), one entry per spelling.
+#define ASOS_LANG_WORDS(WORD)                                                                      \
+    /* scene items and objects */                                                               \
+    WORD(Camera, "camera") WORD(LightSource, "light_source") WORD(Sphere, "sphere") WORD(Box, "box")        \
+    WORD(Cone, "cone") WORD(Cylinder, "cylinder") WORD(Disc, "disc") WORD(Polygon, "polygon")               \
+    WORD(Plane, "plane") WORD(Union, "union") WORD(Object, "object") WORD(GlobalSettings, "global_settings") \
+    WORD(Background, "background")                                                                 \
+    /* camera */                                                                                \
+    WORD(Perspective, "perspective") WORD(Orthographic, "orthographic") WORD(Location, "location")       \
+    WORD(LookAt, "look_at") WORD(Angle, "angle") WORD(Right, "right") WORD(Up, "up")                        \
+    WORD(Direction, "direction") WORD(Sky, "sky")                                                     \
+    /* lights */                                                                                \
+    WORD(AreaLight, "area_light") WORD(Adaptive, "adaptive") WORD(Jitter, "jitter")                      \
+    WORD(Circular, "circular") WORD(Orient, "orient") WORD(FadeDistance, "fade_distance")                \
+    WORD(FadePower, "fade_power") WORD(Shadowless, "shadowless")                                      \
+    /* object modifiers, pigments, finishes */                                                  \
+    WORD(Open, "open") WORD(Pigment, "pigment") WORD(Finish, "finish") WORD(Texture, "texture")             \
+    WORD(Translate, "translate") WORD(Rotate, "rotate") WORD(Scale, "scale") WORD(Matrix, "matrix")         \
+    WORD(NoShadow, "no_shadow") WORD(Asos, "asos") WORD(Eps, "eps") WORD(Checker, "checker")                \
+    WORD(Ambient, "ambient") WORD(Diffuse, "diffuse") WORD(Brilliance, "brilliance") WORD(Phong, "phong")   \
+    WORD(PhongSize, "phong_size") WORD(Specular, "specular") WORD(Roughness, "roughness")                \
+    WORD(Reflection, "reflection") WORD(AssumedGamma, "assumed_gamma")                                \
+    WORD(MaxTraceLevel, "max_trace_level") WORD(AmbientLight, "ambient_light")                        \
+    /* colours */                                                                               \
+    WORD(Color, "color") WORD(Colour, "colour") WORD(Rgb, "rgb") WORD(Rgbf, "rgbf") WORD(Rgbt, "rgbt")         \
+    WORD(Rgbft, "rgbft") WORD(Red, "red") WORD(Green, "green") WORD(Blue, "blue") WORD(Filter, "filter")       \
+    WORD(Transmit, "transmit") WORD(Gray, "gray") WORD(Grey, "grey")                                     \
+    /* directives */                                                                            \
+    WORD(Declare, "declare") WORD(Local, "local") WORD(Undef, "undef") WORD(Include, "include")             \
+    WORD(If, "if") WORD(Ifdef, "ifdef") WORD(Ifndef, "ifndef") WORD(Elseif, "elseif") WORD(Else, "else")       \
+    WORD(End, "end") WORD(While, "while") WORD(For, "for") WORD(Version, "version") WORD(Debug, "debug")       \
+    WORD(Warning, "warning") WORD(Error, "error")                                                     \
+    /* built-in constants */                                                                    \
+    WORD(X, "x") WORD(Y, "y") WORD(Z, "z") WORD(T, "t") WORD(U, "u") WORD(V, "v") WORD(Pi, "pi") WORD(Clock, "clock")   \
+    WORD(ClockDelta, "clock_delta") WORD(ClockOn, "clock_on") WORD(True, "true") WORD(False, "false")       \
+    WORD(On, "on") WORD(Off, "off") WORD(Yes, "yes") WORD(No, "no") WORD(ImageWidth, "image_width")            \
+    WORD(ImageHeight, "image_height")                                                              \
+    /* functions */                                                                             \
+    WORD(Abs, "abs") WORD(Sqrt, "sqrt") WORD(Pow, "pow") WORD(Sin, "sin") WORD(Cos, "cos") WORD(Tan, "tan")       \
+    WORD(Asin, "asin") WORD(Acos, "acos") WORD(Atan, "atan") WORD(Atan2, "atan2") WORD(Sinh, "sinh")           \
+    WORD(Cosh, "cosh") WORD(Tanh, "tanh") WORD(Asinh, "asinh") WORD(Acosh, "acosh") WORD(Atanh, "atanh")       \
+    WORD(Min, "min") WORD(Max, "max") WORD(Mod, "mod") WORD(Floor, "floor") WORD(Ceil, "ceil") WORD(Int, "int")   \
+    WORD(Div, "div") WORD(Sqr, "sqr") WORD(Radians, "radians") WORD(Degrees, "degrees") WORD(Exp, "exp")       \
+    WORD(Log, "log") WORD(Ln, "ln") WORD(Vlength, "vlength") WORD(Vnormalize, "vnormalize")                 \
+    WORD(Vcross, "vcross") WORD(Vdot, "vdot") WORD(Vrotate, "vrotate") WORD(VaxisRotate, "vaxis_rotate")    \
+    WORD(Select, "select") WORD(Concat, "concat") WORD(Str, "str") WORD(Chr, "chr") WORD(Strlen, "strlen")     \
+    WORD(Val, "val") WORD(Defined, "defined")                                                         \
+    /* operators (spelled as written) */                                                        \
+    WORD(OpAdd, "+") WORD(OpSub, "-") WORD(OpMul, "*") WORD(OpDiv, "/") WORD(OpNot, "!") WORD(OpLess, "<")        \
+    WORD(OpLessEqual, "<=") WORD(OpEqual, "=") WORD(OpNotEqual, "!=") WORD(OpGreaterEqual, ">=")            \
+    WORD(OpGreater, ">") WORD(OpAnd, "&") WORD(OpOr, "|")
+
+enum class Word : std::uint16_t {
+    None,
+#define ASOS_LANG_WORD_ENUM(id, text) id,
+    ASOS_LANG_WORDS(ASOS_LANG_WORD_ENUM)
+#undef ASOS_LANG_WORD_ENUM
+        Count
+};
+
+// What a word may be used as, beyond a plain keyword.
+enum WordClass : std::uint8_t {
+    kKeyword = 1,     // reserved: never a user identifier
+    kFunction = 2,    // abs(…)
+    kConstant = 4,    // x, pi, clock, on, …
+    kMember = 8,      // V.x, C.red
+    kColourItem = 16, // rgb V, red F, filter F, …
+};
+
+struct WordInfo {
+    std::string_view text;
+    Word word = Word::None;
+    std::uint8_t classes = 0;
+};
+
+// The spelling of a word, e.g. "light_source" or "<=".
+std::string_view wordText(Word w);
+// The word spelled `text`, or null when `text` is not one of ours.
+const WordInfo* lookupWord(std::string_view text);
+// True when `text` is a POV-Ray 3.7 keyword that asos does not accept.
+bool isUnsupportedKeyword(std::string_view text);
+// True when `text` names a POV-Ray directive that asos does not accept (macro, switch, …).
+bool isUnsupportedDirective(std::string_view text);
+// True when `text` may not be used as an identifier (ours or POV-Ray's).
+bool isReservedWord(std::string_view text);
+
+}  // namespace asos::lang

@@ -1,0 +1,435 @@
+// Expressions, with POV-Ray 3.7's rules: a float promotes to every component
+// of a vector or colour; vectors of different sizes meet at the larger size
+// with zeros; = != <= >= and conditions use POV-Ray's epsilon.
+#include <charconv>
+#include <cmath>
+#include <cstdio>
+
+#include "src/lang/interpreter_impl.hpp"
+
+namespace asos::lang {
+
+namespace {
+
+const char* sizeName(int dim) {
+    switch (dim) {
+    case 2: return "a 2-component vector";
+    case 4: return "a 4-component vector";
+    case 5: return "a 5-component vector";
+    default: return "a vector";
+    }
+}
+
+// `a` widened to `dim` components (colour: five).
+Num widen(const Num& a, int dim, bool colour) {
+    Num r = a;
+    if (a.isFloat()) {
+        r.v.fill(a.v[0]);
+    } else {
+        for (int i = a.dim; i < 5; ++i) r.v[i] = 0.0;
+    }
+    r.dim = static_cast<std::uint8_t>(dim);
+    r.colour = colour;
+    return r;
+}
+
+std::string utf8(std::uint32_t c) {
+    std::string s;
+    if (c < 0x80) {
+        s += static_cast<char>(c);
+    } else if (c < 0x800) {
+        s += static_cast<char>(0xC0 | (c >> 6));
+        s += static_cast<char>(0x80 | (c & 0x3F));
+    } else if (c < 0x10000) {
+        s += static_cast<char>(0xE0 | (c >> 12));
+        s += static_cast<char>(0x80 | ((c >> 6) & 0x3F));
+        s += static_cast<char>(0x80 | (c & 0x3F));
+    } else {
+        s += static_cast<char>(0xF0 | (c >> 18));
+        s += static_cast<char>(0x80 | ((c >> 12) & 0x3F));
+        s += static_cast<char>(0x80 | ((c >> 6) & 0x3F));
+        s += static_cast<char>(0x80 | (c & 0x3F));
+    }
+    return s;
+}
+
+}  // namespace
+
+std::string formatNumber(double v) {
+    if (v == 0.0) return "0";
+    char buffer[32];
+    const auto r = std::to_chars(buffer, buffer + sizeof buffer, v);
+    return std::string(buffer, r.ptr);
+}
+
+std::string describe(const Num& n) {
+    if (n.colour) return "a colour";
+    if (n.dim == 1) return "a float";
+    return sizeName(n.dim);
+}
+
+std::string describe(const Value& v) {
+    struct Visitor {
+        std::string operator()(const Num& n) const { return describe(n); }
+        std::string operator()(const std::string&) const { return "a string"; }
+        std::string operator()(const std::shared_ptr<const ObjectTree>& o) const {
+            return o->kind == ObjectTree::Kind::Light ? "a light_source" : "an object";
+        }
+        std::string operator()(const std::shared_ptr<const Pigment>&) const { return "a pigment"; }
+        std::string operator()(const std::shared_ptr<const Finish>&) const { return "a finish"; }
+        std::string operator()(const std::shared_ptr<const Texture>&) const { return "a texture"; }
+        std::string operator()(const std::shared_ptr<const CameraValue>&) const { return "a camera"; }
+        std::string operator()(const Poison&) const { return "an erroneous value"; }
+    };
+    return std::visit(Visitor{}, v);
+}
+
+const Value* Interpreter::lookup(std::uint32_t id) const {
+    for (auto scope = scopes_.rbegin(); scope != scopes_.rend(); ++scope) {
+        if (auto it = scope->find(id); it != scope->end()) return &it->second;
+    }
+    return nullptr;
+}
+
+Num Interpreter::evalNum(const Node& n) {
+    // Numbers and vectors of numbers are most of a big scene: no Value detour.
+    if (n.kind == NodeKind::Number) return Num::scalar(n.number);
+    Value v = eval(n);
+    if (auto* num = std::get_if<Num>(&v)) return *num;
+    fail(n, "expected a number, a vector or a colour, found " + describe(v));
+}
+
+double Interpreter::evalFloat(const Node& n) {
+    if (n.kind == NodeKind::Number) return n.number;
+    const Num v = evalNum(n);
+    if (!v.isFloat()) fail(n, "expected a float, found " + describe(v));
+    return v.v[0];
+}
+
+int Interpreter::evalInt(const Node& n, int min) {
+    const double v = evalFloat(n);
+    if (!(v >= min) || v > 2147483647.0)
+        fail(n, "expected a whole number of at least " + std::to_string(min) + ", found " + formatNumber(v));
+    return static_cast<int>(v);  // POV-Ray truncates
+}
+
+bool Interpreter::evalBool(const Node& n) { return std::abs(evalFloat(n)) > kEpsilon; }
+
+Vec3 Interpreter::evalVector(const Node& n) {
+    const Num v = evalNum(n);
+    if (v.colour) fail(n, "expected a vector, found a colour");
+    if (v.dim == 1) return Vec3(v.v[0]);  // a float promotes to <f, f, f>
+    if (v.dim > 3) fail(n, std::string("expected a 3-component vector, found ") + sizeName(v.dim));
+    return Vec3(v.v[0], v.v[1], v.dim == 3 ? v.v[2] : 0.0);
+}
+
+Color Interpreter::toColour(const Num& v, const Node& at) {
+    if (v.dim == 2 && !v.colour) fail(at, "expected a colour, found a 2-component vector");
+    // A float is all five components, as in POV-Ray (`color 0.5` is half
+    // filtering, half transmitting); a 3-, 4- or 5-vector is rgb, rgbf, rgbft.
+    const Num w = v.isFloat() ? widen(v, 5, true) : v;
+    Color c;
+    c.rgb = Vec3(w.v[0], w.v[1], w.v[2]);
+    c.filter = w.dim >= 4 ? w.v[3] : 0.0;
+    c.transmit = w.dim >= 5 ? w.v[4] : 0.0;
+    return c;
+}
+
+Color Interpreter::evalColour(const Node& n) { return toColour(evalNum(n), n); }
+
+std::string Interpreter::evalString(const Node& n) {
+    Value v = eval(n);
+    if (auto* s = std::get_if<std::string>(&v)) return std::move(*s);
+    fail(n, "expected a string, found " + describe(v));
+}
+
+namespace {
+
+double component(const Num& a, int i) { return a.isFloat() ? a.v[0] : a.v[i]; }
+
+}  // namespace
+
+Value Interpreter::eval(const Node& n) {
+    switch (n.kind) {
+    case NodeKind::Number:
+        return Num::scalar(n.number);
+    case NodeKind::String:
+        return ast_->strings[n.id];
+    case NodeKind::Name: {
+        const Value* v = lookup(n.id);
+        if (!v) fail(n, "'" + nameOf(n) + "' is not declared");
+        if (std::holds_alternative<Poison>(*v)) throw Abandon{};
+        return *v;
+    }
+    case NodeKind::Constant: {
+        switch (n.word) {
+        case Word::X: return Num::vector({1, 0, 0});
+        case Word::Y: return Num::vector({0, 1, 0});
+        case Word::Z: return Num::vector({0, 0, 1});
+        case Word::T: {
+            Num t;
+            t.dim = 4;
+            t.v[3] = 1.0;
+            return t;
+        }
+        case Word::U: case Word::V: {
+            Num uv;
+            uv.dim = 2;
+            uv.v[n.word == Word::U ? 0 : 1] = 1.0;
+            return uv;
+        }
+        case Word::Pi: return Num::scalar(3.1415926535897932384626);
+        case Word::Clock: return Num::scalar(options_.clock);
+        case Word::ClockDelta: return Num::scalar(0.0);
+        case Word::ClockOn: return Num::scalar(0.0);
+        case Word::Version: return Num::scalar(version_);
+        case Word::True: case Word::On: case Word::Yes: return Num::scalar(1.0);
+        case Word::False: case Word::Off: case Word::No: return Num::scalar(0.0);
+        case Word::ImageWidth: return Num::scalar(options_.imageWidth);
+        case Word::ImageHeight: return Num::scalar(options_.imageHeight);
+        default: fail(n, quote(wordText(n.word)) + " is not a value");
+        }
+    }
+    case NodeKind::Vector: {
+        Num r;
+        r.dim = static_cast<std::uint8_t>(n.count);
+        for (std::uint32_t i = 0; i < n.count; ++i) r.v[i] = evalFloat(n[i]);
+        return r;
+    }
+    case NodeKind::Unary: {
+        if (n.word == Word::OpNot) return Num::scalar(evalBool(n[0]) ? 0.0 : 1.0);
+        Num a = evalNum(n[0]);
+        if (n.word == Word::OpSub)
+            for (double& c : a.v) c = -c;
+        return a;
+    }
+    case NodeKind::Binary: {
+        const Word op = n.word;
+        if (op == Word::OpAnd) return Num::scalar(evalBool(n[0]) && evalBool(n[1]) ? 1.0 : 0.0);
+        if (op == Word::OpOr) return Num::scalar(evalBool(n[0]) || evalBool(n[1]) ? 1.0 : 0.0);
+        if (op == Word::OpLess || op == Word::OpLessEqual || op == Word::OpEqual ||
+            op == Word::OpNotEqual || op == Word::OpGreaterEqual || op == Word::OpGreater) {
+            const double a = evalFloat(n[0]);
+            const double b = evalFloat(n[1]);
+            bool r = false;
+            switch (op) {
+            case Word::OpLess: r = a < b; break;
+            case Word::OpLessEqual: r = a < b || std::abs(a - b) < kEpsilon; break;
+            case Word::OpEqual: r = std::abs(a - b) < kEpsilon; break;
+            case Word::OpNotEqual: r = !(std::abs(a - b) < kEpsilon); break;
+            case Word::OpGreaterEqual: r = a > b || std::abs(a - b) < kEpsilon; break;
+            default: r = a > b; break;
+            }
+            return Num::scalar(r ? 1.0 : 0.0);
+        }
+        Num a = evalNum(n[0]);
+        Num b = evalNum(n[1]);
+        if (!(a.isFloat() && b.isFloat())) {
+            const bool colour = a.colour || b.colour;
+            const int dim = colour ? 5 : std::max<int>(a.dim, b.dim);
+            a = widen(a, dim, colour);
+            b = widen(b, dim, colour);
+        }
+        Num r = a;
+        for (int i = 0; i < a.dim; ++i) {
+            const double x = a.v[i];
+            const double y = b.v[i];
+            switch (op) {
+            case Word::OpAdd: r.v[i] = x + y; break;
+            case Word::OpSub: r.v[i] = x - y; break;
+            case Word::OpMul: r.v[i] = x * y; break;
+            default:
+                if (y == 0.0) fail(n, "division by zero");
+                r.v[i] = x / y;
+            }
+        }
+        return r;
+    }
+    case NodeKind::Conditional:
+        return evalBool(n[0]) ? eval(n[1]) : eval(n[2]);
+    case NodeKind::Member: {
+        const Num a = evalNum(n[0]);
+        if (a.isFloat())
+            fail(n, quote(std::string(".") += wordText(n.word)) + " needs a vector or a colour, found a float");
+        int index = 0;
+        switch (n.word) {
+        case Word::X: case Word::U: case Word::Red: index = 0; break;
+        case Word::Y: case Word::V: case Word::Green: index = 1; break;
+        case Word::Z: case Word::Blue: index = 2; break;
+        case Word::T: case Word::Filter: index = 3; break;
+        case Word::Transmit: index = 4; break;
+        default: {  // gray: POV-Ray 3.7's weights
+            if (a.dim < 3) fail(n, "'.gray' needs a colour or a 3-vector");
+            return Num::scalar(0.297 * a.v[0] + 0.589 * a.v[1] + 0.114 * a.v[2]);
+        }
+        }
+        if (index >= a.dim)
+            fail(n, describe(a) + " has no " + quote(std::string(".") += wordText(n.word)) + " component");
+        return Num::scalar(a.v[index]);
+    }
+    case NodeKind::Colour: {
+        Num c;
+        c.dim = 5;
+        c.colour = true;
+        std::size_t i = 0;
+        if (n.flags) c = Num::fromColour(evalColour(n[i++]));
+        for (; i < n.count; ++i) {
+            const Node& item = n[i];
+            const Num value = evalNum(item[0]);
+            auto needs = [&](int dim) {
+                if (!value.isFloat() && !(value.colour) && value.dim != dim)
+                    fail(item[0], quote(wordText(item.word)) + " takes a float or a " +
+                                      std::to_string(dim) + "-component vector, found " + describe(value));
+            };
+            auto setAll = [&](std::initializer_list<int> slots) {
+                int k = 0;
+                for (int s : slots) c.v[s] = component(value, value.colour ? s : k++);
+            };
+            switch (item.word) {
+            case Word::Rgb: needs(3); setAll({0, 1, 2}); break;
+            case Word::Rgbf: needs(4); setAll({0, 1, 2, 3}); break;
+            case Word::Rgbt:
+                needs(4);
+                c.v[0] = component(value, 0);
+                c.v[1] = component(value, 1);
+                c.v[2] = component(value, 2);
+                c.v[4] = component(value, value.colour ? 4 : 3);
+                break;
+            case Word::Rgbft: needs(5); setAll({0, 1, 2, 3, 4}); break;
+            default: {
+                if (!value.isFloat())
+                    fail(item[0], quote(wordText(item.word)) + " takes a float, found " +
+                                      describe(value));
+                const int slot = item.word == Word::Red     ? 0
+                                 : item.word == Word::Green ? 1
+                                 : item.word == Word::Blue  ? 2
+                                 : item.word == Word::Filter ? 3
+                                                            : 4;
+                c.v[slot] = value.v[0];
+            }
+            }
+        }
+        return c;
+    }
+    case NodeKind::Call:
+        break;
+    default:
+        fail(n, "this is not an expression");
+    }
+
+    // Functions.
+    const auto args = n.children();
+    auto f = [&](std::size_t i) { return evalFloat(args[i]); };
+    auto check = [&](bool ok, const char* what) {
+        if (!ok) fail(n, std::string(wordText(n.word)) + ": " + what);
+    };
+    switch (n.word) {
+    case Word::Abs: return Num::scalar(std::abs(f(0)));
+    case Word::Sqrt: { const double a = f(0); check(a >= 0, "the argument is negative"); return Num::scalar(std::sqrt(a)); }
+    case Word::Pow: {
+        const double r = std::pow(f(0), f(1));
+        check(std::isfinite(r), "the result is not a finite number");
+        return Num::scalar(r);
+    }
+    case Word::Sin: return Num::scalar(std::sin(f(0)));
+    case Word::Cos: return Num::scalar(std::cos(f(0)));
+    case Word::Tan: return Num::scalar(std::tan(f(0)));
+    case Word::Asin: { const double a = f(0); check(a >= -1 && a <= 1, "the argument is outside [-1, 1]"); return Num::scalar(std::asin(a)); }
+    case Word::Acos: { const double a = f(0); check(a >= -1 && a <= 1, "the argument is outside [-1, 1]"); return Num::scalar(std::acos(a)); }
+    case Word::Atan: return Num::scalar(std::atan(f(0)));
+    case Word::Atan2: return Num::scalar(std::atan2(f(0), f(1)));
+    case Word::Sinh: return Num::scalar(std::sinh(f(0)));
+    case Word::Cosh: return Num::scalar(std::cosh(f(0)));
+    case Word::Tanh: return Num::scalar(std::tanh(f(0)));
+    case Word::Asinh: return Num::scalar(std::asinh(f(0)));
+    case Word::Acosh: { const double a = f(0); check(a >= 1, "the argument is less than 1"); return Num::scalar(std::acosh(a)); }
+    case Word::Atanh: { const double a = f(0); check(a > -1 && a < 1, "the argument is outside (-1, 1)"); return Num::scalar(std::atanh(a)); }
+    case Word::Min: case Word::Max: {
+        double r = f(0);
+        for (std::size_t i = 1; i < args.size(); ++i) r = n.word == Word::Min ? std::min(r, f(i)) : std::max(r, f(i));
+        return Num::scalar(r);
+    }
+    case Word::Mod: { const double b = f(1); check(b != 0, "division by zero"); return Num::scalar(std::fmod(f(0), b)); }
+    case Word::Div: { const double b = f(1); check(b != 0, "division by zero"); return Num::scalar(std::trunc(f(0) / b)); }
+    case Word::Floor: return Num::scalar(std::floor(f(0)));
+    case Word::Ceil: return Num::scalar(std::ceil(f(0)));
+    case Word::Int: return Num::scalar(std::trunc(f(0)));
+    case Word::Sqr: { const double a = f(0); return Num::scalar(a * a); }
+    case Word::Radians: return Num::scalar(f(0) * kPi / 180.0);
+    case Word::Degrees: return Num::scalar(f(0) * 180.0 / kPi);
+    case Word::Exp: return Num::scalar(std::exp(f(0)));
+    case Word::Log: { const double a = f(0); check(a > 0, "the argument is not positive"); return Num::scalar(std::log10(a)); }
+    case Word::Ln: { const double a = f(0); check(a > 0, "the argument is not positive"); return Num::scalar(std::log(a)); }
+    case Word::Vlength: return Num::scalar(glm::length(evalVector(args[0])));
+    case Word::Vnormalize: {
+        const Vec3 a = evalVector(args[0]);
+        check(glm::length(a) > 0, "the vector has zero length");
+        return Num::vector(glm::normalize(a));
+    }
+    case Word::Vcross: return Num::vector(glm::cross(evalVector(args[0]), evalVector(args[1])));
+    case Word::Vdot: return Num::scalar(glm::dot(evalVector(args[0]), evalVector(args[1])));
+    case Word::Vrotate: {
+        const Vec3 a = evalVector(args[0]);
+        return Num::vector(Transform::rotateDegrees(evalVector(args[1])).vector(a));
+    }
+    case Word::VaxisRotate: {
+        // Rodrigues' formula; the sense matches `rotate` about the same axis.
+        const Vec3 a = evalVector(args[0]);
+        const Vec3 axis = evalVector(args[1]);
+        check(glm::length(axis) > 0, "the axis has zero length");
+        const Vec3 k = glm::normalize(axis);
+        const double t = f(2) * kPi / 180.0;
+        return Num::vector(a * std::cos(t) + glm::cross(k, a) * std::sin(t) +
+                           k * glm::dot(k, a) * (1.0 - std::cos(t)));
+    }
+    case Word::Select: {
+        const double a = f(0);
+        if (args.size() == 3) return eval(args[a < 0 ? 1 : 2]);
+        return eval(args[a < 0 ? 1 : a == 0 ? 2 : 3]);
+    }
+    case Word::Concat: {
+        std::string s;
+        for (const Node& a : args) s += evalString(a);
+        return s;
+    }
+    case Word::Str: {
+        // POV-Ray: printf("%*.*f"); a negative width pads with zeros, a
+        // negative precision means six digits.
+        const double value = f(0);
+        const int width = static_cast<int>(f(1));
+        const int precision = static_cast<int>(f(2));
+        const std::string format = std::string("%") + (width < 0 ? "0" : "") + "*.*f";
+        const int w = std::min(std::abs(width), 256);
+        const int p = precision < 0 ? 6 : std::min(precision, 64);
+        const int size = std::snprintf(nullptr, 0, format.c_str(), w, p, value);
+        std::string s(static_cast<std::size_t>(std::max(size, 0)), '\0');
+        std::snprintf(s.data(), s.size() + 1, format.c_str(), w, p, value);
+        return s;
+    }
+    case Word::Chr: {
+        const double c = f(0);
+        check(c >= 1 && c <= 0x10FFFF, "the character code is outside 1 to 0x10FFFF");
+        return utf8(static_cast<std::uint32_t>(c));
+    }
+    case Word::Strlen: return Num::scalar(static_cast<double>(evalString(args[0]).size()));
+    case Word::Val: {
+        const std::string s = evalString(args[0]);
+        std::size_t start = s.find_first_not_of(" \t");
+        if (start == std::string::npos) start = s.size();
+        double v = 0.0;
+        const char* first = s.data() + start;
+        if (start < s.size() && *first == '+') ++first;
+        const auto r = std::from_chars(first, s.data() + s.size(), v);
+        check(r.ec == std::errc(), "the string does not start with a number");
+        return Num::scalar(v);
+    }
+    case Word::Defined: {
+        if (args[0].kind != NodeKind::Name) fail(args[0], "defined() takes an identifier");
+        return Num::scalar(lookup(args[0].id) ? 1.0 : 0.0);
+    }
+    default:
+        fail(n, quote(wordText(n.word)) + " is not a function");
+    }
+}
+
+}  // namespace asos::lang

@@ -1,0 +1,241 @@
+#pragma once
+// The interpreter's inside, shared by interpreter.cpp (files, scopes,
+// directives), evaluate.cpp (expressions) and items.cpp (scene items).
+#include <array>
+#include <deque>
+#include <filesystem>
+#include <memory>
+#include <span>
+#include <string>
+#include <unordered_map>
+#include <variant>
+#include <vector>
+
+#include "asos/lang/ast.hpp"
+#include "asos/lang/interpreter.hpp"
+
+namespace asos::lang {
+
+// POV-Ray's EPSILON: = != <= >= compare within it, and a condition is true
+// when its absolute value exceeds it.
+inline constexpr double kEpsilon = 1e-10;
+
+// A float (dim 1), a 2- to 5-component vector, or a colour (always five
+// components: red, green, blue, filter, transmit).
+struct Num {
+    std::array<double, 5> v{};
+    std::uint8_t dim = 1;
+    bool colour = false;
+
+    bool isFloat() const { return dim == 1 && !colour; }
+    static Num scalar(double x) {
+        Num n;
+        n.v[0] = x;
+        return n;
+    }
+    static Num vector(const Vec3& p) {
+        Num n;
+        n.v = {p.x, p.y, p.z, 0.0, 0.0};
+        n.dim = 3;
+        return n;
+    }
+    static Num fromColour(const Color& c) {
+        Num n;
+        n.v = {c.rgb.x, c.rgb.y, c.rgb.z, c.filter, c.transmit};
+        n.dim = 5;
+        n.colour = true;
+        return n;
+    }
+};
+
+// An object while the scene runs: a shape, a light, or a union of those. Kept
+// as a tree until it is placed in the scene, because POV-Ray resolves a
+// union's texture for its untextured children only then.
+struct ObjectTree {
+    enum class Kind : std::uint8_t { Shape, Light, Union };
+    Kind kind = Kind::Shape;
+    Shape shape;
+    Transform worldFromObject;
+    Light light;
+    std::shared_ptr<const Texture> texture;  // its own; null: inherited or the default
+    bool noShadow = false;
+    bool modified = false;  // a union has had a modifier: no more children
+    AsosOptions asos;
+    std::vector<ObjectTree> children;
+    SourceLoc loc;
+};
+
+struct CameraValue {
+    Camera camera;
+    Vec3 sky{0.0, 1.0, 0.0};
+};
+
+struct Poison {};  // the value of a declaration whose right side failed (already reported)
+
+using Value = std::variant<Num, std::string, std::shared_ptr<const ObjectTree>,
+                           std::shared_ptr<const Pigment>, std::shared_ptr<const Finish>,
+                           std::shared_ptr<const Texture>, std::shared_ptr<const CameraValue>, Poison>;
+
+// The shortest text that reads back as `v` ("0.1", "1e+300"; -0 as "0").
+std::string formatNumber(double v);
+
+// 'word', for messages.
+inline std::string quote(std::string_view word) {
+    std::string s;
+    s.reserve(word.size() + 2);
+    s += '\'';
+    s += word;
+    s += '\'';
+    return s;
+}
+
+// "a float", "a vector", "a string", … for messages.
+std::string describe(const Value& v);
+std::string describe(const Num& n);
+
+// The current statement is dropped; its error has been reported.
+struct Abandon {};
+// Interpretation stops (#error, too many errors, a syntax error in an include).
+struct Stop {};
+
+// A non-owning reference to a callable, for the entry handlers of blocks.
+template <typename Signature>
+class FunctionRef;
+template <typename R, typename... Args>
+class FunctionRef<R(Args...)> {
+public:
+    template <typename F>
+    FunctionRef(F& f) : object_(&f), call_([](void* o, Args... a) -> R { return (*static_cast<F*>(o))(a...); }) {}
+    R operator()(Args... a) const { return call_(object_, a...); }
+
+private:
+    void* object_;
+    R (*call_)(void*, Args...);
+};
+using EntryHandler = FunctionRef<void(const Node&)>;
+
+// Objects as they arrive, in chunks that grow to ~50 MB: big enough that the
+// allocator maps each one separately and returns it to the system when it is
+// freed, so that moving them into the final vector never holds two copies.
+class ObjectStore {
+public:
+    Object& add();
+    std::size_t size() const { return size_; }
+    std::vector<Object> take();
+
+private:
+    std::vector<std::vector<Object>> chunks_;
+    std::size_t size_ = 0;
+};
+
+// Equal textures shared: a scene that writes `pigment { Red }` in a million
+// objects stores one texture, not a million (each is 432 bytes).
+class TextureInterner {
+public:
+    std::shared_ptr<const Texture> intern(const std::shared_ptr<const Texture>& texture);
+
+private:
+    std::unordered_map<std::uint64_t, std::vector<std::shared_ptr<const Texture>>> byHash_;
+    std::shared_ptr<const Texture> lastInput_;  // held, so its address cannot be reused
+    std::shared_ptr<const Texture> lastInterned_;
+};
+
+class Interpreter {
+public:
+    Interpreter(const InterpreterOptions& options, Diagnostics& diagnostics);
+
+    std::optional<SceneDescription> runFile(const std::filesystem::path& path);
+    std::optional<SceneDescription> runText(std::string text, const std::string& fileName);
+
+    // --- used across the implementation files ---
+    struct SourceFile {
+        std::shared_ptr<const std::string> name;
+        std::string text;
+        std::filesystem::path path;  // canonical when it came from disk; empty for text
+        std::vector<std::uint32_t> lineStarts;  // built on the first error
+    };
+
+    SourceLoc locOf(const Node& n) const {
+        return SourceLoc{file_->name, static_cast<int>(n.line), static_cast<int>(n.column)};
+    }
+    void report(Severity severity, const Node& at, std::string message, bool withSource = true);
+    void error(const Node& at, std::string message) { report(Severity::Error, at, std::move(message)); }
+    [[noreturn]] void fail(const Node& at, std::string message) {
+        error(at, std::move(message));
+        throw Abandon{};
+    }
+    const std::string& nameOf(const Node& n) const { return names_.name(n.id); }
+
+    // evaluate.cpp
+    Value eval(const Node& n);
+    Num evalNum(const Node& n);
+    double evalFloat(const Node& n);
+    int evalInt(const Node& n, int min);
+    bool evalBool(const Node& n);
+    Vec3 evalVector(const Node& n);
+    Color evalColour(const Node& n);
+    Color toColour(const Num& value, const Node& at);
+    std::string evalString(const Node& n);
+    const Value* lookup(std::uint32_t id) const;
+
+    // items.cpp
+    void runTopEntry(const Node& n);
+    ObjectTree evalObject(const Node& block);
+    std::shared_ptr<const Pigment> evalPigment(const Node& block, const Pigment& start);
+    std::shared_ptr<const Finish> evalFinish(const Node& block, const Finish& start);
+    std::shared_ptr<const Texture> evalTexture(const Node& block);
+    CameraValue evalCamera(const Node& block);
+    Value evalDeclarable(const Node& n);
+
+    // interpreter.cpp
+    void runEntries(std::span<const Node> entries, EntryHandler handle);
+
+private:
+    std::optional<SceneDescription> run(SourceFile& file);
+    void runDirective(const Node& n, EntryHandler handle);
+    void runSequence(const Node& seq, EntryHandler handle);
+    void runInclude(const Node& n, EntryHandler handle);
+    void declare(const Node& nameNode, Value value, bool local);
+    void applyDefines();
+    bool truth(const Node& condition);
+    void countIteration(const Node& at);
+    std::optional<SceneDescription> finish();
+
+    // items.cpp
+    void placeObject(ObjectTree&& tree);
+    void flatten(ObjectTree& node, const std::shared_ptr<const Texture>& inherited,
+                 bool inheritedNoShadow, const AsosOptions& inheritedAsos);
+    void applyObjectModifier(ObjectTree& tree, const Node& n, bool isShape);
+    void applyTransform(ObjectTree& tree, const Transform& m);
+    Light evalLight(const Node& block);
+    void applyGlobalSettings(const Node& block);
+    AsosOptions evalAsos(const Node& block, AsosOptions start);
+    Transform evalTransformItem(const Node& item);
+
+    const InterpreterOptions& options_;
+    Diagnostics& diagnostics_;
+    std::size_t errorCount_ = 0;
+    bool quiet_ = false;  // evaluating a -D value: failures mean "a string", not errors
+    std::size_t iterations_ = 0;
+
+    NameTable names_;
+    // scopes_[0] is global; each #include adds one for its #local names.
+    std::vector<std::unordered_map<std::uint32_t, Value>> scopes_;
+    double version_ = 3.7;
+
+    std::deque<SourceFile> files_;  // every file read, kept for error lines
+    SourceFile* file_ = nullptr;    // the file being run
+    const Ast* ast_ = nullptr;      // its tree (for string literals)
+    std::vector<std::filesystem::path> includeStack_;
+
+    SceneDescription scene_;
+    ObjectStore objects_;
+    TextureInterner textures_;
+    std::shared_ptr<const Texture> defaultTexture_;
+    bool cameraSeen_ = false;
+};
+
+// Transforms: compose without touching exact values when one side is the identity.
+Transform compose(const Transform& outer, const Transform& inner);
+
+}  // namespace asos::lang

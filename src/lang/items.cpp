@@ -1,0 +1,633 @@
+// Scene items: objects (with POV-Ray's texture and transform rules), lights,
+// the camera, pigments, finishes, textures, global settings.
+//
+// Transform rule: a transform applies to what the object has so far: its
+// shape and the texture it already carries. A pigment written after a
+// transform is not moved by it. So an object's pattern transform is "the
+// transforms written after its texture, then the texture's own".
+//
+// Union rule: the union's transforms apply to every member; its texture goes,
+// when the union is placed in the scene, to the members that have none.
+#include <cmath>
+
+#include "src/lang/interpreter_impl.hpp"
+
+namespace asos::lang {
+
+namespace {
+
+bool isObjectBlock(const Node& n) {
+    if (n.kind != NodeKind::Block) return false;
+    switch (n.word) {
+    case Word::Sphere: case Word::Box: case Word::Cone: case Word::Cylinder: case Word::Disc:
+    case Word::Polygon: case Word::Plane: case Word::Union: case Word::Object:
+    case Word::LightSource:
+        return true;
+    default:
+        return false;
+    }
+}
+
+bool isTransform(const Node& n) {
+    return n.kind == NodeKind::Item && (n.word == Word::Translate || n.word == Word::Rotate ||
+                                        n.word == Word::Scale || n.word == Word::Matrix);
+}
+
+AsosOptions inherit(const AsosOptions& own, const AsosOptions& outer) {
+    AsosOptions r = own;
+    if (!r.eps) r.eps = outer.eps;
+    if (!r.maxLevel) r.maxLevel = outer.maxLevel;
+    if (!r.jitter) r.jitter = outer.jitter;
+    return r;
+}
+
+constexpr Color kCheckerBlue{Vec3(0.0, 0.0, 1.0), 0.0, 0.0};  // POV-Ray's checker defaults
+constexpr Color kCheckerGreen{Vec3(0.0, 1.0, 0.0), 0.0, 0.0};
+
+}  // namespace
+
+// --- the top level ------------------------------------------------------------------------
+
+void Interpreter::runTopEntry(const Node& n) {
+    switch (n.word) {
+    case Word::Camera:
+        scene_.camera = evalCamera(n).camera;
+        return;
+    case Word::GlobalSettings:
+        applyGlobalSettings(n);
+        return;
+    case Word::Background:
+        scene_.background = evalColour(n[0]);
+        return;
+    default:
+        if (!isObjectBlock(n)) fail(n, "this is not a scene item");
+        placeObject(evalObject(n));
+    }
+}
+
+Value Interpreter::evalDeclarable(const Node& n) {
+    if (n.kind != NodeKind::Block) return eval(n);
+    switch (n.word) {
+    case Word::Camera: return std::make_shared<const CameraValue>(evalCamera(n));
+    case Word::Pigment: return evalPigment(n, Pigment{});
+    case Word::Finish: return evalFinish(n, Finish{});
+    case Word::Texture: return evalTexture(n);
+    default: return std::make_shared<const ObjectTree>(evalObject(n));
+    }
+}
+
+void Interpreter::placeObject(ObjectTree&& tree) { flatten(tree, nullptr, false, AsosOptions{}); }
+
+// Consumes `node` (moves its parts into the scene).
+void Interpreter::flatten(ObjectTree& node, const std::shared_ptr<const Texture>& inherited,
+                          bool inheritedNoShadow, const AsosOptions& inheritedAsos) {
+    const std::shared_ptr<const Texture>& texture = node.texture ? node.texture : inherited;
+    const bool noShadow = inheritedNoShadow || node.noShadow;
+    const AsosOptions asos = inherit(node.asos, inheritedAsos);
+    switch (node.kind) {
+    case ObjectTree::Kind::Shape: {
+        Object& o = objects_.add();
+        o.shape = std::move(node.shape);
+        o.worldFromObject = node.worldFromObject;
+        o.texture = texture ? textures_.intern(texture) : defaultTexture_;
+        o.noShadow = noShadow;
+        o.asos = asos;
+        o.loc = std::move(node.loc);
+        return;
+    }
+    case ObjectTree::Kind::Light: {
+        Light& l = scene_.lights.emplace_back(node.light);
+        l.asos = inherit(node.light.asos, asos);
+        return;
+    }
+    case ObjectTree::Kind::Union:
+        for (ObjectTree& child : node.children) flatten(child, texture, noShadow, asos);
+        return;
+    }
+}
+
+// --- objects ----------------------------------------------------------------------------------
+
+ObjectTree Interpreter::evalObject(const Node& block) {
+    ObjectTree t;
+    t.loc = locOf(block);
+    bool bad = false;
+    auto invalid = [&](const Node& at, std::string message) {
+        error(at, std::move(message));
+        bad = true;
+    };
+    const auto args = block.children();
+
+    switch (block.word) {
+    case Word::Sphere: {
+        SphereShape s{evalVector(args[0]), evalFloat(args[1])};
+        if (!(s.radius > 0)) invalid(args[1], "the radius of a sphere must be positive, not " + formatNumber(s.radius));
+        t.shape = s;
+        break;
+    }
+    case Word::Box:
+        t.shape = BoxShape{evalVector(args[0]), evalVector(args[1])};
+        break;
+    case Word::Cone: {
+        ConeShape c{evalVector(args[0]), evalFloat(args[1]), evalVector(args[2]), evalFloat(args[3]), false};
+        if (c.baseRadius < 0) invalid(args[1], "the base radius of a cone must not be negative, not " + formatNumber(c.baseRadius));
+        if (c.capRadius < 0) invalid(args[3], "the cap radius of a cone must not be negative, not " + formatNumber(c.capRadius));
+        if (c.baseRadius == 0 && c.capRadius == 0) invalid(args[3], "a cone needs a radius that is not zero");
+        if (c.base == c.cap) invalid(args[2], "the base and cap points of a cone are the same point");
+        t.shape = c;
+        break;
+    }
+    case Word::Cylinder: {
+        CylinderShape c{evalVector(args[0]), evalVector(args[1]), evalFloat(args[2]), false};
+        if (!(c.radius > 0)) invalid(args[2], "the radius of a cylinder must be positive, not " + formatNumber(c.radius));
+        if (c.base == c.cap) invalid(args[1], "the base and cap points of a cylinder are the same point");
+        t.shape = c;
+        break;
+    }
+    case Word::Disc: {
+        DiscShape d{evalVector(args[0]), evalVector(args[1]), evalFloat(args[2]),
+                    block.flags == 4 ? evalFloat(args[3]) : 0.0};
+        if (d.normal == Vec3(0.0)) invalid(args[1], "the normal of a disc must not be zero");
+        if (!(d.radius > 0)) invalid(args[2], "the radius of a disc must be positive, not " + formatNumber(d.radius));
+        if (d.holeRadius < 0 || (d.radius > 0 && d.holeRadius >= d.radius))
+            invalid(args[3], "the hole radius of a disc must be at least 0 and less than its radius " +
+                                 formatNumber(d.radius) + ", not " + formatNumber(d.holeRadius));
+        t.shape = d;
+        break;
+    }
+    case Word::Polygon: {
+        const double count = evalFloat(args[0]);
+        PolygonShape p;
+        const auto points = args[1].children();
+        p.points.reserve(points.size());
+        for (const Node& point : points) p.points.push_back(evalVector(point));
+        if (count != std::floor(count) || count < 3) {
+            invalid(args[0], "a polygon needs a whole number of at least 3 points, not " + formatNumber(count));
+        } else if (static_cast<double>(p.points.size()) != count) {
+            invalid(args[0], "the polygon announces " + formatNumber(count) + " points but lists " +
+                                 std::to_string(p.points.size()));
+        } else {
+            // All points in one plane, and not all on one line.
+            const Vec3 origin = p.points[0];
+            Vec3 far = origin;
+            for (const Vec3& q : p.points)
+                if (glm::length(q - origin) > glm::length(far - origin)) far = q;
+            const double size = glm::length(far - origin);
+            Vec3 normal(0.0);
+            for (const Vec3& q : p.points) {
+                const Vec3 c = glm::cross(far - origin, q - origin);
+                if (glm::length(c) > glm::length(normal)) normal = c;
+            }
+            if (size == 0 || glm::length(normal) <= 1e-12 * size * size) {
+                invalid(args[0], "the points of the polygon are all on one line");
+            } else {
+                normal = glm::normalize(normal);
+                for (std::size_t i = 0; i < p.points.size(); ++i) {
+                    const double off = std::abs(glm::dot(p.points[i] - origin, normal));
+                    if (off > 1e-9 * size) {
+                        invalid(points[i], "the points of the polygon are not in one plane: point " +
+                                               std::to_string(i + 1) + " is " + formatNumber(off) +
+                                               " away from it");
+                        break;
+                    }
+                }
+            }
+        }
+        t.shape = std::move(p);
+        break;
+    }
+    case Word::Plane: {
+        PlaneShape p{evalVector(args[0]), evalFloat(args[1])};
+        if (p.normal == Vec3(0.0)) invalid(args[0], "the normal of a plane must not be zero");
+        t.shape = p;
+        break;
+    }
+    case Word::LightSource:
+        t.kind = ObjectTree::Kind::Light;
+        t.light = evalLight(block);
+        return t;
+    case Word::Union: {
+        t.kind = ObjectTree::Kind::Union;
+        auto entry = [&](const Node& n) {
+            if (isObjectBlock(n)) {
+                if (t.modified)
+                    fail(n, "the objects of a union come before its modifiers");
+                t.children.push_back(evalObject(n));
+            } else {
+                t.modified = true;
+                applyObjectModifier(t, n, false);
+            }
+        };
+        runEntries(args, EntryHandler(entry));
+        return t;
+    }
+    case Word::Object: {
+        const Node& base = args[0];
+        if (base.kind == NodeKind::Name) {
+            const Value v = eval(base);
+            const auto* o = std::get_if<std::shared_ptr<const ObjectTree>>(&v);
+            if (!o) fail(base, "'" + nameOf(base) + "' is " + describe(v) + ", not an object");
+            t = **o;
+        } else {
+            t = evalObject(base);
+        }
+        break;
+    }
+    default:
+        fail(block, "this is not an object");
+    }
+
+    const bool isShape = t.kind == ObjectTree::Kind::Shape;
+    auto modifier = [&](const Node& n) { applyObjectModifier(t, n, isShape); };
+    runEntries(args.subspan(block.flags), EntryHandler(modifier));
+    if (bad) throw Abandon{};
+    return t;
+}
+
+void Interpreter::applyTransform(ObjectTree& tree, const Transform& m) {
+    switch (tree.kind) {
+    case ObjectTree::Kind::Shape:
+        tree.worldFromObject = compose(m, tree.worldFromObject);
+        break;
+    case ObjectTree::Kind::Light:
+        tree.light.position = m.point(tree.light.position);
+        if (tree.light.area) {
+            tree.light.area->axis1 = m.vector(tree.light.area->axis1);
+            tree.light.area->axis2 = m.vector(tree.light.area->axis2);
+        }
+        break;
+    case ObjectTree::Kind::Union:
+        for (ObjectTree& child : tree.children) applyTransform(child, m);
+        break;
+    }
+    if (tree.texture) {
+        auto moved = std::make_shared<Texture>(*tree.texture);
+        moved->pigment.worldFromPattern = compose(m, moved->pigment.worldFromPattern);
+        tree.texture = std::move(moved);
+    }
+}
+
+Transform Interpreter::evalTransformItem(const Node& item) {
+    switch (item.word) {
+    case Word::Translate:
+        return Transform::translate(evalVector(item[0]));
+    case Word::Rotate:
+        return Transform::rotateDegrees(evalVector(item[0]));
+    case Word::Scale: {
+        const Vec3 s = evalVector(item[0]);
+        if (s.x == 0 || s.y == 0 || s.z == 0)
+            fail(item[0], "scale by zero (<" + formatNumber(s.x) + ", " + formatNumber(s.y) + ", " +
+                              formatNumber(s.z) + ">) flattens everything");
+        return Transform::scale(s);
+    }
+    default: {
+        double m[12];
+        for (int i = 0; i < 12; ++i) m[i] = evalFloat(item[i]);
+        const double det = m[0] * (m[4] * m[8] - m[5] * m[7]) - m[1] * (m[3] * m[8] - m[5] * m[6]) +
+                           m[2] * (m[3] * m[7] - m[4] * m[6]);
+        if (det == 0 || !std::isfinite(det)) fail(item, "this matrix cannot be inverted");
+        return Transform::fromPovMatrix(m);
+    }
+    }
+}
+
+void Interpreter::applyObjectModifier(ObjectTree& tree, const Node& n, bool isShape) {
+    if (isTransform(n)) {
+        applyTransform(tree, evalTransformItem(n));
+        return;
+    }
+    const bool isLight = tree.kind == ObjectTree::Kind::Light;
+    switch (n.word) {
+    case Word::Pigment: case Word::Finish: case Word::Texture: {
+        if (isLight) fail(n, std::string("a light_source has no ") += wordText(n.word));
+        if (n.word == Word::Texture) {
+            if (tree.texture)
+                fail(n, "this object already has a texture: layered textures are not supported by asos");
+            tree.texture = evalTexture(n);
+            return;
+        }
+        // pigment {} and finish {} change the texture the object has, or a
+        // copy of the default one.
+        auto texture = std::make_shared<Texture>(tree.texture ? *tree.texture : Texture{});
+        if (n.word == Word::Pigment)
+            texture->pigment = *evalPigment(n, texture->pigment);
+        else
+            texture->finish = *evalFinish(n, texture->finish);
+        tree.texture = std::move(texture);
+        return;
+    }
+    case Word::NoShadow:
+        tree.noShadow = true;
+        return;
+    case Word::Open:
+        if (isShape) {
+            if (auto* cone = std::get_if<ConeShape>(&tree.shape)) {
+                cone->open = true;
+                return;
+            }
+            if (auto* cylinder = std::get_if<CylinderShape>(&tree.shape)) {
+                cylinder->open = true;
+                return;
+            }
+        }
+        fail(n, "'open' applies only to a cone or a cylinder");
+    case Word::Asos:
+        if (isLight)
+            tree.light.asos = evalAsos(n, tree.light.asos);
+        else
+            tree.asos = evalAsos(n, tree.asos);
+        return;
+    default:
+        fail(n, "this is not an object modifier");
+    }
+}
+
+// --- pigments, finishes, textures ---------------------------------------------------------
+
+std::shared_ptr<const Pigment> Interpreter::evalPigment(const Node& block, const Pigment& start) {
+    auto p = std::make_shared<Pigment>(start);
+    auto entry = [&](const Node& n) {
+        if (isTransform(n)) {
+            p->worldFromPattern = compose(evalTransformItem(n), p->worldFromPattern);
+        } else if (n.kind == NodeKind::Item && n.word == Word::Checker) {
+            p->kind = Pigment::Kind::Checker;
+            p->color1 = n.count > 0 ? evalColour(n[0]) : kCheckerBlue;
+            p->color2 = n.count > 1 ? evalColour(n[1]) : kCheckerGreen;
+        } else {
+            const Value v = eval(n);
+            if (const auto* declared = std::get_if<std::shared_ptr<const Pigment>>(&v)) {
+                *p = **declared;
+            } else if (const auto* num = std::get_if<Num>(&v)) {
+                p->kind = Pigment::Kind::Solid;
+                p->color1 = toColour(*num, n);
+                p->color2 = Color{};
+            } else {
+                fail(n, "expected a colour or a pigment, found " + describe(v));
+            }
+        }
+    };
+    runEntries(block.children(), EntryHandler(entry));
+    return p;
+}
+
+std::shared_ptr<const Finish> Interpreter::evalFinish(const Node& block, const Finish& start) {
+    auto f = std::make_shared<Finish>(start);
+    auto entry = [&](const Node& n) {
+        if (n.kind == NodeKind::Name) {
+            const Value v = eval(n);
+            const auto* declared = std::get_if<std::shared_ptr<const Finish>>(&v);
+            if (!declared) fail(n, "'" + nameOf(n) + "' is " + describe(v) + ", not a finish");
+            *f = **declared;
+            return;
+        }
+        switch (n.word) {
+        case Word::Ambient: f->ambient = evalColour(n[0]).rgb; break;
+        case Word::Diffuse: f->diffuse = evalFloat(n[0]); break;
+        case Word::Brilliance: f->brilliance = evalFloat(n[0]); break;
+        case Word::Phong: f->phong = evalFloat(n[0]); break;
+        case Word::PhongSize: f->phongSize = evalFloat(n[0]); break;
+        case Word::Specular: f->specular = evalFloat(n[0]); break;
+        case Word::Roughness: {
+            const double r = evalFloat(n[0]);
+            if (!(r > 0)) fail(n[0], "roughness must be positive, not " + formatNumber(r));
+            f->roughness = r;
+            break;
+        }
+        case Word::Reflection: f->reflection = evalColour(n[0]).rgb; break;
+        default: fail(n, "this is not a finish item");
+        }
+    };
+    runEntries(block.children(), EntryHandler(entry));
+    return f;
+}
+
+std::shared_ptr<const Texture> Interpreter::evalTexture(const Node& block) {
+    auto t = std::make_shared<Texture>();
+    auto entry = [&](const Node& n) {
+        if (n.kind == NodeKind::Name) {
+            const Value v = eval(n);
+            const auto* declared = std::get_if<std::shared_ptr<const Texture>>(&v);
+            if (!declared) fail(n, "'" + nameOf(n) + "' is " + describe(v) + ", not a texture");
+            *t = **declared;
+        } else if (isTransform(n)) {
+            t->pigment.worldFromPattern = compose(evalTransformItem(n), t->pigment.worldFromPattern);
+        } else if (n.word == Word::Pigment) {
+            t->pigment = *evalPigment(n, t->pigment);
+        } else if (n.word == Word::Finish) {
+            t->finish = *evalFinish(n, t->finish);
+        } else {
+            fail(n, "this is not a texture item");
+        }
+    };
+    runEntries(block.children(), EntryHandler(entry));
+    return t;
+}
+
+// --- lights -----------------------------------------------------------------------------------
+
+Light Interpreter::evalLight(const Node& block) {
+    Light l;
+    l.loc = locOf(block);
+    const auto args = block.children();
+    const Value first = eval(args[0]);
+    bool fromIdentifier = false;
+    if (const auto* o = std::get_if<std::shared_ptr<const ObjectTree>>(&first)) {
+        if ((*o)->kind != ObjectTree::Kind::Light)
+            fail(args[0], "expected the position of the light or a declared light_source, found an object");
+        l = (*o)->light;
+        l.loc = locOf(block);
+        fromIdentifier = true;
+    } else if (std::holds_alternative<Num>(first)) {
+        l.position = evalVector(args[0]);
+    } else {
+        fail(args[0], "expected the position of the light, found " + describe(first));
+    }
+    if (block.flags >= 2)
+        l.color = evalColour(args[1]).rgb;
+    else if (!fromIdentifier)
+        fail(block, "a light_source needs a colour after its position");
+
+    // adaptive, jitter, circular and orient belong to the area light; POV-Ray
+    // accepts them before or after area_light.
+    AreaLight pending = l.area.value_or(AreaLight{});
+    bool areaFlags = false;
+    auto entry = [&](const Node& n) {
+        if (isTransform(n)) {
+            const Transform m = evalTransformItem(n);
+            l.position = m.point(l.position);
+            if (l.area) {
+                l.area->axis1 = m.vector(l.area->axis1);
+                l.area->axis2 = m.vector(l.area->axis2);
+            }
+            return;
+        }
+        switch (n.word) {
+        case Word::AreaLight: {
+            AreaLight a = pending;
+            a.axis1 = evalVector(n[0]);
+            a.axis2 = evalVector(n[1]);
+            a.size1 = evalInt(n[2], 1);
+            a.size2 = evalInt(n[3], 1);
+            l.area = a;
+            break;
+        }
+        case Word::Adaptive: pending.adaptive = evalInt(n[0], 0); areaFlags = true; break;
+        case Word::Jitter: pending.jitter = true; areaFlags = true; break;
+        case Word::Circular: pending.circular = true; areaFlags = true; break;
+        case Word::Orient: pending.orient = true; areaFlags = true; break;
+        case Word::FadeDistance: {
+            const double d = evalFloat(n[0]);
+            if (!(d > 0)) fail(n[0], "fade_distance must be positive, not " + formatNumber(d));
+            l.fadeDistance = d;
+            break;
+        }
+        case Word::FadePower: {
+            const double p = evalFloat(n[0]);
+            if (p < 0) fail(n[0], "fade_power must not be negative, not " + formatNumber(p));
+            l.fadePower = p;
+            break;
+        }
+        case Word::Shadowless: l.shadowless = true; break;
+        case Word::Asos: l.asos = evalAsos(n, l.asos); break;
+        default: fail(n, "this is not a light_source item");
+        }
+        if (l.area) {
+            l.area->adaptive = pending.adaptive;
+            l.area->jitter = pending.jitter;
+            l.area->circular = pending.circular;
+            l.area->orient = pending.orient;
+        }
+    };
+    runEntries(args.subspan(block.flags), EntryHandler(entry));
+    if (areaFlags && !l.area)
+        report(Severity::Warning, block, "adaptive, jitter, circular and orient have no effect without area_light");
+    return l;
+}
+
+// --- camera -------------------------------------------------------------------------------------
+
+CameraValue Interpreter::evalCamera(const Node& block) {
+    // POV-Ray 3.7: items are gathered in any order, then angle sets the length
+    // of direction, look_at turns the camera (keeping the lengths of direction,
+    // right and up, and the handedness), and last the transforms apply.
+    CameraValue cv;
+    cv.camera.loc = locOf(block);
+    std::optional<Vec3> lookAt;
+    std::optional<double> angle;
+    const Node* angleNode = nullptr;
+    const Node* lookAtNode = nullptr;
+    Transform transform;
+    auto entry = [&](const Node& n) {
+        if (n.kind == NodeKind::Name) {
+            const Value v = eval(n);
+            const auto* declared = std::get_if<std::shared_ptr<const CameraValue>>(&v);
+            if (!declared) fail(n, "'" + nameOf(n) + "' is " + describe(v) + ", not a camera");
+            cv = **declared;
+            cv.camera.loc = locOf(block);
+            return;
+        }
+        if (isTransform(n)) {
+            transform = compose(evalTransformItem(n), transform);
+            return;
+        }
+        Camera& c = cv.camera;
+        switch (n.word) {
+        case Word::Perspective: c.projection = Camera::Projection::Perspective; break;
+        case Word::Orthographic: c.projection = Camera::Projection::Orthographic; break;
+        case Word::Location: c.location = evalVector(n[0]); break;
+        case Word::Direction: c.direction = evalVector(n[0]); break;
+        case Word::Right: c.right = evalVector(n[0]); break;
+        case Word::Up: c.up = evalVector(n[0]); break;
+        case Word::Sky: cv.sky = evalVector(n[0]); break;
+        case Word::LookAt: lookAt = evalVector(n[0]); lookAtNode = &n; break;
+        case Word::Angle: angle = evalFloat(n[0]); angleNode = &n; break;
+        default: fail(n, "this is not a camera item");
+        }
+    };
+    runEntries(block.children(), EntryHandler(entry));
+
+    Camera& c = cv.camera;
+    if (glm::length(c.direction) == 0) fail(block, "the camera's direction must not be zero");
+    if (glm::length(c.right) == 0) fail(block, "the camera's right vector must not be zero");
+    if (glm::length(c.up) == 0) fail(block, "the camera's up vector must not be zero");
+    if (angle) {
+        if (c.projection == Camera::Projection::Orthographic)
+            fail(*angleNode, "'angle' with an orthographic camera is not supported by asos; size the view with right and up");
+        if (!(*angle > 0 && *angle < 180))
+            fail((*angleNode)[0], "the camera angle must be between 0 and 180 degrees, not " + formatNumber(*angle));
+        c.direction = glm::normalize(c.direction) *
+                      (0.5 * glm::length(c.right) / std::tan(*angle * kPi / 360.0));
+    }
+    if (lookAt) {
+        const double directionLength = glm::length(c.direction);
+        const double rightLength = glm::length(c.right);
+        const double upLength = glm::length(c.up);
+        const double handedness = glm::dot(glm::cross(c.up, c.direction), c.right);
+        const Vec3 toTarget = *lookAt - c.location;
+        if (glm::length(toTarget) == 0)
+            fail((*lookAtNode)[0], "the camera looks at its own location");
+        const Vec3 direction = glm::normalize(toTarget);
+        const Vec3 side = glm::cross(cv.sky, direction);
+        if (glm::length(side) == 0)
+            fail((*lookAtNode)[0], "the camera looks along its sky vector: no way to tell up");
+        const Vec3 right = glm::normalize(side);
+        c.direction = direction * directionLength;
+        c.right = right * (handedness > 0 ? rightLength : -rightLength);
+        c.up = glm::cross(direction, right) * upLength;
+    }
+    if (!transform.isIdentity()) {
+        c.location = transform.point(c.location);
+        c.direction = transform.vector(c.direction);
+        c.right = transform.vector(c.right);
+        c.up = transform.vector(c.up);
+        cv.sky = transform.vector(cv.sky);
+    }
+    return cv;
+}
+
+// --- global settings --------------------------------------------------------------------------
+
+void Interpreter::applyGlobalSettings(const Node& block) {
+    GlobalSettings& g = scene_.globals;
+    auto entry = [&](const Node& n) {
+        switch (n.word) {
+        case Word::AssumedGamma: {
+            const double v = evalFloat(n[0]);
+            if (!(v > 0)) fail(n[0], "assumed_gamma must be positive, not " + formatNumber(v));
+            g.assumedGamma = v;
+            break;
+        }
+        case Word::MaxTraceLevel: g.maxTraceLevel = evalInt(n[0], 1); break;
+        case Word::AmbientLight: g.ambientLight = evalColour(n[0]).rgb; break;
+        case Word::Asos: g.asos = evalAsos(n, g.asos); break;
+        default: fail(n, "this is not a global setting");
+        }
+    };
+    runEntries(block.children(), EntryHandler(entry));
+}
+
+AsosOptions Interpreter::evalAsos(const Node& block, AsosOptions start) {
+    auto entry = [&](const Node& n) {
+        switch (n.word) {
+        case Word::Eps: {
+            const double e = evalFloat(n[0]);
+            if (!(e > 0) || !std::isfinite(e)) fail(n[0], "eps must be positive, not " + formatNumber(e));
+            start.eps = e;
+            break;
+        }
+        case Word::Max: {
+            const double m = evalFloat(n[0]);
+            if (!(m >= 0) || m != std::floor(m) || m > 2147483647.0)
+                fail(n[0], "max must be a whole number, at least 0, not " + formatNumber(m));
+            start.maxLevel = static_cast<int>(m);
+            break;
+        }
+        case Word::Jitter: start.jitter = evalBool(n[0]); break;
+        default: fail(n, "this is not an asos option");
+        }
+    };
+    runEntries(block.children(), EntryHandler(entry));
+    return start;
+}
+
+}  // namespace asos::lang

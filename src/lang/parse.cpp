@@ -1,0 +1,730 @@
+// The one translation unit that includes PEGTL: grammar/ plus the actions
+// that turn matches into syntax nodes. Actions only build data. The grammar
+// commits (must) right after the token that starts a construct, so an action
+// never fires on a path that is later abandoned.
+#include "asos/lang/parse.hpp"
+
+#include <charconv>
+#include <string>
+#include <vector>
+
+#include <tao/pegtl.hpp>
+#include <tao/pegtl/contrib/limit_depth.hpp>
+
+#include "grammar/errors.hpp"
+
+namespace asos::lang {
+
+namespace {
+
+namespace pegtl = tao::pegtl;
+namespace g = asos::grammar;
+
+// Deeper nesting (parentheses, unary operators, objects, directives) is
+// refused rather than risking the stack: POV-Ray scenes nest a dozen deep.
+constexpr std::size_t kMaxNesting = 200;
+
+// Thrown by an action: a construct we refuse, with its final message.
+struct Rejection {
+    std::string message;
+    std::size_t line = 0;
+    std::size_t column = 0;
+};
+
+struct Pos {
+    std::uint32_t line = 0;
+    std::uint32_t column = 0;
+};
+
+template <typename Input>
+Pos posOf(const Input& in) {
+    const auto& it = in.iterator();
+    return {static_cast<std::uint32_t>(it.line), static_cast<std::uint32_t>(it.column)};
+}
+
+bool isWordChar(char c) {
+    return (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || c == '_' || (c >= '0' && c <= '9');
+}
+
+// The identifier a match starts with (tokens carry their trailing space).
+std::string_view leadingWord(std::string_view s) {
+    std::size_t n = 0;
+    while (n < s.size() && isWordChar(s[n])) ++n;
+    return s.substr(0, n);
+}
+
+// The word after '#' (and any blanks) in a directive's match.
+std::string_view directiveWord(std::string_view s) {
+    std::size_t i = 1;
+    while (i < s.size() && (s[i] == ' ' || s[i] == '\t')) ++i;
+    return leadingWord(s.substr(i));
+}
+
+template <typename Input>
+[[noreturn]] void reject(const Input& in, std::string message) {
+    const auto& it = in.iterator();
+    throw Rejection{std::move(message), it.line, it.column};
+}
+
+std::string fillWord(std::string_view pattern, std::string_view word) {
+    std::string out(pattern);
+    if (auto at = out.find("{}"); at != std::string::npos) out.replace(at, 2, word);
+    return out;
+}
+
+// Builds the tree bottom-up: finished nodes wait on a stack; a frame marks
+// where the children of a construct with a variable number of them begin.
+class Builder {
+public:
+    Builder(Ast& ast, NameTable& names) : ast_(ast), names_(names) { stack_.reserve(1024); }
+
+    struct Frame {
+        std::size_t start = 0;
+        Word word = Word::None;
+        int positional = 0;
+        bool flag = false;
+    };
+
+    void push(const Node& n) { stack_.push_back(n); }
+
+    Node leaf(NodeKind kind, Pos p) const {
+        Node n;
+        n.kind = kind;
+        n.line = p.line;
+        n.column = p.column;
+        return n;
+    }
+
+    void pushNumber(double v, Pos p) {
+        Node n = leaf(NodeKind::Number, p);
+        n.number = v;
+        push(n);
+    }
+    void pushName(std::string_view name, Pos p) {
+        Node n = leaf(NodeKind::Name, p);
+        n.id = names_.intern(name);
+        push(n);
+    }
+    void pushString(std::string s, Pos p) {
+        Node n = leaf(NodeKind::String, p);
+        n.id = static_cast<std::uint32_t>(ast_.strings.size());
+        ast_.strings.push_back(std::move(s));
+        push(n);
+    }
+    void pushWord(NodeKind kind, Word w, Pos p) {
+        Node n = leaf(kind, p);
+        n.word = w;
+        push(n);
+    }
+
+    // Replaces the top `count` nodes by one node that owns them.
+    void reduce(NodeKind kind, Word w, std::size_t count, Pos p, std::uint8_t flags = 0) {
+        push(make(kind, w, stack_.size() - count, p, flags));
+    }
+
+    void open(Word w = Word::None) { frames_.push_back({stack_.size(), w, 0, false}); }
+    Frame& frame() { return frames_.back(); }
+    std::size_t frameSize() const { return stack_.size() - frames_.back().start; }
+
+    // Closes the innermost frame into one node.
+    void close(NodeKind kind, Word w, Pos p, std::uint8_t flags = 0) {
+        const std::size_t start = frames_.back().start;
+        frames_.pop_back();
+        push(make(kind, w, start, p, flags));
+    }
+
+    Node takeRoot(Pos p) {
+        Node root = make(NodeKind::Sequence, Word::None, 0, p, 0);
+        return root;
+    }
+    Node takeSingle() {
+        Node n = stack_.back();
+        stack_.pop_back();
+        return n;
+    }
+
+    Word pendingWord = Word::None;
+    const EntryConsumer* consume = nullptr;  // set: hand over each top-level entry
+
+    // A top-level entry is complete: give it away and forget its nodes.
+    void finishTopEntry() {
+        if (!consume) return;
+        const Node entry = takeSingle();
+        (*consume)(ast_, entry);
+        ast_.arena.reset();
+        ast_.strings.clear();
+    }
+
+private:
+    Node make(NodeKind kind, Word w, std::size_t start, Pos p, std::uint8_t flags) {
+        Node n = leaf(kind, p);
+        n.word = w;
+        n.flags = flags;
+        const std::size_t count = stack_.size() - start;
+        n.count = static_cast<std::uint32_t>(count);
+        Node* children = ast_.arena.allocate(count);
+        std::copy(stack_.begin() + static_cast<std::ptrdiff_t>(start), stack_.end(), children);
+        stack_.resize(start);
+        n.first = children;
+        return n;
+    }
+
+    Ast& ast_;
+    NameTable& names_;
+    std::vector<Node> stack_;
+    std::vector<Frame> frames_;
+};
+
+Word wordOf(std::string_view text) {
+    const WordInfo* w = lookupWord(text);
+    return w ? w->word : Word::None;
+}
+
+// --- actions ------------------------------------------------------------------------
+template <typename Rule>
+struct action : pegtl::nothing<Rule> {};
+
+template <>
+struct action<g::top_item> {
+    static void apply0(Builder& b) { b.finishTopEntry(); }
+};
+
+// Nesting guards.
+template <>
+struct action<g::unary> : pegtl::limit_depth<kMaxNesting> {};
+template <>
+struct action<g::object_statement> : pegtl::limit_depth<kMaxNesting> {};
+template <typename Entry>
+struct action<g::directive<Entry>> : pegtl::limit_depth<kMaxNesting> {};
+
+// Literals and names.
+template <>
+struct action<g::number_text> {
+    template <typename Input>
+    static void apply(const Input& in, Builder& b) {
+        double v = 0.0;
+        const auto r = std::from_chars(in.begin(), in.end(), v);
+        if (r.ec != std::errc() || r.ptr != in.end())
+            reject(in, "number '" + in.string() + "' is out of range");
+        b.pushNumber(v, posOf(in));
+    }
+};
+
+template <>
+struct action<g::string_text> {
+    template <typename Input>
+    static void apply(const Input& in, Builder& b) {
+        const std::string_view raw = in.string_view();
+        std::string s;
+        s.reserve(raw.size());
+        for (std::size_t i = 1; i + 1 < raw.size(); ++i) {
+            char c = raw[i];
+            if (c == '\\' && i + 2 < raw.size()) {
+                const char e = raw[++i];
+                switch (e) {
+                case 'n': c = '\n'; break;
+                case 't': c = '\t'; break;
+                case 'r': c = '\r'; break;
+                case 'a': c = '\a'; break;
+                case 'b': c = '\b'; break;
+                case 'f': c = '\f'; break;
+                case 'v': c = '\v'; break;
+                case '\\': case '"': case '\'': c = e; break;
+                default: s += '\\'; c = e; break;  // kept as written, like POV-Ray
+                }
+            }
+            s += c;
+        }
+        b.pushString(std::move(s), posOf(in));
+    }
+};
+
+struct PushName {
+    template <typename Input>
+    static void apply(const Input& in, Builder& b) {
+        b.pushName(leadingWord(in.string_view()), posOf(in));
+    }
+};
+template <> struct action<g::name> : PushName {};
+template <> struct action<g::name_reference> : PushName {};
+template <> struct action<g::declared_name> : PushName {};
+template <> struct action<g::undefined_name> : PushName {};
+template <> struct action<g::for_variable> : PushName {};
+template <> struct action<g::finish_name> : PushName {};
+template <> struct action<g::texture_name> : PushName {};
+template <> struct action<g::camera_name> : PushName {};
+
+template <>
+struct action<g::constant> {
+    template <typename Input>
+    static void apply(const Input& in, Builder& b) {
+        b.pushWord(NodeKind::Constant, wordOf(leadingWord(in.string_view())), posOf(in));
+    }
+};
+
+// Rejections: POV-Ray constructs we do not support, named where they stand.
+template <typename Rule>
+struct Reject {
+    template <typename Input>
+    static void apply(const Input& in, Builder&) {
+        reject(in, fillWord(g::rejection_message<Rule>, leadingWord(in.string_view())));
+    }
+};
+template <typename Rule>
+struct RejectDirective {
+    template <typename Input>
+    static void apply(const Input& in, Builder&) {
+        reject(in, fillWord(g::rejection_message<Rule>, directiveWord(in.string_view())));
+    }
+};
+template <> struct action<g::unsupported_item> : Reject<g::unsupported_item> {};
+template <> struct action<g::unsupported_in_expression> : Reject<g::unsupported_in_expression> {};
+template <> struct action<g::cylinder_light> : Reject<g::cylinder_light> {};
+template <> struct action<g::cylinder_camera> : Reject<g::cylinder_camera> {};
+template <> struct action<g::texture_pattern> : Reject<g::texture_pattern> {};
+template <> struct action<g::reflection_block> : Reject<g::reflection_block> {};
+template <> struct action<g::checker_of_blocks> : Reject<g::checker_of_blocks> {};
+template <> struct action<g::unsupported_directive> : RejectDirective<g::unsupported_directive> {};
+template <> struct action<g::unknown_directive> : RejectDirective<g::unknown_directive> {};
+
+// Operators.
+template <NodeKind Kind, Word W, std::size_t N>
+struct Reduce {
+    template <typename Input>
+    static void apply(const Input& in, Builder& b) {
+        b.reduce(Kind, W, N, posOf(in));
+    }
+};
+template <> struct action<g::negation> : Reduce<NodeKind::Unary, Word::OpSub, 1> {};
+template <> struct action<g::plus_sign> : Reduce<NodeKind::Unary, Word::OpAdd, 1> {};
+template <> struct action<g::logical_not> : Reduce<NodeKind::Unary, Word::OpNot, 1> {};
+template <> struct action<g::multiply> : Reduce<NodeKind::Binary, Word::OpMul, 2> {};
+template <> struct action<g::divide> : Reduce<NodeKind::Binary, Word::OpDiv, 2> {};
+template <> struct action<g::add> : Reduce<NodeKind::Binary, Word::OpAdd, 2> {};
+template <> struct action<g::subtract> : Reduce<NodeKind::Binary, Word::OpSub, 2> {};
+template <> struct action<g::less> : Reduce<NodeKind::Binary, Word::OpLess, 2> {};
+template <> struct action<g::less_equal> : Reduce<NodeKind::Binary, Word::OpLessEqual, 2> {};
+template <> struct action<g::greater> : Reduce<NodeKind::Binary, Word::OpGreater, 2> {};
+template <> struct action<g::greater_equal> : Reduce<NodeKind::Binary, Word::OpGreaterEqual, 2> {};
+template <> struct action<g::equal> : Reduce<NodeKind::Binary, Word::OpEqual, 2> {};
+template <> struct action<g::not_equal> : Reduce<NodeKind::Binary, Word::OpNotEqual, 2> {};
+template <> struct action<g::conjunction> : Reduce<NodeKind::Binary, Word::OpAnd, 2> {};
+template <> struct action<g::disjunction> : Reduce<NodeKind::Binary, Word::OpOr, 2> {};
+template <> struct action<g::conditional_tail> : Reduce<NodeKind::Conditional, Word::None, 3> {};
+
+template <>
+struct action<g::member_word> {
+    template <typename Input>
+    static void apply(const Input& in, Builder& b) {
+        b.pendingWord = wordOf(in.string_view());
+    }
+};
+template <>
+struct action<g::member_access> {
+    template <typename Input>
+    static void apply(const Input& in, Builder& b) {
+        b.reduce(NodeKind::Member, b.pendingWord, 1, posOf(in));
+    }
+};
+
+// Vectors: <a, b [, c [, d [, e]]]>.
+template <>
+struct action<g::vector_open> {
+    static void apply0(Builder& b) { b.open(); }
+};
+template <>
+struct action<g::vector_literal> {
+    template <typename Input>
+    static void apply(const Input& in, Builder& b) {
+        const std::size_t n = b.frameSize();
+        if (n < 2 || n > 5)
+            reject(in, "a vector has 2 to 5 components, this one has " + std::to_string(n));
+        b.close(NodeKind::Vector, Word::None, posOf(in));
+    }
+};
+
+// `<1, -2.5, 3>` in one go: Number children (a leading '-' folded in).
+template <>
+struct action<g::plain_vector_text> {
+    template <typename Input>
+    static void apply(const Input& in, Builder& b) {
+        const Pos start = posOf(in);
+        const char* const begin = in.begin();
+        const char* const end = in.end();
+        b.open();
+        const char* p = begin + 1;
+        while (p < end) {
+            while (*p == ' ' || *p == '\t' || *p == ',') ++p;
+            if (*p == '>') break;
+            const char* numberBegin = p;
+            const bool negative = *p == '-';
+            if (negative) ++p;
+            double v = 0.0;
+            const auto r = std::from_chars(p, end, v);
+            if (r.ec != std::errc())
+                reject(in, "number '" + std::string(numberBegin, r.ptr) + "' is out of range");
+            b.pushNumber(negative ? -v : v,
+                         {start.line, start.column + static_cast<std::uint32_t>(numberBegin - begin)});
+            p = r.ptr;
+        }
+        b.close(NodeKind::Vector, Word::None, start);
+    }
+};
+
+// Function calls, with their number of arguments checked here.
+template <>
+struct action<g::function_word> {
+    template <typename Input>
+    static void apply(const Input& in, Builder& b) {
+        b.open(wordOf(in.string_view()));
+    }
+};
+
+struct Arity {
+    int min;
+    int max;  // -1: any
+};
+Arity arityOf(Word w) {
+    switch (w) {
+    case Word::Pow: case Word::Atan2: case Word::Mod: case Word::Div: case Word::Vcross:
+    case Word::Vdot: case Word::Vrotate:
+        return {2, 2};
+    case Word::VaxisRotate:
+        return {3, 3};
+    case Word::Select:
+        return {3, 4};
+    case Word::Min: case Word::Max:
+        return {1, -1};
+    case Word::Concat:
+        return {1, -1};
+    case Word::Str:
+        return {3, 3};
+    default:
+        return {1, 1};
+    }
+}
+
+template <>
+struct action<g::function_call> {
+    template <typename Input>
+    static void apply(const Input& in, Builder& b) {
+        const Word w = b.frame().word;
+        const int n = static_cast<int>(b.frameSize());
+        const Arity a = arityOf(w);
+        if (n < a.min || (a.max >= 0 && n > a.max)) {
+            std::string message = "'";
+            message += wordText(w);
+            message += "' takes ";
+            if (a.max < 0) message += "at least ";
+            message += std::to_string(a.min);
+            if (a.max > a.min) message += " or " + std::to_string(a.max);
+            message += a.min == 1 && a.max == 1 ? " argument, not " : " arguments, not ";
+            message += std::to_string(n);
+            reject(in, std::move(message));
+        }
+        b.close(NodeKind::Call, w, posOf(in));
+    }
+};
+
+// Colours.
+template <>
+struct action<g::colour_start> {
+    static void apply0(Builder& b) { b.open(); }
+};
+template <>
+struct action<g::colour_base> {
+    static void apply0(Builder& b) { b.frame().flag = true; }
+};
+template <>
+struct action<g::colour_item> {
+    template <typename Input>
+    static void apply(const Input& in, Builder& b) {
+        b.reduce(NodeKind::ColourItem, wordOf(leadingWord(in.string_view())), 1, posOf(in));
+    }
+};
+template <>
+struct action<g::colour_expression> {
+    template <typename Input>
+    static void apply(const Input& in, Builder& b) {
+        const std::uint8_t flags = b.frame().flag ? 1 : 0;
+        b.close(NodeKind::Colour, Word::None, posOf(in), flags);
+    }
+};
+
+// Blocks: '{' opens the children; the block's rule closes them.
+template <>
+struct action<g::block_open> {
+    static void apply0(Builder& b) { b.open(); }
+};
+template <>
+struct action<g::arguments_end> {
+    static void apply0(Builder& b) { b.frame().positional = static_cast<int>(b.frameSize()); }
+};
+template <Word W>
+struct CloseBlock {
+    template <typename Input>
+    static void apply(const Input& in, Builder& b) {
+        const auto positional = static_cast<std::uint8_t>(b.frame().positional);
+        b.close(NodeKind::Block, W, posOf(in), positional);
+    }
+};
+template <> struct action<g::sphere_block> : CloseBlock<Word::Sphere> {};
+template <> struct action<g::box_block> : CloseBlock<Word::Box> {};
+template <> struct action<g::cone_block> : CloseBlock<Word::Cone> {};
+template <> struct action<g::cylinder_block> : CloseBlock<Word::Cylinder> {};
+template <> struct action<g::disc_block> : CloseBlock<Word::Disc> {};
+template <> struct action<g::polygon_block> : CloseBlock<Word::Polygon> {};
+template <> struct action<g::plane_block> : CloseBlock<Word::Plane> {};
+template <> struct action<g::union_block> : CloseBlock<Word::Union> {};
+template <> struct action<g::object_block> : CloseBlock<Word::Object> {};
+template <> struct action<g::light_source_block> : CloseBlock<Word::LightSource> {};
+template <> struct action<g::camera_block> : CloseBlock<Word::Camera> {};
+template <> struct action<g::global_settings_block> : CloseBlock<Word::GlobalSettings> {};
+template <> struct action<g::background_block> : CloseBlock<Word::Background> {};
+template <> struct action<g::pigment_block> : CloseBlock<Word::Pigment> {};
+template <> struct action<g::finish_block> : CloseBlock<Word::Finish> {};
+template <> struct action<g::texture_block> : CloseBlock<Word::Texture> {};
+template <> struct action<g::asos_block> : CloseBlock<Word::Asos> {};
+
+// Sequences: directive bodies and a polygon's points.
+template <>
+struct action<g::sequence_start> {
+    static void apply0(Builder& b) { b.open(); }
+};
+template <typename Entry>
+struct action<g::directive_body<Entry>> {
+    template <typename Input>
+    static void apply(const Input& in, Builder& b) {
+        b.close(NodeKind::Sequence, Word::None, posOf(in));
+    }
+};
+template <>
+struct action<g::polygon_points> {
+    template <typename Input>
+    static void apply(const Input& in, Builder& b) {
+        b.close(NodeKind::Sequence, Word::None, posOf(in));
+    }
+};
+
+// Items with a fixed number of arguments.
+template <Word W, std::size_t N>
+struct ItemAction : Reduce<NodeKind::Item, W, N> {};
+template <> struct action<g::translate_item> : ItemAction<Word::Translate, 1> {};
+template <> struct action<g::rotate_item> : ItemAction<Word::Rotate, 1> {};
+template <> struct action<g::scale_item> : ItemAction<Word::Scale, 1> {};
+template <> struct action<g::eps_item> : ItemAction<Word::Eps, 1> {};
+template <> struct action<g::max_item> : ItemAction<Word::Max, 1> {};
+template <> struct action<g::asos_jitter_item> : ItemAction<Word::Jitter, 1> {};
+template <> struct action<g::ambient_item> : ItemAction<Word::Ambient, 1> {};
+template <> struct action<g::diffuse_item> : ItemAction<Word::Diffuse, 1> {};
+template <> struct action<g::brilliance_item> : ItemAction<Word::Brilliance, 1> {};
+template <> struct action<g::phong_item> : ItemAction<Word::Phong, 1> {};
+template <> struct action<g::phong_size_item> : ItemAction<Word::PhongSize, 1> {};
+template <> struct action<g::specular_item> : ItemAction<Word::Specular, 1> {};
+template <> struct action<g::roughness_item> : ItemAction<Word::Roughness, 1> {};
+template <> struct action<g::reflection_item> : ItemAction<Word::Reflection, 1> {};
+template <> struct action<g::open_item> : ItemAction<Word::Open, 0> {};
+template <> struct action<g::no_shadow_item> : ItemAction<Word::NoShadow, 0> {};
+template <> struct action<g::area_light_item> : ItemAction<Word::AreaLight, 4> {};
+template <> struct action<g::adaptive_item> : ItemAction<Word::Adaptive, 1> {};
+template <> struct action<g::jitter_item> : ItemAction<Word::Jitter, 0> {};
+template <> struct action<g::circular_item> : ItemAction<Word::Circular, 0> {};
+template <> struct action<g::orient_item> : ItemAction<Word::Orient, 0> {};
+template <> struct action<g::fade_distance_item> : ItemAction<Word::FadeDistance, 1> {};
+template <> struct action<g::fade_power_item> : ItemAction<Word::FadePower, 1> {};
+template <> struct action<g::shadowless_item> : ItemAction<Word::Shadowless, 0> {};
+template <> struct action<g::perspective_item> : ItemAction<Word::Perspective, 0> {};
+template <> struct action<g::orthographic_item> : ItemAction<Word::Orthographic, 0> {};
+template <> struct action<g::location_item> : ItemAction<Word::Location, 1> {};
+template <> struct action<g::look_at_item> : ItemAction<Word::LookAt, 1> {};
+template <> struct action<g::angle_item> : ItemAction<Word::Angle, 1> {};
+template <> struct action<g::right_item> : ItemAction<Word::Right, 1> {};
+template <> struct action<g::up_item> : ItemAction<Word::Up, 1> {};
+template <> struct action<g::direction_item> : ItemAction<Word::Direction, 1> {};
+template <> struct action<g::sky_item> : ItemAction<Word::Sky, 1> {};
+template <> struct action<g::assumed_gamma_item> : ItemAction<Word::AssumedGamma, 1> {};
+template <> struct action<g::max_trace_level_item> : ItemAction<Word::MaxTraceLevel, 1> {};
+template <> struct action<g::ambient_light_item> : ItemAction<Word::AmbientLight, 1> {};
+
+// Items with a variable number of arguments.
+template <>
+struct action<g::checker_start> {
+    static void apply0(Builder& b) { b.open(); }
+};
+template <>
+struct action<g::checker_item> {
+    template <typename Input>
+    static void apply(const Input& in, Builder& b) {
+        b.close(NodeKind::Item, Word::Checker, posOf(in));
+    }
+};
+template <>
+struct action<g::matrix_item> {
+    template <typename Input>
+    static void apply(const Input& in, Builder& b) {
+        const std::size_t n = b.frameSize();
+        if (n != 12) reject(in, "a matrix has 12 numbers, this one has " + std::to_string(n));
+        b.close(NodeKind::Item, Word::Matrix, posOf(in));
+    }
+};
+
+// Directives.
+template <Word W>
+struct OpenDirective {
+    static void apply0(Builder& b) { b.open(W); }
+};
+template <> struct action<g::if_start> : OpenDirective<Word::If> {};
+template <> struct action<g::ifdef_start> : OpenDirective<Word::Ifdef> {};
+template <> struct action<g::ifndef_start> : OpenDirective<Word::Ifndef> {};
+template <> struct action<g::while_start> : OpenDirective<Word::While> {};
+template <> struct action<g::for_start> : OpenDirective<Word::For> {};
+
+struct CloseIf {
+    template <typename Input>
+    static void apply(const Input& in, Builder& b) {
+        // Condition/body pairs, then the else body if the count is odd.
+        const std::uint8_t hasElse = b.frameSize() % 2 == 1 ? 1 : 0;
+        b.close(NodeKind::If, Word::None, posOf(in), hasElse);
+    }
+};
+template <typename Entry> struct action<g::if_directive<Entry>> : CloseIf {};
+template <typename Entry> struct action<g::ifdef_directive<Entry>> : CloseIf {};
+template <typename Entry> struct action<g::ifndef_directive<Entry>> : CloseIf {};
+
+// #ifdef (N) is #if (defined(N)); #ifndef (N) is #if (!defined(N)).
+template <>
+struct action<g::tested_name> {
+    template <typename Input>
+    static void apply(const Input& in, Builder& b) {
+        const Pos p = posOf(in);
+        b.pushName(leadingWord(in.string_view()), p);
+        b.reduce(NodeKind::Call, Word::Defined, 1, p);
+        if (b.frame().word == Word::Ifndef) b.reduce(NodeKind::Unary, Word::OpNot, 1, p);
+    }
+};
+
+template <typename Entry>
+struct action<g::while_directive<Entry>> {
+    template <typename Input>
+    static void apply(const Input& in, Builder& b) {
+        b.close(NodeKind::While, Word::None, posOf(in));
+    }
+};
+template <typename Entry>
+struct action<g::for_directive<Entry>> {
+    template <typename Input>
+    static void apply(const Input& in, Builder& b) {
+        const std::uint8_t hasStep = b.frameSize() == 5 ? 1 : 0;
+        b.close(NodeKind::For, Word::None, posOf(in), hasStep);
+    }
+};
+template <> struct action<g::declare_directive> : Reduce<NodeKind::Declare, Word::Declare, 2> {};
+template <> struct action<g::local_directive> : Reduce<NodeKind::Local, Word::Local, 2> {};
+template <> struct action<g::undef_directive> : Reduce<NodeKind::Undef, Word::Undef, 1> {};
+template <> struct action<g::include_directive> : Reduce<NodeKind::Include, Word::Include, 1> {};
+template <> struct action<g::version_directive> : Reduce<NodeKind::Version, Word::Version, 1> {};
+template <> struct action<g::debug_directive> : Reduce<NodeKind::Debug, Word::Debug, 1> {};
+template <> struct action<g::warning_directive> : Reduce<NodeKind::Warning, Word::Warning, 1> {};
+template <> struct action<g::error_directive> : Reduce<NodeKind::Error, Word::Error, 1> {};
+
+// --- errors ---------------------------------------------------------------------------
+
+// What stands at `byte`, quoted for a message: a word, a number, a string,
+// a directive or one character.
+std::string foundAt(std::string_view text, std::size_t byte) {
+    if (byte >= text.size()) return "the end of the file";
+    const std::string_view rest = text.substr(byte);
+    const char c = rest[0];
+    std::size_t n = 1;
+    if (isWordChar(c) || (c == '.' && rest.size() > 1 && rest[1] >= '0' && rest[1] <= '9')) {
+        while (n < rest.size() && (isWordChar(rest[n]) || rest[n] == '.')) ++n;
+    } else if (c == '#') {
+        while (n < rest.size() && (rest[n] == ' ' || rest[n] == '\t')) ++n;
+        while (n < rest.size() && isWordChar(rest[n])) ++n;
+    } else if (c == '"') {
+        while (n < rest.size() && rest[n] != '"' && rest[n] != '\n' && n < 40) ++n;
+        if (n < rest.size() && rest[n] == '"') ++n;
+    } else if (static_cast<unsigned char>(c) < 0x20) {
+        return c == '\n' || c == '\r' ? "the end of the line" : "a control character";
+    }
+    std::string quoted = "'";
+    quoted += rest.substr(0, n);
+    quoted += '\'';
+    return quoted;
+}
+
+Diagnostic makeError(const std::shared_ptr<const std::string>& file, std::string_view text,
+                     std::size_t line, std::size_t column, std::string message) {
+    Diagnostic d;
+    d.severity = Severity::Error;
+    d.loc = SourceLoc{file, static_cast<int>(line), static_cast<int>(column)};
+    d.message = std::move(message);
+    d.sourceLine = std::string(sourceLine(text, static_cast<int>(line)));
+    return d;
+}
+
+// Parses with TopRule; `root` says what the tree's root is. Returns false after
+// a syntax error, which it reports.
+enum class Root { File, Expression };
+template <typename TopRule>
+bool parseWith(Ast& ast, std::string_view text, NameTable& names, Diagnostics& diagnostics, Root root,
+               const EntryConsumer* consume) {
+    Builder builder(ast, names);
+    builder.consume = consume;
+    pegtl::memory_input<pegtl::tracking_mode::eager> in(text.data(), text.size(),
+                                                        ast.file ? *ast.file : std::string());
+    try {
+        if (root == Root::File) builder.open();
+        pegtl::parse<TopRule, action, g::control>(in, builder);
+        ast.root = root == Root::File ? builder.takeRoot({1, 1}) : builder.takeSingle();
+        return true;
+    } catch (const pegtl::parse_error& e) {
+        const pegtl::position& p = e.positions().front();
+        diagnostics.report(makeError(ast.file, text, p.line, p.column,
+                                     std::string(e.message()) + ", found " + foundAt(text, p.byte)));
+    } catch (const Rejection& r) {
+        diagnostics.report(makeError(ast.file, text, r.line, r.column, r.message));
+    }
+    return false;
+}
+
+}  // namespace
+
+std::string_view sourceLine(std::string_view text, int line) {
+    std::size_t start = 0;
+    for (int l = 1; l < line; ++l) {
+        const std::size_t nl = text.find('\n', start);
+        if (nl == std::string_view::npos) return {};
+        start = nl + 1;
+    }
+    std::size_t end = text.find('\n', start);
+    if (end == std::string_view::npos) end = text.size();
+    if (end > start && text[end - 1] == '\r') --end;
+    return text.substr(start, end - start);
+}
+
+bool parseSceneEntries(std::string_view text, std::shared_ptr<const std::string> file, NameTable& names,
+                       Diagnostics& diagnostics, const EntryConsumer& consume) {
+    Ast ast;
+    ast.file = std::move(file);
+    return parseWith<g::scene_file>(ast, text, names, diagnostics, Root::File, &consume);
+}
+
+std::optional<Ast> parseScene(std::string_view text, std::shared_ptr<const std::string> file,
+                              NameTable& names, Diagnostics& diagnostics) {
+    Ast ast;
+    ast.file = std::move(file);
+    if (!parseWith<g::scene_file>(ast, text, names, diagnostics, Root::File, nullptr)) return std::nullopt;
+    return ast;
+}
+
+std::optional<Ast> parseExpression(std::string_view text, std::shared_ptr<const std::string> file,
+                                   NameTable& names, Diagnostics& diagnostics) {
+    Ast ast;
+    ast.file = std::move(file);
+    if (!parseWith<g::expression_text>(ast, text, names, diagnostics, Root::Expression, nullptr))
+        return std::nullopt;
+    return ast;
+}
+
+}  // namespace asos::lang

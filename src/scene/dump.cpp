@@ -1,0 +1,244 @@
+#include "asos/scene/dump.hpp"
+
+#include <charconv>
+#include <ostream>
+#include <sstream>
+
+namespace asos {
+
+namespace {
+
+// Shortest text that reads back to the same double; -0 is written 0 (the
+// language has no negative zero literal, and the sign means nothing here).
+class Writer {
+public:
+    Writer(std::ostream& out, const DumpOptions& options) : out_(out), options_(options) {}
+
+    Writer& operator<<(std::string_view s) {
+        out_ << s;
+        return *this;
+    }
+    Writer& operator<<(char c) {
+        out_ << c;
+        return *this;
+    }
+    Writer& operator<<(int v) {
+        out_ << v;
+        return *this;
+    }
+    Writer& num(double v) {
+        if (v == 0.0) {
+            out_ << '0';
+            return *this;
+        }
+        char buffer[32];
+        const auto r = std::to_chars(buffer, buffer + sizeof buffer, v);
+        out_.write(buffer, r.ptr - buffer);
+        return *this;
+    }
+    Writer& vec(const Vec3& v) {
+        out_ << '<';
+        num(v.x) << ", ";
+        num(v.y) << ", ";
+        num(v.z) << '>';
+        return *this;
+    }
+    Writer& colour(const Color& c) {
+        out_ << "color rgbft <";
+        num(c.rgb.x) << ", ";
+        num(c.rgb.y) << ", ";
+        num(c.rgb.z) << ", ";
+        num(c.filter) << ", ";
+        num(c.transmit) << '>';
+        return *this;
+    }
+    Writer& rgb(const Vec3& v) {
+        out_ << "rgb ";
+        return vec(v);
+    }
+    Writer& matrix(const Transform& t) {
+        double m[12];
+        t.toPovMatrix(m);
+        out_ << "matrix <";
+        for (int i = 0; i < 12; ++i) {
+            if (i) out_ << (i % 3 == 0 ? ",  " : ", ");
+            num(m[i]);
+        }
+        out_ << '>';
+        return *this;
+    }
+    void location(const SourceLoc& loc) {
+        if (!options_.locations) return;
+        if (loc.file && loc.line > 0)
+            out_ << "// " << *loc.file << ':' << loc.line << ':' << loc.column << '\n';
+        else
+            out_ << "// (default)\n";
+    }
+    void asos(const AsosOptions& a, std::string_view indent) {
+        if (!a.eps && !a.maxLevel && !a.jitter) return;
+        out_ << indent << "asos {";
+        if (a.eps) {
+            out_ << " eps ";
+            num(*a.eps);
+        }
+        if (a.maxLevel) out_ << " max " << *a.maxLevel;
+        if (a.jitter) out_ << " jitter " << (*a.jitter ? "on" : "off");
+        out_ << " }\n";
+    }
+
+private:
+    std::ostream& out_;
+    const DumpOptions& options_;
+};
+
+void writeShape(Writer& w, const Shape& shape) {
+    struct Visitor {
+        Writer& w;
+        void operator()(const SphereShape& s) const {
+            w << "sphere {\n  ";
+            w.vec(s.center) << ", ";
+            w.num(s.radius) << '\n';
+        }
+        void operator()(const BoxShape& b) const {
+            w << "box {\n  ";
+            w.vec(b.corner1) << ", ";
+            w.vec(b.corner2) << '\n';
+        }
+        void operator()(const ConeShape& c) const {
+            w << "cone {\n  ";
+            w.vec(c.base) << ", ";
+            w.num(c.baseRadius) << ", ";
+            w.vec(c.cap) << ", ";
+            w.num(c.capRadius) << (c.open ? "\n  open\n" : "\n");
+        }
+        void operator()(const CylinderShape& c) const {
+            w << "cylinder {\n  ";
+            w.vec(c.base) << ", ";
+            w.vec(c.cap) << ", ";
+            w.num(c.radius) << (c.open ? "\n  open\n" : "\n");
+        }
+        void operator()(const DiscShape& d) const {
+            w << "disc {\n  ";
+            w.vec(d.center) << ", ";
+            w.vec(d.normal) << ", ";
+            w.num(d.radius) << ", ";
+            w.num(d.holeRadius) << '\n';
+        }
+        void operator()(const PolygonShape& p) const {
+            w << "polygon {\n  " << static_cast<int>(p.points.size());
+            for (const Vec3& q : p.points) {
+                w << ",\n  ";
+                w.vec(q);
+            }
+            w << '\n';
+        }
+        void operator()(const PlaneShape& p) const {
+            w << "plane {\n  ";
+            w.vec(p.normal) << ", ";
+            w.num(p.distance) << '\n';
+        }
+    };
+    std::visit(Visitor{w}, shape);
+}
+
+void writeTexture(Writer& w, const Texture& t) {
+    const Pigment& p = t.pigment;
+    w << "  texture {\n    pigment { ";
+    if (p.kind == Pigment::Kind::Checker) {
+        w << "checker ";
+        w.colour(p.color1) << ", ";
+        w.colour(p.color2);
+    } else {
+        w.colour(p.color1);
+    }
+    if (!p.worldFromPattern.isIdentity()) {
+        w << ' ';
+        w.matrix(p.worldFromPattern);
+    }
+    w << " }\n";
+    const Finish& f = t.finish;
+    w << "    finish { ambient ";
+    w.rgb(f.ambient) << " diffuse ";
+    w.num(f.diffuse) << " brilliance ";
+    w.num(f.brilliance) << " phong ";
+    w.num(f.phong) << " phong_size ";
+    w.num(f.phongSize) << " specular ";
+    w.num(f.specular) << " roughness ";
+    w.num(f.roughness) << " reflection ";
+    w.rgb(f.reflection) << " }\n  }\n";
+}
+
+}  // namespace
+
+void writeDump(std::ostream& out, const SceneDescription& scene, const DumpOptions& options) {
+    Writer w(out, options);
+    w << "// asos scene description: the canonical dump (a scene itself)\n#version ";
+    w.num(scene.version) << ";\n\n";
+
+    const GlobalSettings& g = scene.globals;
+    w << "global_settings {\n  assumed_gamma ";
+    w.num(g.assumedGamma) << "\n  max_trace_level " << g.maxTraceLevel << "\n  ambient_light ";
+    w.rgb(g.ambientLight) << '\n';
+    w.asos(g.asos, "  ");
+    w << "}\n\nbackground { ";
+    w.colour(scene.background) << " }\n\n";
+
+    const Camera& c = scene.camera;
+    w.location(c.loc);
+    w << "camera {\n  " << (c.projection == Camera::Projection::Orthographic ? "orthographic" : "perspective")
+      << "\n  location ";
+    w.vec(c.location) << "\n  direction ";
+    w.vec(c.direction) << "\n  right ";
+    w.vec(c.right) << "\n  up ";
+    w.vec(c.up) << "\n}\n";
+
+    for (const Light& l : scene.lights) {
+        w << '\n';
+        w.location(l.loc);
+        w << "light_source {\n  ";
+        w.vec(l.position) << ", ";
+        w.rgb(l.color) << '\n';
+        if (l.area) {
+            const AreaLight& a = *l.area;
+            w << "  area_light ";
+            w.vec(a.axis1) << ", ";
+            w.vec(a.axis2) << ", " << a.size1 << ", " << a.size2 << "\n  adaptive " << a.adaptive << '\n';
+            if (a.jitter) w << "  jitter\n";
+            if (a.circular) w << "  circular\n";
+            if (a.orient) w << "  orient\n";
+        }
+        if (l.fadeDistance > 0) {
+            w << "  fade_distance ";
+            w.num(l.fadeDistance) << '\n';
+        }
+        if (l.fadePower != 0) {
+            w << "  fade_power ";
+            w.num(l.fadePower) << '\n';
+        }
+        if (l.shadowless) w << "  shadowless\n";
+        w.asos(l.asos, "  ");
+        w << "}\n";
+    }
+
+    for (const Object& o : scene.objects) {
+        w << '\n';
+        w.location(o.loc);
+        writeShape(w, o.shape);
+        if (!o.worldFromObject.isIdentity()) {
+            w << "  ";
+            w.matrix(o.worldFromObject) << '\n';
+        }
+        writeTexture(w, o.texture ? *o.texture : Texture{});
+        if (o.noShadow) w << "  no_shadow\n";
+        w.asos(o.asos, "  ");
+        w << "}\n";
+    }
+}
+
+std::string dumpScene(const SceneDescription& scene, const DumpOptions& options) {
+    std::ostringstream out;
+    writeDump(out, scene, options);
+    return std::move(out).str();
+}
+
+}  // namespace asos

@@ -1,0 +1,130 @@
+// The grammar alone: no cycles without progress, and tables of accepted and
+// rejected inputs for each family of rules. (Tests may include PEGTL; in src/
+// only src/lang/parse.cpp does.)
+#include <catch2/catch.hpp>
+
+#include <string>
+#include <tao/pegtl/contrib/analyze.hpp>
+
+#include "grammar/errors.hpp"
+
+namespace g = asos::grammar;
+namespace pegtl = tao::pegtl;
+
+namespace {
+
+// Whether `text` is exactly one `Rule` (plus trailing space). Errors raised
+// by must<> count as rejection.
+template <typename Rule>
+bool accepts(const std::string& text) {
+    pegtl::memory_input in(text, "test");
+    try {
+        return pegtl::parse<pegtl::seq<Rule, pegtl::eof>, pegtl::nothing, g::control>(in);
+    } catch (const pegtl::parse_error&) {
+        return false;
+    }
+}
+
+template <typename Rule>
+void checkTable(std::initializer_list<const char*> good, std::initializer_list<const char*> bad) {
+    for (const char* text : good) {
+        INFO("accepted: " << text);
+        CHECK(accepts<Rule>(text));
+    }
+    for (const char* text : bad) {
+        INFO("rejected: " << text);
+        CHECK_FALSE(accepts<Rule>(text));
+    }
+}
+
+}  // namespace
+
+TEST_CASE("the grammar has no loops without progress", "[lang][grammar]") {
+    CHECK(pegtl::analyze<g::scene_file>(false) == 0);
+    CHECK(pegtl::analyze<g::expression_text>(false) == 0);
+}
+
+TEST_CASE("lexical rules", "[lang][grammar]") {
+    checkTable<g::number_literal>({"1", "0", "12.5", ".5", "1.", "1e-3", "2.5E+10", "3e7 ", "1 // c\n"},
+                                  {"", "-1", "e3", ".", "1e", "1x"});
+    checkTable<g::string_literal>({R"("")", R"("abc")", R"("a\"b")", R"("tab\there" )"},
+                                  {R"("abc)", "\"a\nb\"", "abc"});
+    checkTable<g::skip>({"", " \t\r\n", "// line\n", "/* block */", "/* nested /* inner */ outer */",
+                         "// no newline at the end"},
+                        {"/* unterminated", "/* nested /* inner */ unterminated", "x"});
+    checkTable<g::name>({"Foo", "_x1", "spheres", "sphere_2", "MyRed", "eps", "asos"},
+                        {"sphere", "x", "pigment", "isosurface", "1abc", "rgb", "max"});
+}
+
+TEST_CASE("keywords never match the front of a longer identifier", "[lang][grammar]") {
+    checkTable<g::kw_sphere>({"sphere", "sphere ", "sphere/*c*/"}, {"spheres", "sphere_", "Sphere"});
+    checkTable<g::kw_color>({"color", "colour"}, {"colors", "colour_map"});
+    checkTable<g::constant>({"x", "pi", "clock", "on", "off", "image_width"}, {"xx", "pie", "Pi"});
+    checkTable<g::function_name>({"sin", "vrotate", "max"}, {"sine", "vrotation"});
+}
+
+TEST_CASE("expressions", "[lang][grammar]") {
+    checkTable<g::expression>(
+        {"1", "-1", "1+2*3", "(1+2)*3", "<1,2,3>", "<1, 2>", "<1,2,3,4,5>", "x*2 + <0,1,0>",
+         "sin(pi/2)", "max(1, 2, 3)", "V.x", "C.red", "rgb <1,0,0>", "rgb 1", "color Red",
+         "color red 1 green .5", "colour rgb <1,0,0> filter 0.5", "rgbft <1,1,1,0,0>", "!A",
+         "(A < B)", "(A <= B & C != D | E)", "(A ? 1 : 2)", "(1 ? 0 ? 5 : 6 : 7)", "\"str\"",
+         "concat(\"a\", str(1, 0, 2))", "<(1 > 0), 0, 0>", "-(-x)", "A.x.y"},
+        {"", "1 +", "(1", "<1,2", "<1,,2>", "sin 1", "sin()", "V.", "V.w", "A < B", "color", "rgb",
+         "(A ? 1)", "1 * * 2"});
+}
+
+TEST_CASE("directives", "[lang][grammar]") {
+    using top = g::entries<g::top_entry>;
+    checkTable<top>(
+        {"#declare A = 1;", "#local B = <1,2,3>;", "#declare S = sphere { 0, 1 }",
+         "#declare S = sphere { 0, 1 };", "#declare P = pigment { rgb 1 }", "#undef A",
+         "#include \"colors.inc\"", "#version 3.7;", "#version 3.7", "#debug \"hi\\n\"",
+         "#warning \"w\"", "#error \"e\"", "#if (1) #end", "#if (A) sphere {0,1} #else box {0,1} #end",
+         "#if (A) #elseif (B) #elseif (C) #else #end", "#ifdef (A) #end", "#ifndef (A) #else #end",
+         "#while (I < 3) #declare I = I + 1; #end", "#for (I, 1, 10) #end", "#for (I, 10, 1, -1) #end",
+         "# declare A = 1;", "#if (1) #if (2) #end #end"},
+        {"#declare A = 1", "#declare = 1;", "#declare sphere = 1;", "#if 1 #end", "#if (1)",
+         "#while (1)", "#for (I, 1) #end", "#undef", "#include", "#end", "#else"});
+}
+
+TEST_CASE("objects and scene items", "[lang][grammar]") {
+    using top = g::entries<g::top_entry>;
+    checkTable<top>(
+        {"sphere { <0,0,0>, 1 }", "sphere { 0 1 }", "sphere { <0,1,0>, .5 translate x }",
+         "box { <0,0,0>, <1,1,1> }", "cone { 0, 1, y, 0 open }", "cone { 0 1 y 0 }",
+         "cylinder { 0, y, 1 open }", "disc { 0, y, 1 }", "disc { 0, y, 2, 1 }",
+         "polygon { 4, <0,0>, <1,0>, <1,1>, <0,1> }", "polygon { 3 <0,0> <1,0> <0,1> }",
+         "plane { y, 0 }", "union { sphere { 0, 1 } box { 0, 1 } pigment { rgb 1 } }",
+         "object { Thing translate x }", "object { sphere { 0, 1 } scale 2 }",
+         "light_source { <0,10,0>, rgb 1 }", "light_source { <0,10,0> color White shadowless }",
+         "light_source { 0, 1 area_light x, z, 4, 4 adaptive 1 jitter circular orient }",
+         "light_source { 0, 1 fade_distance 2 fade_power 2 asos { eps 0.1 } }",
+         "camera { location <0,1,-5> look_at 0 angle 60 }", "camera { orthographic right x up y }",
+         "camera { perspective location 0 direction z sky y right x*4/3 up y rotate <0,10,0> }",
+         "global_settings { assumed_gamma 1 max_trace_level 5 ambient_light rgb 1 }",
+         "global_settings { asos { eps 0.01 max 4 jitter on } }", "background { color rgb <0,0,1> }",
+         "sphere { 0, 1 #if (A) pigment { Red } #end }",
+         "union { #while (I < 3) sphere { I*x, 1 } #declare I = I + 1; #end }"},
+        {"sphere { 0 }", "sphere { 0, 1", "sphere 0, 1", "box { 0 }", "cone { 0, 1, y }",
+         "polygon { }", "union { sphere { 0, 1 } ", "camera { location }", "light_source { }",
+         "spheres { 0, 1 }", "sphere { 0, 1 look_at x }", "background { }"});
+}
+
+TEST_CASE("modifiers", "[lang][grammar]") {
+    using top = g::entries<g::top_entry>;
+    checkTable<top>(
+        {"sphere { 0, 1 pigment { rgb <1,0,0> } }", "sphere { 0, 1 pigment { Red } }",
+         "sphere { 0, 1 pigment { checker Red, White scale 2 } }",
+         "sphere { 0, 1 pigment { checker color Red color White } }",
+         "sphere { 0, 1 pigment { checker } }",
+         "sphere { 0, 1 finish { ambient 0.2 diffuse 0.8 phong 1 phong_size 60 } }",
+         "sphere { 0, 1 finish { F specular 0.5 roughness 0.01 reflection 0.3 brilliance 2 } }",
+         "sphere { 0, 1 finish { ambient rgb <0.1,0.2,0.3> reflection rgb <0.5,0.5,0.5> } }",
+         "sphere { 0, 1 texture { pigment { rgb 1 } finish { phong 1 } scale 2 } }",
+         "sphere { 0, 1 texture { T } }", "sphere { 0, 1 no_shadow asos { eps 1e-3 max 6 jitter off } }",
+         "sphere { 0, 1 matrix <1,0,0, 0,1,0, 0,0,1, 0,0,0> }",
+         "sphere { 0, 1 rotate <0,45,0> scale <1,2,1> translate -x }"},
+        {"sphere { 0, 1 pigment { rgb } }", "sphere { 0, 1 pigment { checker Red, } }",
+         "sphere { 0, 1 finish { phong } }",         "sphere { 0, 1 translate }", "sphere { 0, 1 asos { eps } }", "sphere { 0, 1 asos { foo 1 } }"});
+}

@@ -1,0 +1,417 @@
+// The interpreter: known answers checked through the scene description it
+// produces (POV-Ray 3.7 gives the same values: several were checked against
+// `povray` with #debug), and the semantic errors it reports.
+#include <catch2/catch.hpp>
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+
+#include "asos/lang/interpreter.hpp"
+
+using namespace asos;
+using namespace asos::lang;
+using Catch::Matchers::Contains;
+
+namespace {
+
+struct Run {
+    std::optional<SceneDescription> scene;
+    Diagnostics diagnostics;
+
+    std::string errors() const {
+        std::string s;
+        for (const auto& d : diagnostics.all())
+            s += std::to_string(d.loc.line) + ":" + std::to_string(d.loc.column) + ": " + d.message + "\n";
+        return s;
+    }
+};
+
+Run run(const std::string& text, const InterpreterOptions& options = {}) {
+    Run r;
+    r.scene = interpretText(text, "t.pov", options, r.diagnostics);
+    return r;
+}
+
+const SceneDescription& ok(const Run& r) {
+    INFO(r.errors());
+    REQUIRE(r.scene);
+    return *r.scene;
+}
+
+// The centre of the one sphere of `text`, which places `sphere { VALUE, 1 }`.
+Vec3 valueOf(const std::string& declarations, const std::string& value) {
+    Run r = run(declarations + "\nsphere { " + value + ", 1 }");
+    const auto& scene = ok(r);
+    REQUIRE(scene.objects.size() == 1);
+    return std::get<SphereShape>(scene.objects[0].shape).center;
+}
+double floatOf(const std::string& expression, const std::string& declarations = "") {
+    return valueOf(declarations + "\n#declare Value__ = " + expression + ";", "<Value__, 0, 0>").x;
+}
+
+bool near(const Vec3& a, const Vec3& b) { return glm::length(a - b) < 1e-12; }
+
+std::filesystem::path scratchDir(const std::string& name) {
+    auto dir = std::filesystem::path(ASOS_BINARY_DIR) / "test-scratch" / name;
+    std::filesystem::remove_all(dir);
+    std::filesystem::create_directories(dir);
+    return dir;
+}
+void writeFile(const std::filesystem::path& path, const std::string& text) {
+    std::ofstream(path) << text;
+}
+
+}  // namespace
+
+TEST_CASE("arithmetic and functions", "[lang][interpreter]") {
+    CHECK(floatOf("1 + 2 * 3") == 7);
+    CHECK(floatOf("-2 * -3") == 6);
+    CHECK(floatOf("2 - - 3") == 5);
+    CHECK(floatOf("!0 + 1") == 2);
+    CHECK(floatOf("(1 < 2)") == 1);
+    CHECK(floatOf("(2 = 2 + 1 | 1 & 0)") == 0);
+    CHECK(floatOf("(1 ? 0 ? 5 : 6 : 7)") == 6);
+    CHECK(floatOf("(0.1 + 0.2 = 0.3)") == 1);  // POV-Ray's epsilon
+    CHECK(floatOf("(1e-12 > 0)") == 1);
+    CHECK(floatOf("(1e-12 != 0)") == 0);
+    CHECK(floatOf("(1e-12 ? 1 : 0)") == 0);
+    CHECK(floatOf("mod(-7, 3)") == -1);
+    CHECK(floatOf("int(-2.5)") == -2);
+    CHECK(floatOf("div(-7, 2)") == -3);
+    CHECK(floatOf("log(100)") == Approx(2));
+    CHECK(floatOf("ln(exp(2))") == Approx(2));
+    CHECK(floatOf("pow(2, 10)") == 1024);
+    CHECK(floatOf("sqrt(16) + abs(-1) + sqr(3)") == 14);
+    CHECK(floatOf("max(1, 5, 3) + min(4, 2)") == 7);
+    CHECK(floatOf("max(3)") == 3);
+    CHECK(floatOf("select(-1, 1, 2) + select(0, 10, 20, 30)") == 21);
+    CHECK(floatOf("degrees(pi) + radians(180)") == Approx(180 + 3.14159265358979));
+    CHECK(floatOf("atan2(1, 1)") == Approx(0.785398163397448));
+    CHECK(floatOf("floor(-0.5) + ceil(0.5)") == 0);
+    CHECK(floatOf("vlength(<3, 4, 0>)") == 5);
+    CHECK(floatOf("vdot(x, y) + vdot(<1,2,3>, <1,2,3>)") == 14);
+    CHECK(floatOf("strlen(concat(\"ab\", str(3.5, 0, 2), chr(65)))") == 7);
+    CHECK(floatOf("val(\"2.5e1\")") == 25);
+    CHECK(floatOf("defined(Q) + 2 * defined(Nope)", "#declare Q = 1;") == 1);
+    CHECK(floatOf("clock", "") == 0);
+    CHECK(floatOf("image_width / image_height") == Approx(320.0 / 240.0));
+}
+
+TEST_CASE("vectors promote as in POV-Ray", "[lang][interpreter]") {
+    CHECK(near(valueOf("", "x*2 + 3"), {5, 3, 3}));
+    CHECK(near(valueOf("#declare V = <1, 2>;", "V + <1, 1, 1>"), {2, 3, 1}));
+    CHECK(near(valueOf("", "<1, 2, 3> * <2, 2, 2>"), {2, 4, 6}));
+    CHECK(near(valueOf("", "<1, 2, 3> / 2"), {0.5, 1, 1.5}));
+    CHECK(near(valueOf("", "vrotate(x, <0, 0, 90>)"), {0, 1, 0}));
+    CHECK(near(valueOf("", "vrotate(x, <0, 90, 0>)"), {0, 0, -1}));
+    CHECK(near(valueOf("", "vaxis_rotate(x, y, 90)"), {0, 0, -1}));
+    CHECK(near(valueOf("", "vcross(x, y)"), {0, 0, 1}));
+    CHECK(near(valueOf("", "vnormalize(<0, 3, 4>)"), {0, 0.6, 0.8}));
+    CHECK(near(valueOf("#declare V = <1, 2, 3>;", "<V.z, V.y, V.x>"), {3, 2, 1}));
+    CHECK(near(valueOf("", "1"), {1, 1, 1}));
+}
+
+TEST_CASE("colours", "[lang][interpreter]") {
+    auto colour = [](const std::string& c) {
+        Run r = run("background { " + c + " }");
+        return ok(r).background;
+    };
+    CHECK(colour("rgb <1, 0.5, 0>") == Color{{1, 0.5, 0}, 0, 0});
+    CHECK(colour("rgb 0.5") == Color{{0.5, 0.5, 0.5}, 0, 0});
+    CHECK(colour("color 0.5") == Color{{0.5, 0.5, 0.5}, 0.5, 0.5});  // POV-Ray: all five
+    CHECK(colour("color rgb <1, 2, 3> filter 0.5") == Color{{1, 2, 3}, 0.5, 0});
+    CHECK(colour("color <1, 2, 3, 4>") == Color{{1, 2, 3}, 4, 0});
+    CHECK(colour("rgbt <1, 2, 3, 4> + 1") == Color{{2, 3, 4}, 0, 5});
+    CHECK(colour("rgbft <1, 2, 3, 4, 5>") == Color{{1, 2, 3}, 4, 5});
+    CHECK(colour("colour red 1 green 0.5") == Color{{1, 0.5, 0}, 0, 0});
+    CHECK(colour("rgb <1, 0, 0> * 0.5") == Color{{0.5, 0, 0}, 0, 0});
+    CHECK(colour("(rgb <1, 0, 0> + rgb <0, 1, 0>) / 2") == Color{{0.5, 0.5, 0}, 0, 0});
+    Run gray = run("#declare C = rgb <1, 0, 0>; background { rgb C.gray }");
+    CHECK(ok(gray).background.rgb.x == Approx(0.297));
+}
+
+TEST_CASE("#if, #while, #for, #declare, #local, #undef", "[lang][interpreter]") {
+    Run run1 = run(R"(
+        #declare N = 0;
+        #for (I, 0, 1, 0.1) #declare N = N + 1; #end
+        #declare M = 0;
+        #for (J, 1, 3) #declare M = M + 1; #declare J = J + 1; #end
+        #declare K = 0;
+        #while (K < 3) #declare K = K + 1; #end
+        #if (N = 11 & M = 2 & I > 1 & K = 3) sphere { 0, 1 } #elseif (1) box { 0, 1 } #else plane { y, 0 } #end
+        #ifdef (N) sphere { 0, 2 } #end
+        #undef N
+        #ifndef (N) sphere { 0, 3 } #else box { 0, 1 } #end
+        #for (L, 3, 1) sphere { 0, 9 } #end
+        #for (L, 3, 1, -1) sphere { 0, L } #end
+    )");
+
+    const auto& a = ok(run1);
+    REQUIRE(a.objects.size() == 6);
+    CHECK(std::get<SphereShape>(a.objects[0].shape).radius == 1);
+    CHECK(std::get<SphereShape>(a.objects[1].shape).radius == 2);
+    CHECK(std::get<SphereShape>(a.objects[2].shape).radius == 3);
+    CHECK(std::get<SphereShape>(a.objects[3].shape).radius == 3);
+    CHECK(std::get<SphereShape>(a.objects[5].shape).radius == 1);
+}
+
+TEST_CASE("#include searches beside the file, then -L; #local stays in its file", "[lang][interpreter]") {
+    const auto dir = scratchDir("include");
+    std::filesystem::create_directories(dir / "lib");
+    writeFile(dir / "lib" / "shapes.inc", "#local Hidden = 5;\n#declare Radius = 2;\nsphere { 0, Radius }\n");
+    writeFile(dir / "near.inc", "#declare Near = 1;\n");
+    writeFile(dir / "scene.pov",
+              "#include \"near.inc\"\n#include \"shapes.inc\"\nsphere { 0, Near + Radius }\n"
+              "#ifdef (Hidden) #error \"#local leaked\" #end\n");
+    InterpreterOptions options;
+    options.includePaths = {dir / "lib"};
+    Diagnostics diagnostics;
+    auto scene = interpretFile(dir / "scene.pov", options, diagnostics);
+    REQUIRE(scene);
+    REQUIRE(scene->objects.size() == 2);
+    CHECK(std::get<SphereShape>(scene->objects[1].shape).radius == 3);
+    CHECK(*scene->objects[0].loc.file == std::filesystem::weakly_canonical(dir / "lib" / "shapes.inc").string());
+    CHECK(scene->objects[0].loc.line == 3);
+
+    Diagnostics missing;
+    CHECK_FALSE(interpretFile(dir / "scene.pov", {}, missing));
+    REQUIRE(missing.all().size() == 1);
+    CHECK_THAT(missing.all()[0].message, Contains("cannot find include file 'shapes.inc'"));
+}
+
+TEST_CASE("#include cycles and runaway depth are errors", "[lang][interpreter]") {
+    const auto dir = scratchDir("cycle");
+    writeFile(dir / "a.pov", "#include \"b.inc\"\n");
+    writeFile(dir / "b.inc", "#include \"a.pov\"\n");
+    Diagnostics d;
+    CHECK_FALSE(interpretFile(dir / "a.pov", {}, d));
+    REQUIRE(d.hasErrors());
+    CHECK_THAT(d.all()[0].message, Contains("#include cycle: a.pov -> b.inc -> a.pov"));
+
+    // A chain 70 files deep (no cycle).
+    auto name = [](int i) { return std::string("d") += std::to_string(i) += ".inc"; };
+    for (int i = 0; i < 70; ++i) writeFile(dir / name(i), std::string("#include \"") += name(i + 1) += "\"\n");
+    writeFile(dir / "d70.inc", "sphere { 0, 1 }\n");
+    Diagnostics deep;
+    CHECK_FALSE(interpretFile(dir / "d0.inc", {}, deep));
+    REQUIRE(deep.hasErrors());
+    CHECK_THAT(deep.all()[0].message, Contains("nested more than 64 deep"));
+}
+
+TEST_CASE("command-line defines and the clock", "[lang][interpreter]") {
+    InterpreterOptions options;
+    options.defines = {{"Size", "2.5"}, {"Where", "<1, 2, 3>"}, {"Name", "hello"}, {"Q", "\"quoted\""}};
+    options.clock = 0.25;
+    Run run2 = run("sphere { Where, Size + clock }\n"
+                               "#if (strlen(Name) = 5 & strlen(Q) = 6) box { 0, 1 } #end",
+                               options);
+
+    const auto& scene = ok(run2);
+    REQUIRE(scene.objects.size() == 2);
+    const auto& s = std::get<SphereShape>(scene.objects[0].shape);
+    CHECK(s.center == Vec3(1, 2, 3));
+    CHECK(s.radius == 2.75);
+}
+
+TEST_CASE("transforms and textures follow POV-Ray's order rules", "[lang][interpreter]") {
+    Run run3 = run(R"(
+        sphere { 0, 1 translate x pigment { checker } translate y }
+        union {
+          sphere { 0, 1 pigment { rgb 1 } }
+          sphere { 0, 1 }
+          translate z
+          pigment { rgb <1, 0, 0> }
+          scale 2
+        }
+        #declare U = union { sphere { 0, 1 } pigment { rgb <0, 1, 0> } }
+        object { U pigment { rgb <0, 0, 1> } }
+        sphere { 0, 1 pigment { rgb 1 } pigment { scale 3 } }
+    )");
+
+    const auto& scene = ok(run3);
+    REQUIRE(scene.objects.size() == 5);
+    const Object& a = scene.objects[0];
+    CHECK(a.worldFromObject.point(Vec3(0)) == Vec3(1, 1, 0));
+    CHECK(a.texture->pigment.kind == Pigment::Kind::Checker);
+    CHECK(a.texture->pigment.color1.rgb == Vec3(0, 0, 1));  // POV-Ray's default checker colours
+    CHECK(a.texture->pigment.color2.rgb == Vec3(0, 1, 0));
+    CHECK(a.texture->pigment.worldFromPattern.point(Vec3(0)) == Vec3(0, 1, 0));  // only what came after
+
+    const Object& own = scene.objects[1];
+    const Object& inherited = scene.objects[2];
+    CHECK(own.texture->pigment.color1.rgb == Vec3(1, 1, 1));
+    CHECK(inherited.texture->pigment.color1.rgb == Vec3(1, 0, 0));
+    CHECK(own.worldFromObject.point(Vec3(0)) == Vec3(0, 0, 2));
+    CHECK(own.texture->pigment.worldFromPattern.point(Vec3(0)) == Vec3(0, 0, 2));
+    CHECK(inherited.texture->pigment.worldFromPattern.point(Vec3(1)) == Vec3(2, 2, 2));
+
+    // object { U pigment {…} } changes the union's texture, as in POV-Ray.
+    CHECK(scene.objects[3].texture->pigment.color1.rgb == Vec3(0, 0, 1));
+    // A second pigment { } modifies the first.
+    CHECK(scene.objects[4].texture->pigment.color1.rgb == Vec3(1, 1, 1));
+    CHECK(scene.objects[4].texture->pigment.worldFromPattern.point(Vec3(1)) == Vec3(3, 3, 3));
+}
+
+TEST_CASE("equal textures are shared", "[lang][interpreter]") {
+    Run run4 = run("#declare C = rgb <1, 0, 0>;\n"
+                               "sphere { 0, 1 pigment { C } }\nsphere { x, 1 pigment { C } }\n"
+                               "sphere { y, 1 }\nsphere { z, 1 }\nsphere { 0, 1 pigment { rgb 1 } }\n");
+
+    const auto& scene = ok(run4);
+    REQUIRE(scene.objects.size() == 5);
+    CHECK(scene.objects[0].texture == scene.objects[1].texture);
+    CHECK(scene.objects[2].texture == scene.objects[3].texture);
+    CHECK(scene.objects[0].texture != scene.objects[4].texture);
+}
+
+TEST_CASE("the camera's final vectors", "[lang][interpreter]") {
+    Run run5 = run("sphere { 0, 1 }");
+
+    const auto& d = ok(run5).camera;
+    CHECK(d.location == Vec3(0, 0, 0));
+    CHECK(d.direction == Vec3(0, 0, 1));
+    CHECK(d.right == Vec3(1.33, 0, 0));
+    CHECK(d.up == Vec3(0, 1, 0));
+
+    Run run6 = run("camera { location <0, 0, -5> look_at <0, 0, 0> angle 90 }");
+
+
+    const auto& c = ok(run6).camera;
+    CHECK(near(c.location, {0, 0, -5}));
+    CHECK(c.direction.z == Approx(1.33 / 2));  // 0.5 * |right| / tan(45°)
+    CHECK(near(c.right, {1.33, 0, 0}));
+    CHECK(near(c.up, {0, 1, 0}));
+
+    // Looking along +x: right turns to -z (left-handed), up stays y.
+    Run run7 = run("camera { location 0 look_at x }");
+
+    const auto& side = ok(run7).camera;
+    CHECK(near(side.direction, {1, 0, 0}));
+    CHECK(glm::length(side.right - Vec3(0, 0, -1.33)) < 1e-12);
+    CHECK(near(side.up, {0, 1, 0}));
+
+    // A right-handed setup (right = -x) keeps its handedness through look_at.
+    Run run8 = run("camera { right -x*4/3 location <0, 0, 5> look_at 0 }");
+
+    const auto& rh = ok(run8).camera;
+    CHECK(near(rh.direction, {0, 0, -1}));
+    CHECK(glm::length(rh.right - Vec3(4.0 / 3, 0, 0)) < 1e-12);
+
+    // Transforms apply last, whatever their place.
+    Run run9 = run("camera { translate <1, 2, 3> location 0 look_at z }");
+
+    const auto& moved = ok(run9).camera;
+    CHECK(near(moved.location, {1, 2, 3}));
+    CHECK(near(moved.direction, {0, 0, 1}));
+
+    Run run10 = run("camera { sky x location 0 look_at z }");
+
+
+    const auto& tilted = ok(run10).camera;
+    CHECK(near(tilted.up, {1, 0, 0}));
+}
+
+TEST_CASE("lights", "[lang][interpreter]") {
+    Run run11 = run(R"(
+        light_source { <1, 2, 3>, rgb <1, 0.5, 0.25> }
+        light_source { 0, 1 jitter area_light x, 2*z, 3, 4 adaptive 1 circular orient translate y }
+        light_source { 0, 1 fade_distance 5 fade_power 2 shadowless asos { eps 0.5 } }
+        #declare L = light_source { <0, 10, 0>, rgb 1 }
+        light_source { L translate x }
+        union { sphere { 0, 1 } light_source { 0, 1 } translate z }
+    )");
+
+    const auto& scene = ok(run11);
+    REQUIRE(scene.lights.size() == 5);
+    CHECK(scene.lights[0].position == Vec3(1, 2, 3));
+    CHECK(scene.lights[0].color == Vec3(1, 0.5, 0.25));
+    REQUIRE(scene.lights[1].area);
+    const AreaLight& a = *scene.lights[1].area;
+    CHECK(a.axis1 == Vec3(1, 0, 0));
+    CHECK(a.axis2 == Vec3(0, 0, 2));
+    CHECK(a.size1 == 3);
+    CHECK(a.size2 == 4);
+    CHECK(a.adaptive == 1);
+    CHECK(a.jitter);
+    CHECK(a.circular);
+    CHECK(a.orient);
+    CHECK(scene.lights[1].position == Vec3(0, 1, 0));
+    CHECK(scene.lights[2].fadeDistance == 5);
+    CHECK(scene.lights[2].fadePower == 2);
+    CHECK(scene.lights[2].shadowless);
+    CHECK(scene.lights[2].asos.eps == 0.5);
+    CHECK(scene.lights[3].position == Vec3(1, 10, 0));
+    CHECK(scene.lights[4].position == Vec3(0, 0, 1));
+}
+
+TEST_CASE("global settings, background, asos options, #version", "[lang][interpreter]") {
+    Run run12 = run(R"(
+        #version 3.6;
+        global_settings { assumed_gamma 2.2 max_trace_level 7 ambient_light rgb 0.5 asos { eps 0.01 max 4 jitter off } }
+        background { color rgb <0.1, 0.2, 0.3> }
+        union { sphere { 0, 1 asos { max 2 } } sphere { 0, 1 no_shadow } asos { eps 0.5 jitter on } no_shadow }
+        #version 3.7;
+    )");
+
+    const auto& scene = ok(run12);
+    CHECK(scene.version == Approx(3.7));
+    CHECK(scene.globals.assumedGamma == 2.2);
+    CHECK(scene.globals.maxTraceLevel == 7);
+    CHECK(scene.globals.ambientLight == Vec3(0.5));
+    CHECK(scene.globals.asos.eps == 0.01);
+    CHECK(scene.globals.asos.maxLevel == 4);
+    CHECK(scene.globals.asos.jitter == false);
+    CHECK(scene.background.rgb == Vec3(0.1, 0.2, 0.3));
+    REQUIRE(scene.objects.size() == 2);
+    CHECK(scene.objects[0].asos.maxLevel == 2);
+    CHECK(scene.objects[0].asos.eps == 0.5);
+    CHECK(scene.objects[0].asos.jitter == true);
+    CHECK(scene.objects[0].noShadow);
+}
+
+TEST_CASE("every semantic error of a file is reported", "[lang][interpreter]") {
+    Run r = run("sphere { 0, -1 }\n"
+                "cylinder { 0, 0, 1 }\n"
+                "#declare A = Undeclared + 1;\n"
+                "sphere { A, 1 }\n"  // A is poisoned: no second error
+                "polygon { 2, <0, 0>, <1, 0> }\n"
+                "light_source { 0, 1 area_light x, z, 0, 2 }\n"
+                "global_settings { asos { eps 0 max -1 } }\n"
+                "sphere { 0, 1 scale 0 }\n");
+    CHECK_FALSE(r.scene);
+    CHECK(r.errors() ==
+          "1:13: the radius of a sphere must be positive, not -1\n"
+          "2:15: the base and cap points of a cylinder are the same point\n"
+          "3:14: 'Undeclared' is not declared\n"
+          "5:11: a polygon needs a whole number of at least 3 points, not 2\n"
+          "6:38: expected a whole number of at least 1, found 0\n"
+          "7:30: eps must be positive, not 0\n"
+          "7:36: max must be a whole number, at least 0, not -1\n"
+          "8:21: scale by zero (<0, 0, 0>) flattens everything\n");
+}
+
+TEST_CASE("#error stops; #debug and #warning are reported with their place", "[lang][interpreter]") {
+    Run r = run("#debug \"hello\\n\"\n#warning concat(\"w\", str(1, 0, 0))\n#error \"stop\"\nsphere { 0, -1 }\n");
+    CHECK_FALSE(r.scene);
+    REQUIRE(r.diagnostics.all().size() == 3);
+    CHECK(r.diagnostics.all()[0].severity == Severity::Debug);
+    CHECK(r.diagnostics.all()[0].message == "hello");
+    CHECK(r.diagnostics.all()[1].severity == Severity::Warning);
+    CHECK(r.diagnostics.all()[1].message == "w1");
+    CHECK(r.diagnostics.all()[2].message == "#error: stop");
+    CHECK(r.diagnostics.all()[2].loc.line == 3);
+}
+
+TEST_CASE("endless loops and runaway error counts stop", "[lang][interpreter]") {
+    InterpreterOptions options;
+    options.maxLoopIterations = 1000;
+    Run loop = run("#while (1) #end", options);
+    CHECK_FALSE(loop.scene);
+    CHECK_THAT(loop.errors(), Contains("more than 1000 loop iterations"));
+
+    Run many = run("#for (I, 1, 1000) sphere { 0, -1 } #end");
+    CHECK_FALSE(many.scene);
+    CHECK(many.diagnostics.all().size() == 101);  // 100 errors, then a note
+    CHECK_THAT(many.diagnostics.all().back().message, Contains("too many errors"));
+}
