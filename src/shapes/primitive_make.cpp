@@ -103,6 +103,22 @@ PolygonLayout layOutPolygon(const std::vector<Vec3>& points) {
     return out;
 }
 
+// The rigid placement of an axis from base to cap; throws when they coincide.
+struct AxisPlacement {
+    Mat3 objectFromLocal;
+    double length;
+};
+
+AxisPlacement placeAxis(const Vec3& base, const Vec3& cap, const char* shape) {
+    const Vec3 axis = cap - base;
+    const double length = glm::length(axis);
+    const double scale = std::abs(base.x) + std::abs(base.y) + std::abs(base.z) + std::abs(cap.x) +
+                         std::abs(cap.y) + std::abs(cap.z);
+    if (!(length > 1e-12 * scale) || length == 0.0)
+        reject(std::string(shape) + ": the base and cap points coincide (degenerate " + shape + ")");
+    return {frameAroundAxis(axis / length), length};
+}
+
 }  // namespace
 
 Primitive Primitive::make(const Shape& shape, const Transform& worldFromObject) {
@@ -117,6 +133,28 @@ Primitive Primitive::make(const Shape& shape, const Transform& worldFromObject) 
         requireFinite(b->corner2, "box", "second corner");
         return Primitive(Box(b->corner1, b->corner2),
                          LocalFrame::make(worldFromObject, Mat3(1.0), Vec3(0.0)), Box::kName);
+    }
+    if (const auto* c = std::get_if<CylinderShape>(&shape)) {
+        requireFinite(c->base, "cylinder", "base point");
+        requireFinite(c->cap, "cylinder", "cap point");
+        requireNonNegative(c->radius, "cylinder", "radius");
+        const AxisPlacement axis = placeAxis(c->base, c->cap, "cylinder");
+        return Primitive(Cylinder(c->radius, axis.length, c->open),
+                         LocalFrame::make(worldFromObject, axis.objectFromLocal, c->base),
+                         Cylinder::kName);
+    }
+    if (const auto* c = std::get_if<ConeShape>(&shape)) {
+        requireFinite(c->base, "cone", "base point");
+        requireFinite(c->cap, "cone", "cap point");
+        requireNonNegative(c->baseRadius, "cone", "base radius");
+        requireNonNegative(c->capRadius, "cone", "cap radius");
+        const AxisPlacement axis = placeAxis(c->base, c->cap, "cone");
+        const LocalFrame frame = LocalFrame::make(worldFromObject, axis.objectFromLocal, c->base);
+        if (c->baseRadius == c->capRadius)  // as POV-Ray: really a cylinder
+            return Primitive(Cylinder(c->baseRadius, axis.length, c->open), frame,
+                             TruncatedCone::kName);
+        return Primitive(TruncatedCone(c->baseRadius, c->capRadius, axis.length, c->open), frame,
+                         TruncatedCone::kName);
     }
     if (const auto* d = std::get_if<DiscShape>(&shape)) {
         requireFinite(d->center, "disc", "centre");
@@ -144,7 +182,7 @@ Primitive Primitive::make(const Shape& shape, const Transform& worldFromObject) 
         return Primitive(Plane(p->normal / len, p->distance),
                          LocalFrame::make(worldFromObject, Mat3(1.0), Vec3(0.0)), Plane::kName);
     }
-    reject("this shape is not supported yet by the geometry module");
+    reject("unknown shape");
 }
 
 }  // namespace asos
