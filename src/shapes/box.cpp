@@ -135,7 +135,8 @@ ConeClass Box::classifyOutside(const LocalCone& cone) const {
         if (f.bounded) {
             const int i = (a + 1) % 3, j = (a + 2) % 3;
             const Vec2 half = footprintHalfWidths(f);
-            const double slack = 1e-12 * (f.a + std::abs(f.center.x) + std::abs(f.center.y));
+            const double slack =
+                1e-12 * (f.a + std::abs(f.center.x) + std::abs(f.center.y)) + cone.absTol;
             if (f.center.x - half.x > lo_[i] + slack && f.center.x + half.x < hi_[i] - slack &&
                 f.center.y - half.y > lo_[j] + slack && f.center.y + half.y < hi_[j] - slack &&
                 front[a] != 0) {

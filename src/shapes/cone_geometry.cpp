@@ -57,14 +57,14 @@ double ellipseMaxDistance(double a, double b, double y0, double y1) {
     return std::hypot(y0 - x0, y1 - x1);
 }
 
-DiscRelation footprintVsDisc(const Footprint& f, const Vec2& center, double rho) {
+DiscRelation footprintVsDisc(const Footprint& f, const Vec2& center, double rho, double absTol) {
     const double a = f.a, b = f.b;
     if (!(b > 0.0)) return DiscRelation::Crossing;
     const Vec2 d = center - f.center;
     const double q1 = std::abs(glm::dot(d, f.major));
     const double q2 = std::abs(d.y * f.major.x - d.x * f.major.y);
     const double qq = q1 * q1 + q2 * q2;
-    const double tol = 1e-12 * (std::sqrt(qq) + a + rho);
+    const double tol = 1e-12 * (std::sqrt(qq) + a + rho) + absTol;
     const double support = std::sqrt(a * a * q1 * q1 + b * b * q2 * q2);
     // |y - q|^2 <= |q|^2 + 2 S + a^2 over the ellipse (S its support along q).
     const double maxBound = std::sqrt(qq + 2.0 * support + a * a);
@@ -84,15 +84,15 @@ DiscRelation footprintVsDisc(const Footprint& f, const Vec2& center, double rho)
 bool circleMayMeetCone(const LocalCone& cone, double zc, double rho, const Arc& arc) {
     if (!(rho > 0.0)) {
         // A point: in the cone or not.
-        return conePoint(cone, Vec3(0.0, 0.0, zc) - cone.apex).inside;
+        return coneDistance(cone, conePoint(cone, Vec3(0.0, 0.0, zc) - cone.apex)) <= cone.absTol;
     }
     const Footprint f = footprintOnZPlane(cone, zc);
     if (!f.bounded) return !ballOutsideAngular(cone, Vec3(0.0, 0.0, zc), rho);
-    if (footprintVsDisc(f, Vec2(0.0), rho) != DiscRelation::Crossing) return false;
+    if (footprintVsDisc(f, Vec2(0.0), rho, cone.absTol) != DiscRelation::Crossing) return false;
     if (std::isfinite(arc.kappa)) {
         // The ellipse lies wholly on the side of the line away from the arc.
         const double low = glm::dot(arc.nu, f.center) - footprintSupport(f, arc.nu);
-        if (low > arc.kappa + 1e-12 * (std::abs(arc.kappa) + rho + f.a)) return false;
+        if (low > arc.kappa + 1e-12 * (std::abs(arc.kappa) + rho + f.a) + cone.absTol) return false;
     }
     return true;
 }

@@ -81,6 +81,7 @@ struct ConePoint {
     Vec3 w;
     double sigma;
     Vec3 perp;
+    double r2;  // |w|^2
     double q;
     bool inside;
 };
@@ -92,60 +93,70 @@ inline ConePoint conePoint(const LocalCone& cone, const Vec3& w) {
     p.sigma = glm::dot(w, cone.axis);
     p.perp = w - p.sigma * cone.axis;
     const double perp2 = glm::dot(p.perp, p.perp);
+    p.r2 = perp2 + p.sigma * p.sigma;
     p.q = s * s * p.sigma * p.sigma - c * c * perp2;
     p.inside = c >= 0.0 ? (p.sigma >= 0.0 && p.q >= 0.0) : (p.sigma >= 0.0 || p.q <= 0.0);
     return p;
 }
 
-// Whether the segment between two cone points meets the infinite cone.
-// Exact up to rounding (the cone is already widened by the angle margin).
-// q is a quadratic along the segment; it is expanded about the segment's
-// point nearest the apex, so that a segment passing very close to the apex
-// (where q is tiny next to its values at the ends) is still resolved.
+// The distance from a point to the cone (0 inside).
+inline double coneDistance(const LocalCone& cone, const ConePoint& p) {
+    if (p.inside) return 0.0;
+    const double c = cone.cosHalf, s = cone.sinHalf;
+    const double dp = glm::length(p.perp);
+    if (p.sigma * c + dp * s < 0.0) return std::sqrt(p.r2);  // nearest is the apex
+    return std::max(0.0, dp * c - p.sigma * s);
+}
+
+// Whether the segment between two cone points meets the cone grown by the
+// distance tolerance absTol (rounding of positions of the size of the scene).
+// q is a quadratic along the segment, largest at its vertex (or at an end).
+// The vertex is located from the coefficients, but membership is then
+// decided afresh from the point itself: near its maximum q is tiny next to
+// its values at the ends (a thin cone, an edge close to the apex), where the
+// expanded polynomial would only return rounding noise.
 inline bool segmentMeetsCone(const LocalCone& cone, const ConePoint& a, const ConePoint& b) {
     if (a.inside || b.inside) return true;
     const double c = cone.cosHalf, s = cone.sinHalf;
-    // A cone wider than a hemisphere has a convex complement holding both ends.
-    if (c < 0.0) return false;
-    if (a.sigma < 0.0 && b.sigma < 0.0) return false;
-    const Vec3 e = b.w - a.w;
-    const double ee = glm::dot(e, e);
-    if (!(ee > 0.0)) return false;
-    const double tc = std::clamp(-glm::dot(a.w, e) / ee, 0.0, 1.0);
-    const ConePoint m = conePoint(cone, tc < 0.5 ? a.w + tc * e : b.w - (1.0 - tc) * e);
-    if (m.inside) return true;
-    const double se = glm::dot(e, cone.axis);
-    const Vec3 pe = e - se * cone.axis;
-    const double s2 = s * s, c2 = c * c;
-    // q(u) = A u^2 + 2 B u + C for the point at parameter tc + u.
-    const double qa = s2 * se * se - c2 * glm::dot(pe, pe);
-    const double qb = s2 * m.sigma * se - c2 * glm::dot(m.perp, pe);
-    const double qc = m.q;
-    auto q = [&](double u) { return (qa * u + 2.0 * qb) * u + qc; };
-    // Both sides of tc, each clipped to sigma >= 0 (in front of the apex).
-    const double ends[2][2] = {{-tc, 0.0}, {0.0, 1.0 - tc}};
-    for (const auto& end : ends) {
-        double u0 = end[0], u1 = end[1];
-        if (!(u1 > u0)) continue;
-        const double sigma0 = m.sigma + u0 * se, sigma1 = m.sigma + u1 * se;
-        if (sigma0 < 0.0 && sigma1 < 0.0) continue;
-        bool clipped0 = false, clipped1 = false;
-        if (sigma0 < 0.0) {
-            u0 = -m.sigma / se;
-            clipped0 = true;
-        } else if (sigma1 < 0.0) {
-            u1 = -m.sigma / se;
-            clipped1 = true;
-        }
-        // Where the clip cuts the segment, sigma = 0: q >= 0 only on the apex.
-        if (clipped0 && q(u0) >= 0.0) return true;
-        if (clipped1 && q(u1) >= 0.0) return true;
-        if (qa < 0.0) {
-            const double uv = -qb / qa;
-            if (uv > u0 && uv < u1 && qc + qb * uv >= 0.0) return true;
-        }
+    const double tol = cone.absTol;
+    if (c < 0.0) {
+        // Wider than a hemisphere: the complement is convex, so the segment
+        // stays out only if both ends are (by more than the tolerance).
+        return coneDistance(cone, a) <= tol || coneDistance(cone, b) <= tol;
     }
-    return false;
+    if (a.sigma < 0.0 && b.sigma < 0.0) {
+        // Both behind the apex: only a segment passing the apex comes near.
+        const Vec3 e = b.w - a.w;
+        if (!(glm::dot(e, e) > 0.0)) return a.r2 <= tol * tol;
+        const double tc = std::clamp(-glm::dot(a.w, e) / glm::dot(e, e), 0.0, 1.0);
+        const Vec3 nearest = a.w + tc * e;
+        return glm::dot(nearest, nearest) <= tol * tol;
+    }
+    const Vec3 e = b.w - a.w;
+    const double se = b.sigma - a.sigma;
+    // The part of the segment in front of the apex (sigma >= 0).
+    double t0 = 0.0, t1 = 1.0;
+    if (a.sigma < 0.0) t0 = -a.sigma / se;
+    else if (b.sigma < 0.0) t1 = -a.sigma / se;
+    const Vec3 pe = b.perp - a.perp;
+    const double s2 = s * s, c2 = c * c;
+    // q(t) = A t^2 + 2 B t + C.
+    const double qa = s2 * se * se - c2 * glm::dot(pe, pe);
+    const double qb = s2 * a.sigma * se - c2 * glm::dot(a.perp, pe);
+    const double qc = a.q;
+    auto q = [&](double t) { return (qa * t + 2.0 * qb) * t + qc; };
+    double best = q(t0) >= q(t1) ? t0 : t1;
+    if (qa < 0.0) {
+        const double tv = -qb / qa;
+        if (tv > t0 && tv < t1) best = tv;
+    }
+    // Far from the cone, q is well below zero: |q| >= dist * (c |perp| + s sigma)
+    // and c |perp| + s sigma <= sqrt(2) |w|.
+    const double qBest = q(best);
+    const double w2 = std::max(a.r2, b.r2);
+    if (qBest < 0.0 && qBest * qBest > 2.0 * w2 * tol * tol) return false;
+    const ConePoint m = conePoint(cone, best < 0.5 ? a.w + best * e : b.w - (1.0 - best) * e);
+    return coneDistance(cone, m) <= tol;
 }
 
 // True when no point of the ball (centre m, radius r) lies in the infinite
@@ -255,7 +266,8 @@ enum class DiscRelation { EllipseInside, EllipseOutside, Crossing };
 
 // The footprint ellipse against the disc (centre, radius rho) in its plane;
 // Crossing when the disc's circle meets the ellipse (or when unsure).
-DiscRelation footprintVsDisc(const Footprint& f, const Vec2& center, double rho);
+// absTol: an absolute distance tolerance (rounding of positions).
+DiscRelation footprintVsDisc(const Footprint& f, const Vec2& center, double rho, double absTol);
 
 // Distances from the point (y0, y1), y0, y1 >= 0, to the ellipse
 // (x/a)^2 + (y/b)^2 = 1 with a >= b > 0: the nearest (for a point outside)

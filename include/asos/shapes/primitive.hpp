@@ -15,10 +15,14 @@
 #include "asos/geometry/transform.hpp"
 #include "asos/scene/description.hpp"
 #include "asos/shapes/box.hpp"
+#include "asos/shapes/cylinder.hpp"
+#include "asos/shapes/disc.hpp"
 #include "asos/shapes/local_cone.hpp"
 #include "asos/shapes/local_frame.hpp"
 #include "asos/shapes/plane.hpp"
+#include "asos/shapes/polygon.hpp"
 #include "asos/shapes/sphere.hpp"
+#include "asos/shapes/truncated_cone.hpp"
 
 namespace asos {
 
@@ -41,7 +45,8 @@ public:
     const LocalFrame& frame() const { return frame_; }
 
 private:
-    using LocalShape = std::variant<Sphere, Box, Plane>;
+    using LocalShape =
+        std::variant<Sphere, Box, TruncatedCone, Cylinder, Disc, Polygon, Plane>;
 
     Primitive(LocalShape shape, LocalFrame frame, const char* name);
     ConeClass classifyGeneral(const PreparedCone& cone) const;

@@ -1,0 +1,38 @@
+#pragma once
+// POV-Ray's disc { centre, normal, radius [, hole radius] }: the annulus
+// hole <= |x - centre| <= radius in the plane through the centre. The local
+// frame puts it in z = 0, centred on the origin, the normal along +z.
+#include <optional>
+
+#include "asos/geometry/bounds.hpp"
+#include "asos/geometry/cone.hpp"
+#include "asos/geometry/ray.hpp"
+#include "asos/shapes/local_cone.hpp"
+#include "asos/shapes/local_hit.hpp"
+
+namespace asos {
+
+class Disc {
+public:
+    static constexpr const char* kName = "disc";
+
+    Disc(double radius, double holeRadius) : radius_(radius), hole_(holeRadius) {}
+
+    bool empty() const { return !(radius_ > hole_); }
+    BoundingSphere boundingSphere() const { return {Vec3(0.0), radius_}; }
+    Bounds3 worldBounds(const Mat3& worldFromLocal, const Vec3& offset) const;
+
+    std::optional<LocalHit> intersect(const Ray& ray, double tMin, double tMax) const;
+    bool intersectAny(const Ray& ray, double tMin, double tMax) const {
+        return intersect(ray, tMin, tMax).has_value();
+    }
+    // The two circles are the boundary, tested against the cone's elliptic
+    // footprint in the disc's plane; see docs/geometry.md.
+    ConeClass classify(const LocalCone& cone) const;
+
+private:
+    double radius_;
+    double hole_;
+};
+
+}  // namespace asos

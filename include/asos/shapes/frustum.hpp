@@ -1,0 +1,83 @@
+#pragma once
+// The geometry shared by POV-Ray's cylinder and cone: in the local frame the
+// axis runs along +z from 0 to length, the radius goes linearly from r0 at
+// z = 0 to r1 at z = length, with caps (discs) at both ends unless open.
+// Cylinder and TruncatedCone own their ray tests; the cone classification,
+// the same for both, lives here.
+#include <optional>
+
+#include "asos/geometry/bounds.hpp"
+#include "asos/geometry/cone.hpp"
+#include "asos/geometry/ray.hpp"
+#include "asos/shapes/local_cone.hpp"
+#include "asos/shapes/local_hit.hpp"
+
+namespace asos {
+
+class Frustum {
+public:
+    Frustum(double r0, double r1, double length, bool capped);
+
+    double r0() const { return r0_; }
+    double r1() const { return r1_; }
+    double length() const { return length_; }
+    bool capped() const { return capped_; }
+    bool empty() const { return !(r0_ > 0.0 || r1_ > 0.0); }
+    double radiusAt(double z) const { return r0_ + slope_ * z; }
+
+    BoundingSphere boundingSphere() const { return ball_; }
+    Bounds3 worldBounds(const Mat3& worldFromLocal, const Vec3& offset) const;
+
+    // The nearest hit of the surface (side, and caps unless open) in [tMin, tMax].
+    std::optional<LocalHit> intersect(const Ray& ray, double tMin, double tMax) const;
+    // Outside a capped solid: Full iff the cone avoids the silhouette (the two
+    // contour generators and the rim arcs between a face turned to the apex and
+    // one turned away) and its axis hits; an open surface counts both rims
+    // whole. See docs/geometry.md.
+    ConeClass classify(const LocalCone& cone) const;
+
+private:
+public:
+    // The part of the line o + t d inside the capped solid, and which part
+    // of the surface it enters and leaves through (0 side, 1 base, 2 cap).
+    // Intersecting the slab's and the side's intervals leaves no crack at
+    // the rims for a ray to slip through.
+    struct Interval {
+        bool hit = false;
+        double enter = 0.0, exit = 0.0;
+        int enterPart = 0, exitPart = 0;
+    };
+    Interval solidInterval(const Vec3& o, const Vec3& d) const;
+
+private:
+    struct SideQuadratic {
+        double centerZ;  // the centre on the axis the line is expanded about
+        double shift;    // t of the line's point nearest it
+        Vec3 o;          // that point, relative to the centre
+        double a, b, c;  // the side: a u^2 + 2 b u + c = 0 at t = shift + u
+        double roots[2];
+        int count;
+    };
+    SideQuadratic sideQuadratic(const Vec3& origin, const Vec3& d) const;
+    // Whether the ray o + t d, t >= 0, meets the side surface.
+    bool sideHitAhead(const Vec3& o, const Vec3& d) const;
+    // Distance from a point (rho, z) of a meridian half-plane to the solid
+    // (capped) or to the side surface (open).
+    double distanceTo(double rho, double z) const;
+    // Distance from a point inside the solid to its boundary, from below.
+    double depthInside(double rho, double z) const;
+
+    ConeClass classifyInside(const LocalCone& cone, double rho, double dFar) const;
+    ConeClass classifyOnSurface(const LocalCone& cone, double rho, double tol, double dFar,
+                                bool nearSide, bool nearBottom, bool nearTop) const;
+    ConeClass classifyOff(const LocalCone& cone, double rho, double tol, double dNear,
+                          double dFar) const;
+
+    double r0_, r1_, length_;
+    double slope_;  // dr/dz
+    double slant_;  // sqrt(1 + slope^2)
+    bool capped_;
+    BoundingSphere ball_;
+};
+
+}  // namespace asos

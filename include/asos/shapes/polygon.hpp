@@ -1,0 +1,51 @@
+#pragma once
+// POV-Ray's polygon: a list of points forming one or more sub-polygons, each
+// closed by repeating its first point (the last is closed if it is not), all
+// in one plane; a point is inside under the even-odd rule over every edge.
+// The local frame puts the plane at z = 0 with the first point at the origin
+// and POV-Ray's normal (from the first two independent edges) along +z.
+#include <cstdint>
+#include <optional>
+#include <vector>
+
+#include "asos/geometry/bounds.hpp"
+#include "asos/geometry/cone.hpp"
+#include "asos/geometry/ray.hpp"
+#include "asos/shapes/local_cone.hpp"
+#include "asos/shapes/local_hit.hpp"
+
+namespace asos {
+
+class Polygon {
+public:
+    static constexpr const char* kName = "polygon";
+
+    // Vertices of each closed loop (without the repeated closing point) in
+    // the local plane; no loops makes an empty polygon (collinear points).
+    Polygon(std::vector<Vec2> vertices, std::vector<std::uint32_t> loopEnds);
+
+    bool empty() const { return loopEnds_.empty(); }
+    const std::vector<Vec2>& vertices() const { return vertices_; }
+    const std::vector<std::uint32_t>& loopEnds() const { return loopEnds_; }
+    BoundingSphere boundingSphere() const { return {Vec3(center_, 0.0), radius_}; }
+    Bounds3 worldBounds(const Mat3& worldFromLocal, const Vec3& offset) const;
+
+    // The even-odd rule at a point of the plane.
+    bool contains(double x, double y) const;
+    std::optional<LocalHit> intersect(const Ray& ray, double tMin, double tMax) const;
+    bool intersectAny(const Ray& ray, double tMin, double tMax) const {
+        return intersect(ray, tMin, tMax).has_value();
+    }
+    // The edges are the boundary: Marginal iff one meets the cone; else the
+    // cone's footprint is wholly inside or outside, as its axis point.
+    ConeClass classify(const LocalCone& cone) const;
+
+private:
+    std::vector<Vec2> vertices_;
+    std::vector<std::uint32_t> loopEnds_;  // exclusive end of each loop in vertices_
+    Vec2 lo_{0.0}, hi_{0.0};               // 2D bounding box
+    Vec2 center_{0.0};
+    double radius_ = 0.0;
+};
+
+}  // namespace asos

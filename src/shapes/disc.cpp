@@ -1,0 +1,75 @@
+#include "asos/shapes/disc.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "asos/shapes/cone_geometry.hpp"
+
+namespace asos {
+
+using namespace conegeom;
+
+Bounds3 Disc::worldBounds(const Mat3& m, const Vec3& offset) const {
+    // A circle of radius r spanned by columns u, v reaches r sqrt(u_i^2 + v_i^2)
+    // along world axis i.
+    Vec3 half;
+    for (int i = 0; i < 3; ++i) half[i] = radius_ * std::hypot(m[0][i], m[1][i]);
+    return {offset - half, offset + half};
+}
+
+std::optional<LocalHit> Disc::intersect(const Ray& ray, double tMin, double tMax) const {
+    if (ray.dir.z == 0.0 || empty()) return std::nullopt;
+    const double t = -ray.origin.z / ray.dir.z;
+    if (!(t >= tMin && t <= tMax)) return std::nullopt;
+    const double x = ray.origin.x + t * ray.dir.x, y = ray.origin.y + t * ray.dir.y;
+    const double r2 = x * x + y * y;
+    if (r2 > radius_ * radius_ || r2 < hole_ * hole_) return std::nullopt;
+    return LocalHit{t, Vec3(x, y, 0.0), Vec3(0.0, 0.0, 1.0)};
+}
+
+ConeClass Disc::classify(const LocalCone& cone) const {
+    if (empty()) return missClass();
+    if (ballOutside(cone, Vec3(0.0), radius_)) return missClass();
+    const Vec3& p = cone.apex;
+    const Vec3& axis = cone.axis;
+    const double h = -p.z;
+    const DotRange range = dotRange(cone, axis.z, std::sqrt(axis.x * axis.x + axis.y * axis.y));
+    // Depths of the annulus' points from the apex.
+    const double rho = std::hypot(p.x, p.y);
+    const double dNear = std::hypot(h, rho - std::clamp(rho, hole_, radius_));
+    const double dFar = std::hypot(h, rho + radius_);
+    const double hTol = 1e-15 * (std::abs(p.x) + std::abs(p.y) + std::abs(p.z)) + cone.absTol;
+    if (std::abs(h) <= hTol) {
+        // Apex in the plane (to rounding): rays cross at |t| <= hTol / |d.z|.
+        const double slope = range.lo > 0.0 ? range.lo : range.hi < 0.0 ? -range.hi : 0.0;
+        if (slope > 0.0) {
+            const double tHit = hTol / slope;
+            if (cone.surelyBefore(tHit)) return missClass();
+            return marginalClass(cone, cone.tMin, std::min(tHit, dFar));
+        }
+        return marginalClass(cone, cone.tMin, dFar);
+    }
+    const PlaneCrossing crossing = planeCrossing(range, h);
+    if (!crossing.any) return missClass();
+    const double tLo = std::max(crossing.tNear, dNear), tHi = std::min(crossing.tFar, dFar);
+    if (cone.surelyAfter(tLo) || cone.surelyBefore(tHi)) return missClass();
+
+    const Footprint f = footprintOnZPlane(cone, 0.0);
+    if (!f.bounded) {
+        // Some rays run parallel to the plane (or the footprint is too
+        // elongated to resolve): the rim, near the cone, may be in it.
+        return marginalClass(cone, tLo, tHi);
+    }
+    const DiscRelation outer = footprintVsDisc(f, Vec2(0.0), radius_, cone.absTol);
+    if (outer == DiscRelation::EllipseOutside) return missClass();
+    if (outer == DiscRelation::Crossing) return marginalClass(cone, tLo, tHi);
+    if (hole_ > 0.0) {
+        const DiscRelation inner = footprintVsDisc(f, Vec2(0.0), hole_, cone.absTol);
+        if (inner == DiscRelation::EllipseInside) return missClass();
+        if (inner == DiscRelation::Crossing) return marginalClass(cone, tLo, tHi);
+    }
+    if (cone.surelyWithin(f.tNear, f.tFar)) return fullClass(f.tNear, f.tFar);
+    return marginalClass(cone, f.tNear, f.tFar);
+}
+
+}  // namespace asos

@@ -1,0 +1,347 @@
+#include "asos/shapes/frustum.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "asos/shapes/cone_geometry.hpp"
+
+namespace asos {
+
+using namespace conegeom;
+
+namespace {
+
+double sq(double x) { return x * x; }
+
+double segmentDistance(Vec2 p, Vec2 a, Vec2 b) {
+    const Vec2 e = b - a;
+    const double ee = glm::dot(e, e);
+    const double t = ee > 0.0 ? std::clamp(glm::dot(p - a, e) / ee, 0.0, 1.0) : 0.0;
+    return glm::length(p - (a + t * e));
+}
+
+// The real roots of A t^2 + 2 B t + C (A may be 0); returns how many.
+int quadraticRoots(double a, double b, double c, double roots[2]) {
+    if (a == 0.0) {
+        if (b == 0.0) return 0;
+        roots[0] = -c / (2.0 * b);
+        return 1;
+    }
+    const double disc = b * b - a * c;
+    if (disc < 0.0) return 0;
+    const double q = -(b + std::copysign(std::sqrt(disc), b));
+    roots[0] = q / a;
+    roots[1] = q != 0.0 ? c / q : roots[0];
+    if (roots[0] > roots[1]) std::swap(roots[0], roots[1]);
+    return 2;
+}
+
+}  // namespace
+
+// The side's quadratic along a line, set up about the point of the line
+// nearest a centre on the axis: the tip of the side's cone when that is near
+// (rays grazing a tip would otherwise lose half their digits to the double
+// root there), else the middle of the axis (rays from far away).
+Frustum::SideQuadratic Frustum::sideQuadratic(const Vec3& origin, const Vec3& d) const {
+    SideQuadratic q;
+    q.centerZ = 0.5 * length_;
+    if (slope_ != 0.0) {
+        const double tipZ = -r0_ / slope_;
+        if (std::abs(tipZ - 0.5 * length_) <= 2.0 * length_) q.centerZ = tipZ;
+    }
+    const Vec3 center(0.0, 0.0, q.centerZ);
+    q.shift = glm::dot(center - origin, d) / glm::dot(d, d);
+    q.o = origin + q.shift * d - center;
+    const double k = slope_;
+    const double rz = radiusAt(q.centerZ) + k * q.o.z;
+    q.a = d.x * d.x + d.y * d.y - k * k * d.z * d.z;
+    q.b = q.o.x * d.x + q.o.y * d.y - k * d.z * rz;
+    q.c = q.o.x * q.o.x + q.o.y * q.o.y - rz * rz;
+    q.count = quadraticRoots(q.a, q.b, q.c, q.roots);
+    return q;
+}
+
+Frustum::Frustum(double r0, double r1, double length, bool capped)
+    : r0_(r0), r1_(r1), length_(length), slope_((r1 - r0) / length),
+      slant_(std::sqrt(1.0 + sq((r1 - r0) / length))), capped_(capped) {
+    // The smallest sphere centred on the axis holding both rims.
+    const double zc = std::clamp((r1 * r1 - r0 * r0 + length * length) / (2.0 * length), 0.0, length);
+    ball_ = {Vec3(0.0, 0.0, zc), std::sqrt(std::max(r0 * r0 + zc * zc, r1 * r1 + sq(length - zc)))};
+}
+
+Bounds3 Frustum::worldBounds(const Mat3& m, const Vec3& offset) const {
+    Bounds3 b;
+    const double radii[2] = {r0_, r1_};
+    for (int end = 0; end < 2; ++end) {
+        const Vec3 c = m * Vec3(0.0, 0.0, end ? length_ : 0.0) + offset;
+        Vec3 half;
+        for (int i = 0; i < 3; ++i) half[i] = radii[end] * std::hypot(m[0][i], m[1][i]);
+        b.extend(Bounds3{c - half, c + half});
+    }
+    return b;
+}
+
+std::optional<LocalHit> Frustum::intersect(const Ray& ray, double tMin, double tMax) const {
+    if (empty()) return std::nullopt;
+    double t;
+    int part;
+    if (capped_) {
+        const Interval in = solidInterval(ray.origin, ray.dir);
+        if (!in.hit) return std::nullopt;
+        if (in.enter >= tMin && in.enter <= tMax) {
+            t = in.enter;
+            part = in.enterPart;
+        } else if (in.exit >= tMin && in.exit <= tMax) {
+            t = in.exit;
+            part = in.exitPart;
+        } else {
+            return std::nullopt;
+        }
+    } else {
+        // Open: the side alone, between the rims.
+        const SideQuadratic q = sideQuadratic(ray.origin, ray.dir);
+        t = kInfinity;
+        for (int i = 0; i < q.count; ++i) {
+            const double z = q.centerZ + q.o.z + q.roots[i] * ray.dir.z;
+            const double tt = q.shift + q.roots[i];
+            if (z >= 0.0 && z <= length_ && tt >= tMin && tt <= tMax && tt < t) t = tt;
+        }
+        if (t == kInfinity) return std::nullopt;
+        part = 0;
+    }
+    Vec3 point = ray.at(t), normal;
+    if (part == 0) {
+        normal = Vec3(point.x, point.y, -slope_ * radiusAt(point.z));
+        if (normal == Vec3(0.0)) normal = Vec3(0.0, 0.0, slope_ > 0.0 ? -1.0 : 1.0);  // the tip
+    } else {
+        point.z = part == 1 ? 0.0 : length_;
+        normal = Vec3(0.0, 0.0, part == 1 ? -1.0 : 1.0);
+    }
+    return LocalHit{t, point, normal};
+}
+
+Frustum::Interval Frustum::solidInterval(const Vec3& origin, const Vec3& d) const {
+    const SideQuadratic side = sideQuadratic(origin, d);
+    const double shift = side.shift;
+    const double oz = side.centerZ + side.o.z;  // the line's z at the shifted origin
+    double lo = -kInfinity, hi = kInfinity;
+    int loPart = 0, hiPart = 0;
+    if (d.z == 0.0) {
+        if (oz < 0.0 || oz > length_) return {};
+    } else {
+        const double a = -oz / d.z, b = (length_ - oz) / d.z;
+        lo = std::min(a, b);
+        hi = std::max(a, b);
+        loPart = d.z > 0.0 ? 1 : 2;
+        hiPart = d.z > 0.0 ? 2 : 1;
+    }
+    // Inside the (double) cone of the side: A t^2 + 2 B t + C <= 0.
+    const double qa = side.a, qb = side.b, qc = side.c;
+    const double* roots = side.roots;
+    const int n = side.count;
+    auto clipLo = [&](double t) {
+        if (t > lo) {
+            lo = t;
+            loPart = 0;
+        }
+    };
+    auto clipHi = [&](double t) {
+        if (t < hi) {
+            hi = t;
+            hiPart = 0;
+        }
+    };
+    if (qa > 0.0) {
+        if (n < 2) return {};
+        clipLo(roots[0]);
+        clipHi(roots[1]);
+    } else if (qa < 0.0) {
+        if (n == 2) {
+            // Outside the roots; the slab holds one nappe's part.
+            const double loB = std::max(lo, roots[1]);
+            if (std::min(hi, roots[0]) - lo >= hi - loB) clipHi(roots[0]);
+            else clipLo(roots[1]);
+        }
+    } else if (n == 1) {
+        if (qb > 0.0) clipHi(roots[0]);
+        else clipLo(roots[0]);
+    } else if (qc > 0.0) {
+        return {};
+    }
+    if (!(lo <= hi)) return {};
+    return {true, shift + lo, shift + hi, loPart, hiPart};
+}
+
+bool Frustum::sideHitAhead(const Vec3& origin, const Vec3& d) const {
+    const SideQuadratic q = sideQuadratic(origin, d);
+    for (int i = 0; i < q.count; ++i) {
+        const double z = q.centerZ + q.o.z + q.roots[i] * d.z;
+        if (z >= 0.0 && z <= length_ && q.shift + q.roots[i] >= 0.0) return true;
+    }
+    return false;
+}
+
+double Frustum::distanceTo(double rho, double z) const {
+    const Vec2 p(rho, z);
+    const double side = segmentDistance(p, {r0_, 0.0}, {r1_, length_});
+    if (!capped_) return side;
+    if (z >= 0.0 && z <= length_ && rho <= radiusAt(z)) return 0.0;
+    return std::min({side, segmentDistance(p, {0.0, 0.0}, {r0_, 0.0}),
+                     segmentDistance(p, {0.0, length_}, {r1_, length_})});
+}
+
+double Frustum::depthInside(double rho, double z) const {
+    // The boundary lies on the planes z = 0, z = length and the side's cone.
+    return std::min({z, length_ - z, (radiusAt(z) - rho) / slant_});
+}
+
+ConeClass Frustum::classify(const LocalCone& cone) const {
+    if (empty()) return missClass();
+    if (ballOutside(cone, ball_.center, ball_.radius)) return missClass();
+    const Vec3& p = cone.apex;
+    const double rho = std::hypot(p.x, p.y);
+    // Every point of the object is within dFar: the farthest point is on a rim.
+    const double dFar =
+        std::sqrt(std::max(sq(rho + r0_) + sq(p.z), sq(rho + r1_) + sq(p.z - length_)));
+    const double tol =
+        1e-14 * (std::abs(p.x) + std::abs(p.y) + std::abs(p.z) + ball_.radius + ball_.center.z) +
+        cone.absTol;
+    const double sideGap = (rho - radiusAt(p.z)) / slant_;
+    const bool nearSide = p.z >= -tol && p.z <= length_ + tol && std::abs(sideGap) <= tol;
+    const bool nearBottom = capped_ && std::abs(p.z) <= tol && rho <= r0_ + tol;
+    const bool nearTop = capped_ && std::abs(p.z - length_) <= tol && rho <= r1_ + tol;
+    if (nearSide || nearBottom || nearTop)
+        return classifyOnSurface(cone, rho, tol, dFar, nearSide, nearBottom, nearTop);
+    const double dNear = distanceTo(rho, p.z);
+    if (capped_ && dNear == 0.0) return classifyInside(cone, rho, dFar);
+    if (cone.surelyAfter(dNear) || cone.surelyBefore(dFar)) return missClass();
+    return classifyOff(cone, rho, tol, dNear, dFar);
+}
+
+ConeClass Frustum::classifyInside(const LocalCone& cone, double rho, double dFar) const {
+    // Every ray leaves, no sooner than the boundary's distance.
+    const double exitNear = depthInside(rho, cone.apex.z);
+    if (cone.surelyAfter(exitNear) || cone.surelyBefore(dFar)) return missClass();
+    if (cone.surelyWithin(exitNear, dFar)) return fullClass(exitNear, dFar);
+    return marginalClass(cone, exitNear, dFar);
+}
+
+ConeClass Frustum::classifyOnSurface(const LocalCone& cone, double rho, double tol, double dFar,
+                                     bool nearSide, bool nearBottom, bool nearTop) const {
+    // The apex is on the surface (to rounding). The object lies behind the
+    // tangent plane there (the side's, or a cap's): rays leaving through it
+    // meet the object again only within t <= tol / (n.d).
+    const Vec3& p = cone.apex;
+    auto leaves = [&](const Vec3& n, double gapOut) {
+        const DotRange r = dotRange(cone, n);
+        return r.lo > 0.0 && cone.surelyBefore((tol + std::max(0.0, -gapOut)) / r.lo);
+    };
+    if (nearSide && rho > 0.0) {
+        const Vec3 n = Vec3(p.x / rho, p.y / rho, -slope_) / slant_;
+        if (leaves(n, (rho - radiusAt(p.z)) / slant_)) return missClass();
+    }
+    if (nearBottom && leaves(Vec3(0.0, 0.0, -1.0), -p.z)) return missClass();
+    if (nearTop && leaves(Vec3(0.0, 0.0, 1.0), p.z - length_)) return missClass();
+    if (cone.surelyBefore(dFar + tol)) return missClass();
+    return marginalClass(cone, cone.tMin, dFar + tol);
+}
+
+ConeClass Frustum::classifyOff(const LocalCone& cone, double rho, double tol, double dNear,
+                               double dFar) const {
+    const Vec3& p = cone.apex;
+    const double c = cone.cosHalf, s = cone.sinHalf;
+    const double rp = radiusAt(p.z);  // the side's radius at the apex's height (signed)
+    const bool facesBottom = capped_ && r0_ > 0.0 && p.z < 0.0;
+    const bool facesTop = capped_ && r1_ > 0.0 && p.z > length_;
+    // How deep a first hit can be: rays enter through a face turned to the
+    // apex. On a side generator turned to it (P.u > rp), the squared
+    // distance at height z is at most rho^2 - 2 r(z) rp + r(z)^2 + (z - p.z)^2,
+    // largest at an end; a cap is within its far rim point.
+    double frontFar = dFar;
+    if (capped_) {
+        double far2 = 0.0;
+        for (const double z : {0.0, length_})
+            far2 = std::max(far2, rho * rho - 2.0 * radiusAt(z) * rp + sq(radiusAt(z)) + sq(z - p.z));
+        if (facesBottom) far2 = std::max(far2, sq(rho + r0_) + sq(p.z));
+        if (facesTop) far2 = std::max(far2, sq(rho + r1_) + sq(p.z - length_));
+        frontFar = std::min(dFar, std::sqrt(far2));
+    }
+    const double firstFar = dNear >= cone.tMinInner ? frontFar : dFar;
+
+    // Quick Full: a ball inside the solid around the axis' chord that every
+    // ray of the cone passes through.
+    Interval axisChord;
+    if (capped_) {
+        axisChord = solidInterval(p, cone.axis);
+        if (axisChord.hit && axisChord.exit >= 0.0 && c > 0.0) {
+            const double tm = 0.5 * (std::max(axisChord.enter, 0.0) + axisChord.exit);
+            const Vec3 q = p + tm * cone.axis;
+            const double depth = depthInside(std::hypot(q.x, q.y), q.z);
+            if (tm * s < depth - tol) {
+                const double tFar = std::min(frontFar, tm + depth);
+                if (cone.surelyWithin(dNear, tFar)) return fullClass(dNear, tFar);
+            }
+        }
+    }
+
+    // The boundary as seen from the apex.
+    int meeting = 0;
+    bool straight = true, endpointInside = false;
+    Vec2 er(1.0, 0.0);
+    if (rho > 0.0) er = Vec2(p.x, p.y) / rho;
+    const double tangency = rho * rho - rp * rp;
+    if (std::abs(tangency) <= 1e-6 * std::max(rho * rho, rp * rp)) {
+        // The apex is (nearly) on the side's cone extended: the contour
+        // generators are ill-conditioned. Be safe.
+        return marginalClass(cone, dNear, firstFar);
+    }
+    if (tangency > 0.0) {
+        // The two contour generators: where the tangent plane holds the apex.
+        const double ca = rp / rho, sa = std::sqrt(tangency) / rho;
+        const Vec2 et(-er.y, er.x);
+        for (const double sign : {-1.0, 1.0}) {
+            const Vec2 u = ca * er + sign * sa * et;
+            const ConePoint a = conePoint(cone, Vec3(r0_ * u, 0.0) - p);
+            const ConePoint b = conePoint(cone, Vec3(r1_ * u, length_) - p);
+            if (segmentMeetsCone(cone, a, b)) {
+                ++meeting;
+                endpointInside = endpointInside || a.inside || b.inside;
+            }
+        }
+    }
+    const double rims[2][2] = {{0.0, r0_}, {length_, r1_}};
+    for (int end = 0; end < 2; ++end) {
+        const double zc = rims[end][0], rc = rims[end][1];
+        if (!(rc > 0.0)) continue;
+        Arc arc;  // the whole circle
+        if (capped_) {
+            // The silhouette arc: where exactly one of the cap and the side
+            // (turned to the apex where P.y > rc rp) faces the apex.
+            const bool faces = end ? facesTop : facesBottom;
+            if (rho > 0.0) {
+                arc.nu = faces ? er : -er;
+                arc.kappa = (faces ? 1.0 : -1.0) * rc * rp / rho;
+            } else {
+                const bool sideFaces = 0.0 > rc * rp;
+                if (faces == sideFaces) continue;  // no silhouette on this rim
+            }
+        }
+        if (circleMayMeetCone(cone, zc, rc, arc)) {
+            ++meeting;
+            straight = false;
+        }
+    }
+    if (meeting > 0) {
+        const bool single =
+            straight && meeting == 1 && !endpointInside && cone.surelyWithin(dNear, dFar);
+        return marginalClass(cone, dNear, firstFar, single);
+    }
+    // No boundary in the cone: every ray hits or none does, as the axis.
+    const bool axisHits =
+        capped_ ? axisChord.hit && axisChord.exit >= 0.0 : sideHitAhead(p, cone.axis);
+    if (!axisHits) return missClass();
+    if (cone.surelyWithin(dNear, frontFar)) return fullClass(dNear, frontFar);
+    return marginalClass(cone, dNear, firstFar);
+}
+
+}  // namespace asos

@@ -1,0 +1,117 @@
+#include "asos/shapes/polygon.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "asos/shapes/cone_geometry.hpp"
+
+namespace asos {
+
+using namespace conegeom;
+
+Polygon::Polygon(std::vector<Vec2> vertices, std::vector<std::uint32_t> loopEnds)
+    : vertices_(std::move(vertices)), loopEnds_(std::move(loopEnds)) {
+    if (vertices_.empty()) return;
+    lo_ = hi_ = vertices_[0];
+    for (const Vec2& v : vertices_) {
+        lo_ = glm::min(lo_, v);
+        hi_ = glm::max(hi_, v);
+    }
+    center_ = 0.5 * (lo_ + hi_);
+    for (const Vec2& v : vertices_) radius_ = std::max(radius_, glm::length(v - center_));
+}
+
+Bounds3 Polygon::worldBounds(const Mat3& m, const Vec3& offset) const {
+    Bounds3 b;
+    for (const Vec2& v : vertices_) b.extend(m * Vec3(v, 0.0) + offset);
+    return b;
+}
+
+bool Polygon::contains(double x, double y) const {
+    // Crossings of the ray +x from (x, y) with every edge of every loop.
+    bool inside = false;
+    std::uint32_t begin = 0;
+    for (const std::uint32_t end : loopEnds_) {
+        Vec2 v0 = vertices_[end - 1];
+        for (std::uint32_t i = begin; i < end; ++i) {
+            const Vec2 v1 = vertices_[i];
+            if ((v0.y > y) != (v1.y > y)) {
+                const double side = (v1.x - v0.x) * (y - v0.y) - (x - v0.x) * (v1.y - v0.y);
+                if ((side > 0.0) == (v1.y > v0.y)) inside = !inside;
+            }
+            v0 = v1;
+        }
+        begin = end;
+    }
+    return inside;
+}
+
+std::optional<LocalHit> Polygon::intersect(const Ray& ray, double tMin, double tMax) const {
+    if (ray.dir.z == 0.0 || empty()) return std::nullopt;
+    const double t = -ray.origin.z / ray.dir.z;
+    if (!(t >= tMin && t <= tMax)) return std::nullopt;
+    const double x = ray.origin.x + t * ray.dir.x, y = ray.origin.y + t * ray.dir.y;
+    if (x < lo_.x || x > hi_.x || y < lo_.y || y > hi_.y || !contains(x, y)) return std::nullopt;
+    return LocalHit{t, Vec3(x, y, 0.0), Vec3(0.0, 0.0, 1.0)};
+}
+
+ConeClass Polygon::classify(const LocalCone& cone) const {
+    if (empty()) return missClass();
+    const Vec3 center(center_, 0.0);
+    if (ballOutside(cone, center, radius_)) return missClass();
+    const Vec3& p = cone.apex;
+    const Vec3& axis = cone.axis;
+    // Rays cross the plane z = 0 at t = h / d.z.
+    const double h = -p.z;
+    const DotRange range = dotRange(cone, axis.z, std::sqrt(axis.x * axis.x + axis.y * axis.y));
+    const double ballDist = glm::length(center - p);
+    const double ballFar = ballDist + radius_;
+    const double hTol = 1e-15 * (std::abs(p.x) + std::abs(p.y) + std::abs(p.z)) + cone.absTol;
+    if (std::abs(h) <= hTol) {
+        // Apex in the plane (to rounding): rays cross at |t| <= hTol / |d.z|.
+        const double slope = range.lo > 0.0 ? range.lo : range.hi < 0.0 ? -range.hi : 0.0;
+        if (slope > 0.0) {
+            const double tHit = hTol / slope;
+            if (cone.surelyBefore(tHit)) return missClass();
+            return marginalClass(cone, cone.tMin, std::min(tHit, ballFar));
+        }
+        return marginalClass(cone, cone.tMin, ballFar);
+    }
+    const PlaneCrossing crossing = planeCrossing(range, h);
+    if (!crossing.any) return missClass();
+    const double tLo = std::max({crossing.tNear, ballDist - radius_, std::abs(h)});
+    const double tHi = std::min(crossing.tFar, ballFar);
+    if (cone.surelyAfter(tLo) || cone.surelyBefore(tHi)) return missClass();
+
+    // The edges against the cone.
+    int meeting = 0;
+    bool endpointInside = false;
+    std::uint32_t begin = 0;
+    for (const std::uint32_t end : loopEnds_) {
+        const ConePoint first = conePoint(cone, Vec3(vertices_[begin], 0.0) - p);
+        ConePoint prev = first;
+        for (std::uint32_t i = begin + 1; i <= end; ++i) {
+            const ConePoint cur = i < end ? conePoint(cone, Vec3(vertices_[i], 0.0) - p) : first;
+            if (segmentMeetsCone(cone, prev, cur)) {
+                ++meeting;
+                endpointInside = endpointInside || prev.inside || cur.inside;
+            }
+            prev = cur;
+        }
+        begin = end;
+    }
+    if (meeting > 0) {
+        const bool single = meeting == 1 && !endpointInside && cone.surelyWithin(tLo, tHi);
+        return marginalClass(cone, tLo, tHi, single);
+    }
+    // No edge in the cone: the footprint is wholly in or out. An unbounded
+    // footprint cannot be inside the polygon.
+    if (!crossing.all) return missClass();
+    const double tAxis = h / axis.z;
+    if (!contains(p.x + tAxis * axis.x, p.y + tAxis * axis.y)) return missClass();
+    if (cone.surelyWithin(crossing.tNear, crossing.tFar))
+        return fullClass(crossing.tNear, crossing.tFar);
+    return marginalClass(cone, crossing.tNear, crossing.tFar);
+}
+
+}  // namespace asos

@@ -1,0 +1,108 @@
+#include <catch2/catch.hpp>
+
+#include <cmath>
+
+#include "asos/shapes/primitive.hpp"
+#include "shape_property.hpp"
+
+using namespace asos;
+
+namespace {
+Primitive disc(Vec3 center, Vec3 normal, double radius, double hole = 0.0,
+               const Transform& t = {}) {
+    return Primitive::make(DiscShape{center, normal, radius, hole}, t);
+}
+bool near(const Vec3& a, const Vec3& b, double tol = 1e-12) { return glm::length(a - b) <= tol; }
+}  // namespace
+
+TEST_CASE("Disc ray hits: annulus, normal, far away", "[shapes][disc]") {
+    const Primitive d = disc({0, 1, 0}, {0, 2, 0}, 2.0, 0.5);
+    auto hit = d.intersect({{1, 5, 0}, {0, -1, 0}}, 0.0, kInfinity);
+    REQUIRE(hit);
+    CHECK(hit->t == Approx(4.0));
+    CHECK(near(hit->normal, {0, 1, 0}));
+    CHECK(near(hit->objectPoint, {1, 1, 0}));
+    hit = d.intersect({{1, -5, 0}, {0, 1, 0}}, 0.0, kInfinity);  // from below: same normal
+    REQUIRE(hit);
+    CHECK(near(hit->normal, {0, 1, 0}));
+    CHECK_FALSE(d.intersect({{0.2, 5, 0.2}, {0, -1, 0}}, 0.0, kInfinity));  // the hole
+    CHECK_FALSE(d.intersect({{2.1, 5, 0}, {0, -1, 0}}, 0.0, kInfinity));    // outside
+    CHECK_FALSE(d.intersect({{0, 0, 0}, {1, 0, 0}}, 0.0, kInfinity));       // parallel
+    const Primitive far = disc({0, 0, 1e5}, {0, 0, -1}, 1.0);
+    hit = far.intersect({{0, 0, 0}, glm::normalize(Vec3(0.9e-5, 0, 1))}, 0.0, kInfinity);
+    REQUIRE(hit);
+    CHECK(hit->position.z == Approx(1e5).epsilon(1e-14));
+    CHECK(near(hit->normal, {0, 0, -1}));
+    // Non-uniform scale: an elliptic disc.
+    const Primitive e = disc({0, 0, 0}, {0, 0, 1}, 1.0, 0.0, Transform::scale({3, 1, 1}));
+    CHECK(e.intersect({{2.9, 0, -1}, {0, 0, 1}}, 0.0, kInfinity));
+    CHECK_FALSE(e.intersect({{0, 1.1, -1}, {0, 0, 1}}, 0.0, kInfinity));
+    CHECK(e.worldBounds().hi.x == Approx(3.0));
+}
+
+TEST_CASE("Disc cone classification: known answers", "[shapes][disc]") {
+    const Primitive d = disc({0, 0, 0}, {0, 0, 1}, 1.0, 0.25);
+    Cone c;
+    c.apex = {0.5, 0, -10};
+    c.axis = {0, 0, 1};
+    c.halfAngle = 0.01;  // footprint radius 0.1 around (0.5, 0)
+    ConeClass k = d.classify(c);
+    CHECK(k.coverage == Coverage::Full);
+    CHECK(k.tNear == Approx(10.0).epsilon(1e-8));
+    c.apex = {1.0, 0, -10};  // on the rim
+    k = d.classify(c);
+    CHECK(k.coverage == Coverage::Marginal);
+    CHECK_FALSE(k.singleEdge);
+    c.apex = {1.2, 0, -10};
+    CHECK(d.classify(c).coverage == Coverage::Miss);
+    c.apex = {0.0, 0, -10};  // inside the hole
+    CHECK(d.classify(c).coverage == Coverage::Miss);
+    c.apex = {0.3, 0, -10};  // across the hole's edge
+    CHECK(d.classify(c).coverage == Coverage::Marginal);
+    // Oblique: an elongated footprint near the rim.
+    c.apex = {-9, 0, -3};
+    c.axis = glm::normalize(Vec3(9.6, 0, 3));  // aims at (0.6, 0, 0), footprint ~0.3 long
+    c.halfAngle = 0.005;
+    CHECK(d.classify(c).coverage == Coverage::Full);
+    c.axis = glm::normalize(Vec3(9.9, 0, 3));
+    CHECK(d.classify(c).coverage == Coverage::Marginal);
+}
+
+TEST_CASE("Disc degenerate input", "[shapes][disc]") {
+    CHECK_THROWS_WITH(disc({0, 0, 0}, {0, 0, 0}, 1.0), Catch::Contains("normal vector is zero"));
+    CHECK_THROWS_WITH(disc({0, 0, 0}, {0, 0, 1}, -1.0), Catch::Contains("radius"));
+    const Primitive empty = disc({0, 0, 0}, {0, 0, 1}, 1.0, 1.0);  // hole as large as the disc
+    CHECK_FALSE(empty.intersect({{0.5, 0, -1}, {0, 0, 1}}, 0.0, kInfinity));
+    Cone c;
+    c.apex = {0, 0, -2};
+    c.halfAngle = 0.8;
+    CHECK(empty.classify(c).coverage == Coverage::Miss);
+    CHECK(disc({0, 0, 0}, {0, 0, 1}, 0.0).classify(c).coverage == Coverage::Miss);
+}
+
+TEST_CASE("Disc cone classification is conservative (property)", "[shapes][disc][property]") {
+    using namespace shapetest;
+    const PropertyStats stats = runConeProperty("disc", 0xd15cull, 100000, [](Rng& rng) {
+        ShapeCase sc;
+        const Vec3 center(rng.uniform(-2, 2), rng.uniform(-2, 2), rng.uniform(-2, 2));
+        const Vec3 normal = rng.unitVector() * rng.uniform(0.5, 2.0);
+        const double radius = rng.logUniform(-1.0, 0.7);
+        const double hole = rng.chance(0.5) ? 0.0 : radius * rng.uniform(0.05, 0.9);
+        sc.shape = DiscShape{center, normal, radius, hole};
+        sc.size = radius;
+        const Mat3 frame = frameAroundAxis(glm::normalize(normal));
+        sc.surfacePoint = [=](Rng& r) {
+            const double a = r.uniform(0, 2 * kPi);
+            const double pick = r.uniform();
+            const double rr = pick < 0.35 ? radius : pick < 0.5 ? hole : r.uniform(hole, radius);
+            return center + rr * (std::cos(a) * frame[0] + std::sin(a) * frame[1]);
+        };
+        sc.text = "disc { " + fmt(center) + ", " + fmt(normal) + ", " + fmt(radius) + ", " +
+                  fmt(hole) + " }";
+        return sc;
+    });
+    CHECK(stats.failures == 0);
+    CHECK(stats.full > 0);
+    CHECK(stats.marginal > 0);
+    CHECK(stats.miss > 0);
+}

@@ -1,0 +1,170 @@
+#include <catch2/catch.hpp>
+
+#include <cmath>
+
+#include "asos/shapes/primitive.hpp"
+#include "shape_property.hpp"
+
+using namespace asos;
+
+namespace {
+Primitive polygon(std::vector<Vec3> points, const Transform& t = {}) {
+    return Primitive::make(PolygonShape{std::move(points)}, t);
+}
+bool near(const Vec3& a, const Vec3& b, double tol = 1e-12) { return glm::length(a - b) <= tol; }
+bool hits(const Primitive& p, double x, double y) {
+    return p.intersect({{x, y, -1}, {0, 0, 1}}, 0.0, kInfinity).has_value();
+}
+}  // namespace
+
+TEST_CASE("Polygon ray hits: POV-Ray normal, sub-polygons, even-odd", "[shapes][polygon]") {
+    // The normal is u x v of the first two independent edges: here +z.
+    const Primitive tri = polygon({{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 0}});
+    auto hit = tri.intersect({{0.2, 0.2, -1}, {0, 0, 1}}, 0.0, kInfinity);
+    REQUIRE(hit);
+    CHECK(hit->t == Approx(1.0));
+    CHECK(near(hit->normal, {0, 0, 1}));
+    CHECK(near(hit->objectPoint, {0.2, 0.2, 0}));
+    CHECK_FALSE(hits(tri, 0.6, 0.6));
+    // Clockwise: the normal flips.
+    const Primitive cw = polygon({{0, 0, 0}, {0, 1, 0}, {1, 0, 0}});  // closed for us
+    hit = cw.intersect({{0.2, 0.2, -1}, {0, 0, 1}}, 0.0, kInfinity);
+    REQUIRE(hit);
+    CHECK(near(hit->normal, {0, 0, -1}));
+    // A square with a square hole: two sub-polygons.
+    const Primitive frame = polygon({{0, 0, 0}, {4, 0, 0}, {4, 4, 0}, {0, 4, 0}, {0, 0, 0},
+                                     {1, 1, 0}, {3, 1, 0}, {3, 3, 0}, {1, 3, 0}, {1, 1, 0}});
+    CHECK(hits(frame, 0.5, 0.5));
+    CHECK(hits(frame, 3.5, 2.0));
+    CHECK_FALSE(hits(frame, 2.0, 2.0));
+    CHECK_FALSE(hits(frame, 5.0, 2.0));
+    // Non-convex: an L.
+    const Primitive ell = polygon({{0, 0, 0}, {2, 0, 0}, {2, 1, 0}, {1, 1, 0}, {1, 2, 0}, {0, 2, 0}});
+    CHECK(hits(ell, 0.5, 1.5));
+    CHECK(hits(ell, 1.5, 0.5));
+    CHECK_FALSE(hits(ell, 1.5, 1.5));
+    // Self-intersecting bow tie: even-odd.
+    const Primitive bow = polygon({{0, 0, 0}, {2, 2, 0}, {2, 0, 0}, {0, 2, 0}});
+    CHECK(hits(bow, 0.3, 1.0));
+    CHECK(hits(bow, 1.7, 1.0));
+    CHECK_FALSE(hits(bow, 1.0, 1.7));
+    // Far away, rotated into the plane x = 1e5.
+    const Primitive far = polygon({{-1, -1, 0}, {1, -1, 0}, {1, 1, 0}, {-1, 1, 0}},
+                                  Transform::translate({1e5, 0, 0}) *
+                                      Transform::rotateDegrees({0, 90, 0}));
+    hit = far.intersect({{0, 0, 0}, glm::normalize(Vec3(1e5, 0.5, 0.5))}, 0.0, kInfinity);
+    REQUIRE(hit);
+    CHECK(hit->position.x == Approx(1e5).epsilon(1e-14));
+    CHECK(std::abs(hit->position.y - 0.5) < 1e-9);
+}
+
+TEST_CASE("Polygon cone classification: known answers", "[shapes][polygon]") {
+    const Primitive sq = polygon({{-1, -1, 0}, {1, -1, 0}, {1, 1, 0}, {-1, 1, 0}});
+    Cone c;
+    c.apex = {0, 0, -10};
+    c.axis = {0, 0, 1};
+    c.halfAngle = 0.05;
+    ConeClass k = sq.classify(c);
+    CHECK(k.coverage == Coverage::Full);
+    CHECK(k.tNear == Approx(10.0).epsilon(1e-8));
+    c.axis = glm::normalize(Vec3(1, 0, 10));  // the edge x = 1
+    c.halfAngle = 0.01;
+    k = sq.classify(c);
+    CHECK(k.coverage == Coverage::Marginal);
+    CHECK(k.singleEdge);
+    c.axis = glm::normalize(Vec3(1, 1, 10));  // a corner
+    k = sq.classify(c);
+    CHECK(k.coverage == Coverage::Marginal);
+    CHECK_FALSE(k.singleEdge);
+    c.axis = glm::normalize(Vec3(2, 0, 10));
+    CHECK(sq.classify(c).coverage == Coverage::Miss);
+    // Through the hole of a frame: a miss.
+    const Primitive frame = polygon({{0, 0, 0}, {4, 0, 0}, {4, 4, 0}, {0, 4, 0}, {0, 0, 0},
+                                     {1, 1, 0}, {3, 1, 0}, {3, 3, 0}, {1, 3, 0}, {1, 1, 0}});
+    c.apex = {2, 2, -5};
+    c.axis = {0, 0, 1};
+    c.halfAngle = 0.1;
+    CHECK(frame.classify(c).coverage == Coverage::Miss);
+    c.halfAngle = 0.3;
+    CHECK(frame.classify(c).coverage == Coverage::Marginal);
+    // Grazing, wider than the plane's horizon: never Full.
+    c.apex = {0, 0, -0.01};
+    c.axis = {1, 0, 0};
+    c.halfAngle = 0.2;
+    CHECK(sq.classify(c).coverage == Coverage::Marginal);
+}
+
+TEST_CASE("Polygon degenerate input", "[shapes][polygon]") {
+    CHECK_THROWS_WITH(polygon({{0, 0, 0}, {1, 0, 0}}), Catch::Contains("at least three points"));
+    CHECK_THROWS_WITH(polygon({{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}}),
+                      Catch::Contains("not coplanar"));
+    // Collinear and repeated points: an empty polygon.
+    const Primitive line = polygon({{0, 0, 0}, {1, 1, 1}, {1, 1, 1}, {2, 2, 2}});
+    CHECK_FALSE(line.intersect({{1, 1, 0}, {0, 0, 1}}, 0.0, kInfinity));
+    Cone c;
+    c.apex = {1, 1, -3};
+    c.halfAngle = 0.5;
+    CHECK(line.classify(c).coverage == Coverage::Miss);
+    CHECK(line.worldBounds().contains({1, 1, 1}));
+    // Repeated vertices inside a valid polygon are harmless.
+    const Primitive rep = polygon({{0, 0, 0}, {1, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}});
+    CHECK(hits(rep, 0.5, 0.5));
+    c.apex = {0.5, 0.5, -3};
+    c.halfAngle = 0.01;
+    CHECK(rep.classify(c).coverage == Coverage::Full);
+}
+
+TEST_CASE("Polygon cone classification is conservative (property)", "[shapes][polygon][property]") {
+    using namespace shapetest;
+    const PropertyStats stats = runConeProperty("polygon", 0x9017ull, 100000, [](Rng& rng) {
+        // A 2D outline, then placed in a random plane.
+        std::vector<Vec2> outline;
+        const int kind = rng.index(4);
+        if (kind == 0) {
+            for (int i = 0; i < 3; ++i) outline.emplace_back(rng.uniform(-1, 1), rng.uniform(-1, 1));
+        } else if (kind == 1 || kind == 2) {
+            // Star-shaped, possibly non-convex; kind 2 adds a square hole.
+            const int n = 3 + rng.index(10);
+            for (int i = 0; i < n; ++i) {
+                const double a = 2.0 * kPi * (i + rng.uniform(0.0, 0.8)) / n;
+                const double r = rng.uniform(0.3, 1.0);
+                outline.emplace_back(r * std::cos(a), r * std::sin(a));
+            }
+        } else {
+            const int n = 4 + rng.index(6);  // self-intersecting: random points
+            for (int i = 0; i < n; ++i) outline.emplace_back(rng.uniform(-1, 1), rng.uniform(-1, 1));
+        }
+        const double scale = rng.logUniform(-1.0, 0.7);
+        const Mat3 frame = frameAroundAxis(rng.unitVector());
+        const Vec3 origin(rng.uniform(-2, 2), rng.uniform(-2, 2), rng.uniform(-2, 2));
+        auto place = [=](Vec2 v) { return origin + scale * (v.x * frame[0] + v.y * frame[1]); };
+        std::vector<Vec3> points;
+        for (const Vec2& v : outline) points.push_back(place(v));
+        if (kind == 2) {
+            points.push_back(points[0]);
+            const double s = rng.uniform(0.05, 0.2);
+            const Vec2 sq[] = {{-s, -s}, {s, -s}, {s, s}, {-s, s}, {-s, -s}};
+            for (const Vec2& v : sq) points.push_back(place(v));
+        }
+        ShapeCase sc;
+        sc.shape = PolygonShape{points};
+        sc.size = scale;
+        const std::vector<Vec3> pts = points;
+        sc.surfacePoint = [=](Rng& r) {
+            const std::size_t i = static_cast<std::size_t>(r.index(static_cast<int>(pts.size())));
+            const Vec3 a = pts[i], b = pts[(i + 1) % pts.size()];
+            const double pick = r.uniform();
+            if (pick < 0.2) return a;
+            if (pick < 0.6) return a + r.uniform() * (b - a);
+            return place(Vec2(r.uniform(-1, 1), r.uniform(-1, 1)));
+        };
+        std::string text = "polygon { " + std::to_string(points.size());
+        for (const Vec3& p : points) text += ", " + fmt(p);
+        sc.text = text + " }";
+        return sc;
+    });
+    CHECK(stats.failures == 0);
+    CHECK(stats.full > 0);
+    CHECK(stats.marginal > 0);
+    CHECK(stats.miss > 0);
+}
