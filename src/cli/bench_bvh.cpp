@@ -155,22 +155,30 @@ struct TraceResult {
     double checksum = 0.0;  // keeps the work observable
 };
 
+// The best of `passes` passes over the rays (the machine may be shared; the
+// fastest pass is the one least disturbed).
 template <class Items, class HitFn>
-TraceResult trace(const Bvh& bvh, const Items& items, const std::vector<Ray>& rays, HitFn hitFn) {
-    TraceResult result;
-    const auto start = std::chrono::steady_clock::now();
-    for (const Ray& ray : rays) {
-        const auto hit = bvh.nearest(ray, 0.0, kInfinity,
-                                     [&](std::uint32_t i, const Ray& r, double tMin, double tMax) {
-                                         return hitFn(items[i], i, r, tMin, tMax);
-                                     });
-        if (hit) {
-            ++result.hits;
-            result.checksum += hit->t;
+TraceResult trace(const Bvh& bvh, const Items& items, const std::vector<Ray>& rays, HitFn hitFn,
+                  int passes) {
+    TraceResult best;
+    for (int pass = 0; pass < passes; ++pass) {
+        TraceResult result;
+        const auto start = std::chrono::steady_clock::now();
+        for (const Ray& ray : rays) {
+            const auto hit = bvh.nearest(ray, 0.0, kInfinity,
+                                         [&](std::uint32_t i, const Ray& r, double tMin, double tMax) {
+                                             return hitFn(items[i], i, r, tMin, tMax);
+                                         });
+            if (hit) {
+                ++result.hits;
+                result.checksum += hit->t;
+            }
         }
+        result.seconds =
+            std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+        if (pass == 0 || result.seconds < best.seconds) best = result;
     }
-    result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    return result;
+    return best;
 }
 
 struct Settings {
@@ -179,6 +187,7 @@ struct Settings {
     std::size_t randomRayCount = 1u << 20;
     std::uint64_t seed = 1;
     std::string scenes = "both";
+    int passes = 3;
     BvhBuildOptions build;
 };
 
@@ -195,8 +204,8 @@ void benchScene(const char* name, const Items& items, HitFn hitFn, const Setting
 
     const auto camera = cameraRays(bvh.bounds(), settings.imageWidth);
     const auto random = randomRays(bvh.bounds(), settings.randomRayCount, rng);
-    const TraceResult c = trace(bvh, items, camera, hitFn);
-    const TraceResult r = trace(bvh, items, random, hitFn);
+    const TraceResult c = trace(bvh, items, camera, hitFn, settings.passes);
+    const TraceResult r = trace(bvh, items, random, hitFn, settings.passes);
     std::printf("%-10s %9zu %9.3f %9zu %6d %11.2f %7.1f%% %11.2f %7.1f%%   %.6g\n", name,
                 items.size(), buildSeconds, bvh.nodeCount(), bvh.depth(),
                 camera.size() / c.seconds * 1e-6, 100.0 * c.hits / camera.size(),
@@ -207,8 +216,9 @@ void benchScene(const char* name, const Items& items, HitFn hitFn, const Setting
 int run(const Settings& settings) {
     std::printf("asos bench bvh: nearest hit, one thread tracing; build on %d threads\n",
                 tbb::info::default_concurrency());
-    std::printf("camera: %dx%d pinhole rays; random: %zu rays from inside the bounds\n",
-                settings.imageWidth, settings.imageWidth, settings.randomRayCount);
+    std::printf("camera: %dx%d pinhole rays; random: %zu rays from inside the bounds; "
+                "best of %d passes\n",
+                settings.imageWidth, settings.imageWidth, settings.randomRayCount, settings.passes);
     std::printf("%-10s %9s %9s %9s %6s %11s %8s %11s %8s   %s\n", "scene", "items", "build_s",
                 "nodes", "depth", "camera_Mr/s", "cam_hit", "random_Mr/s", "rnd_hit", "checksum");
     std::fflush(stdout);
@@ -238,6 +248,8 @@ void addBenchBvhCommand(CLI::App& bench, CommandResult& result) {
         ->check(CLI::Range(1, 8192));
     cmd->add_option("--random-rays", settings->randomRayCount, "random rays per scene");
     cmd->add_option("--seed", settings->seed, "random seed");
+    cmd->add_option("--passes", settings->passes, "passes over the rays (the best is reported)")
+        ->check(CLI::Range(1, 100));
     cmd->add_option("--scenes", settings->scenes, "spheres, triangles or both")
         ->check(CLI::IsMember({"spheres", "triangles", "both"}));
     cmd->add_option("--leaf", settings->build.maxLeafSize, "max items per leaf")->check(CLI::Range(1, 15));
