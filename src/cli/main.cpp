@@ -11,6 +11,7 @@ int main(int argc, char** argv) {
     CLI::App* bench = addBenchCommand(app);
     // Benchmarks register under `bench`, one line each.
     addBenchParseCommand(*bench, result);
+    addBenchBvhCommand(*bench, result);
 
     try {
         app.parse(argc, argv);

@@ -75,64 +75,71 @@ inline float roundDownToFloat(double x) {
 }
 
 // The float slab test is made conservative for a double ray (docs/accel.md):
-// the origin is rounded toward the far side of each slab plane it is compared
-// with (oNear, oFar), the t-range is rounded outward, and the far distance is
-// scaled by kFarScale, which exceeds the worst relative error of the three
-// float roundings in (plane - origin) * invDir on both ends. NaN (0 * inf,
-// for a direction component of exactly 0 and an origin exactly on a plane)
-// drops that one constraint, never the box.
-inline constexpr float kFarScale = 1.0f + 0x1p-20f;
+// the origin is moved a few float ulps toward the far side of each plane it is
+// compared with (oNear, oFar), the t-range is rounded outward, and far
+// distances are scaled up by kFarScale (folded into invFar), which exceeds the
+// worst relative error of the float roundings in (plane - origin) * inverse.
+inline constexpr double kFarScale = 1.0 + 0x1p-20;
 
 struct RayPrep {
     Float4 oNear[3];
     Float4 oFar[3];
-    Float4 inv[3];
+    Float4 invNear[3];
+    Float4 invFar[3];
     int nearSide[3];  // 0: the low plane is entered first (direction >= 0)
     Float4 tMin;
-    Float4 tMax;
+    Float4 tMax;      // scaled by kFarScale, like the far distances
 
     RayPrep(const Ray& ray, double tMinD, double tMaxD) {
+        constexpr float inf = std::numeric_limits<float>::infinity();
         for (int i = 0; i < 3; ++i) {
             const double d = ray.dir[i];
             const double o = ray.origin[i];
-            float invD, oN, oF;
-            int side;
+            // Strictly beyond o on either side, after rounding to float.
+            const double shift = std::abs(o) * 0x1p-22 + 1e-30;
+            const auto above = static_cast<float>(o + shift), below = static_cast<float>(o - shift);
+            float nearInv, farInv, oN, oF;
+            int side = std::signbit(d) ? 1 : 0;
             if (d == 0.0) {
-                // Parallel to the slab: inside iff oFar <= hi and lo <= oNear.
-                side = std::signbit(d) ? 1 : 0;
-                invD = side ? -std::numeric_limits<float>::infinity()
-                            : std::numeric_limits<float>::infinity();
-                oN = side ? roundDownToFloat(o) : roundUpToFloat(o);
-                oF = side ? roundUpToFloat(o) : roundDownToFloat(o);
+                // Parallel: an infinite inverse gives -inf or +inf per plane;
+                // 0 * inf (NaN) can only occur for a plane strictly outside,
+                // where either answer is right.
+                nearInv = farInv = side ? -inf : inf;
             } else if (std::abs(d) < 1e-30) {
                 // 1/d overflows a float: drop this axis's constraint
                 // (conservative; a unit direction has another, larger
                 // component that still culls).
                 side = 0;
-                invD = std::numeric_limits<float>::infinity();
-                oN = std::numeric_limits<float>::infinity();
-                oF = -std::numeric_limits<float>::infinity();
+                nearInv = farInv = inf;
+                oN = inf;
+                oF = -inf;
+                nearSide[i] = side;
+                oNear[i] = Float4{oN, oN, oN, oN};
+                oFar[i] = Float4{oF, oF, oF, oF};
+                invNear[i] = Float4{nearInv, nearInv, nearInv, nearInv};
+                invFar[i] = Float4{farInv, farInv, farInv, farInv};
+                continue;
             } else {
-                side = d < 0.0 ? 1 : 0;
-                invD = static_cast<float>(1.0 / d);
-                oN = side ? roundDownToFloat(o) : roundUpToFloat(o);
-                oF = side ? roundUpToFloat(o) : roundDownToFloat(o);
+                nearInv = static_cast<float>(1.0 / d);
+                farInv = static_cast<float>(kFarScale / d);
             }
+            oN = side ? below : above;
+            oF = side ? above : below;
             nearSide[i] = side;
             oNear[i] = Float4{oN, oN, oN, oN};
             oFar[i] = Float4{oF, oF, oF, oF};
-            inv[i] = Float4{invD, invD, invD, invD};
+            invNear[i] = Float4{nearInv, nearInv, nearInv, nearInv};
+            invFar[i] = Float4{farInv, farInv, farInv, farInv};
         }
         setRange(tMinD, tMaxD);
     }
 
     void setRange(double tMinD, double tMaxD) {
         const float lo = roundDownToFloat(tMinD > 0.0 ? tMinD : 0.0);
-        const float hi = roundUpToFloat(tMaxD);
+        const float hi = roundUpToFloat(tMaxD * kFarScale);
         tMin = Float4{lo, lo, lo, lo};
         tMax = Float4{hi, hi, hi, hi};
     }
-    float farLimit() const { return tMax[0] * kFarScale; }
 };
 
 inline unsigned moveMask(Int4 m) {
@@ -142,28 +149,6 @@ inline unsigned moveMask(Int4 m) {
 #else
     return (m[0] & 1u) | (m[1] & 2u) | (m[2] & 4u) | (m[3] & 8u);
 #endif
-}
-
-// Bit k set when child k's box meets the ray within its t-range; tNear gets
-// the entry distances.
-inline unsigned intersectChildren(const Node& node, const RayPrep& r, Float4& tNear) {
-    const Float4 n0 = (node.box[r.nearSide[0]][0] - r.oNear[0]) * r.inv[0];
-    const Float4 n1 = (node.box[r.nearSide[1]][1] - r.oNear[1]) * r.inv[1];
-    const Float4 n2 = (node.box[r.nearSide[2]][2] - r.oNear[2]) * r.inv[2];
-    const Float4 f0 = (node.box[1 - r.nearSide[0]][0] - r.oFar[0]) * r.inv[0];
-    const Float4 f1 = (node.box[1 - r.nearSide[1]][1] - r.oFar[1]) * r.inv[1];
-    const Float4 f2 = (node.box[1 - r.nearSide[2]][2] - r.oFar[2]) * r.inv[2];
-    // `x > acc ? x : acc` keeps acc when x is NaN (and compiles to maxps).
-    Float4 lo = r.tMin;
-    lo = n0 > lo ? n0 : lo;
-    lo = n1 > lo ? n1 : lo;
-    lo = n2 > lo ? n2 : lo;
-    Float4 hi = r.tMax;
-    hi = f0 < hi ? f0 : hi;
-    hi = f1 < hi ? f1 : hi;
-    hi = f2 < hi ? f2 : hi;
-    tNear = lo;
-    return moveMask(lo <= hi * kFarScale);
 }
 
 struct StackEntry {
@@ -233,58 +218,101 @@ private:
     int depth_ = 0;
 };
 
-// The ray traversal shared by nearest and any. `leaf(first, count, prep)`
-// tests a leaf's items and returns false to stop; it may shrink prep's range.
+// The ray traversal shared by nearest and any. `leaf(first, count)` tests a
+// leaf's items and returns the far limit of the search from then on (it may
+// have shrunk), or a negative number to stop.
 template <class Leaf>
 void Bvh::traverseRay(const Ray& ray, double tMin, double tMax, bool ordered, Leaf&& leaf) const {
     using namespace bvh_detail;
     if (nodes_.empty()) return;
-    RayPrep prep(ray, tMin, tMax);
+    const RayPrep prep(ray, tMin, tMax);
+    // Locals, so that the loop keeps them in registers.
+    const Float4 oNear0 = prep.oNear[0], oNear1 = prep.oNear[1], oNear2 = prep.oNear[2];
+    const Float4 oFar0 = prep.oFar[0], oFar1 = prep.oFar[1], oFar2 = prep.oFar[2];
+    const Float4 nInv0 = prep.invNear[0], nInv1 = prep.invNear[1], nInv2 = prep.invNear[2];
+    const Float4 fInv0 = prep.invFar[0], fInv1 = prep.invFar[1], fInv2 = prep.invFar[2];
+    const Float4 tLo = prep.tMin;
+    Float4 tHi = prep.tMax;
+    float farLimit = tHi[0];
+    // Byte offsets of the near and far planes of each axis within a node.
+    constexpr std::size_t kAxisBytes = sizeof(Float4), kSideBytes = 3 * sizeof(Float4);
+    const std::size_t near0 = prep.nearSide[0] * kSideBytes, far0 = kSideBytes - near0;
+    const std::size_t near1 = prep.nearSide[1] * kSideBytes + kAxisBytes, far1 = kSideBytes + 2 * kAxisBytes - near1;
+    const std::size_t near2 = prep.nearSide[2] * kSideBytes + 2 * kAxisBytes, far2 = kSideBytes + 4 * kAxisBytes - near2;
+    const auto plane = [](const Node& node, std::size_t offset) {
+        return *reinterpret_cast<const Float4*>(reinterpret_cast<const char*>(&node) + offset);
+    };
+
     StackEntry stack[kStackSize];
     int top = 0;
     std::uint32_t ref = 0;
     for (;;) {
         while (!isLeaf(ref)) {
             const Node& node = nodes_[ref];
-            Float4 tNear;
-            unsigned mask = intersectChildren(node, prep, tNear);
+            const Float4 n0 = (plane(node, near0) - oNear0) * nInv0;
+            const Float4 n1 = (plane(node, near1) - oNear1) * nInv1;
+            const Float4 n2 = (plane(node, near2) - oNear2) * nInv2;
+            const Float4 f0 = (plane(node, far0) - oFar0) * fInv0;
+            const Float4 f1 = (plane(node, far1) - oFar1) * fInv1;
+            const Float4 f2 = (plane(node, far2) - oFar2) * fInv2;
+            const Float4 a = n0 > tLo ? n0 : tLo, b = n2 > n1 ? n2 : n1;
+            const Float4 lo = a > b ? a : b;
+            const Float4 c = f0 < tHi ? f0 : tHi, d = f2 < f1 ? f2 : f1;
+            const Float4 hi = c < d ? c : d;
+            unsigned mask = moveMask(lo <= hi);
             if (mask == 0) goto pop;
             {
-                // Near-first: the nearest hit child next, the others pushed
-                // farthest first so they pop in order of entry distance.
                 const int first = std::countr_zero(mask);
                 mask &= mask - 1;
                 if (mask == 0) {
                     ref = node.child[first];
                     continue;
                 }
-                StackEntry hits[4];
-                int count = 0;
-                hits[count++] = {node.child[first], tNear[first]};
+                const int second = std::countr_zero(mask);
+                mask &= mask - 1;
+                if (mask == 0) {
+                    // Two children, the common case: nearer one next.
+                    const bool swap = ordered && lo[second] < lo[first];
+                    const int nearK = swap ? second : first, farK = swap ? first : second;
+                    stack[top++] = {node.child[farK], lo[farK]};
+                    ref = node.child[nearK];
+                    continue;
+                }
+                // Three or four: push all, sort the pushed entries farthest first.
+                const int base = top;
+                stack[top++] = {node.child[first], lo[first]};
+                stack[top++] = {node.child[second], lo[second]};
                 while (mask != 0) {
                     const int k = std::countr_zero(mask);
                     mask &= mask - 1;
-                    StackEntry e{node.child[k], tNear[k]};
-                    int j = count++;
-                    if (ordered) {
-                        // insertion sort, farthest first
-                        while (j > 0 && hits[j - 1].tNear < e.tNear) {
-                            hits[j] = hits[j - 1];
+                    stack[top++] = {node.child[k], lo[k]};
+                }
+                if (ordered) {
+                    for (int i = base + 1; i < top; ++i) {
+                        const StackEntry e = stack[i];
+                        int j = i;
+                        while (j > base && stack[j - 1].tNear < e.tNear) {
+                            stack[j] = stack[j - 1];
                             --j;
                         }
+                        stack[j] = e;
                     }
-                    hits[j] = e;
                 }
-                for (int j = 0; j + 1 < count; ++j) stack[top++] = hits[j];
-                ref = hits[count - 1].ref;
+                ref = stack[--top].ref;
             }
         }
-        if (!leaf(leafFirst(ref), leafCount(ref), prep)) return;
+        {
+            const double next = leaf(leafFirst(ref), leafCount(ref));
+            if (next < 0.0) return;
+            const float hiF = roundUpToFloat(next * kFarScale);
+            tHi = Float4{hiF, hiF, hiF, hiF};
+            farLimit = hiF;
+        }
     pop:
         for (;;) {
             if (top == 0) return;
             const StackEntry& e = stack[--top];
-            if (e.tNear <= prep.farLimit()) {
+            if (e.tNear <= farLimit) {
                 ref = e.ref;
                 break;
             }
@@ -298,34 +326,31 @@ auto Bvh::nearest(const Ray& ray, double tMin, double tMax, Intersect&& f) const
     using Result = bvh_detail::ResultOf<Intersect, std::uint32_t, const Ray&, double, double>;
     Result best;
     double far = tMax;
-    traverseRay(ray, tMin, tMax, true,
-                [&](std::uint32_t first, std::uint32_t count, bvh_detail::RayPrep& prep) {
-                    for (std::uint32_t k = 0; k < count; ++k) {
-                        Result hit = f(order_[first + k], ray, tMin, far);
-                        if (hit && hit->t >= tMin && hit->t <= far) {
-                            far = hit->t;
-                            best = std::move(hit);
-                            prep.setRange(tMin, far);
-                        }
-                    }
-                    return true;
-                });
+    traverseRay(ray, tMin, tMax, true, [&](std::uint32_t first, std::uint32_t count) {
+        for (std::uint32_t k = 0; k < count; ++k) {
+            Result hit = f(order_[first + k], ray, tMin, far);
+            if (hit && hit->t >= tMin && hit->t <= far) {
+                far = hit->t;
+                best = std::move(hit);
+            }
+        }
+        return far;
+    });
     return best;
 }
 
 template <class Test>
 bool Bvh::any(const Ray& ray, double tMin, double tMax, Test&& f) const {
     bool found = false;
-    traverseRay(ray, tMin, tMax, false,
-                [&](std::uint32_t first, std::uint32_t count, bvh_detail::RayPrep&) {
-                    for (std::uint32_t k = 0; k < count; ++k) {
-                        if (f(order_[first + k], ray, tMin, tMax)) {
-                            found = true;
-                            return false;
-                        }
-                    }
-                    return true;
-                });
+    traverseRay(ray, tMin, tMax, false, [&](std::uint32_t first, std::uint32_t count) {
+        for (std::uint32_t k = 0; k < count; ++k) {
+            if (f(order_[first + k], ray, tMin, tMax)) {
+                found = true;
+                return -1.0;
+            }
+        }
+        return tMax;
+    });
     return found;
 }
 

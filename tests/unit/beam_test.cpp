@@ -1,0 +1,331 @@
+#include <catch2/catch.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <random>
+#include <vector>
+
+#include "asos/accel/cone_box.hpp"
+#include "asos/geometry/beam_eye.hpp"
+#include "asos/geometry/beam_rect.hpp"
+#include "asos/geometry/beam_segment.hpp"
+#include "asos/geometry/beam_sphere.hpp"
+
+using namespace asos;
+
+namespace {
+
+Vec3 randomUnit(std::mt19937_64& rng) {
+    std::normal_distribution<double> n;
+    for (;;) {
+        const Vec3 d(n(rng), n(rng), n(rng));
+        const double l = glm::length(d);
+        if (l > 1e-6) return d / l;
+    }
+}
+
+// A ray of a beam lies in its cone: its direction within the half-angle of
+// the axis (for a cone whose apex is the ray's origin).
+bool directionInCone(const Cone& c, const Vec3& dir) {
+    return angleBetween(c.axis, dir) <= c.halfAngle;
+}
+
+// A pinhole camera as the renderer will make one: unnormalised direction
+// affine in (u, v).
+struct Pinhole {
+    Vec3 eye{1, 2, 3};
+    Vec3 forward = glm::normalize(Vec3(0.2, -0.1, 1.0));
+    Vec3 right = glm::normalize(glm::cross(Vec3(0, 1, 0), forward)) * 0.8;
+    Vec3 up = glm::cross(forward, glm::normalize(right)) * 0.6;
+    Ray operator()(double u, double v) const {
+        return {eye, glm::normalize(forward + (2 * u - 1) * right + (2 * v - 1) * up)};
+    }
+};
+
+struct Orthographic {
+    Vec3 centre{1, 2, 3};
+    Vec3 dir = glm::normalize(Vec3(0.3, -0.2, 1.0));
+    Vec3 right = glm::normalize(glm::cross(Vec3(0, 1, 0), dir)) * 4.0;
+    Vec3 up = glm::cross(dir, glm::normalize(right)) * 3.0;
+    Ray operator()(double u, double v) const { return {centre + (2 * u - 1) * right + (2 * v - 1) * up, dir}; }
+};
+
+}  // namespace
+
+TEST_CASE("Smallest enclosing cone holds its directions and cannot shrink", "[beam]") {
+    std::mt19937_64 rng(21);
+    std::uniform_real_distribution<double> u01(0.0, 1.0);
+    for (int trial = 0; trial < 2000; ++trial) {
+        // 2..6 directions within a cap of random size about a random axis.
+        const Vec3 centre = randomUnit(rng);
+        const double spread = trial % 3 == 0 ? 1e-4 : 0.9 * u01(rng);  // within a hemisphere
+        std::vector<Vec3> dirs;
+        const int n = 2 + static_cast<int>(rng() % 5);
+        for (int i = 0; i < n; ++i) dirs.push_back(glm::normalize(centre + spread * randomUnit(rng)));
+        const DirectionCone cone = smallestEnclosingCone(dirs);
+        REQUIRE(cone.halfAngle < 0.5 * kPi);
+        double widest = 0.0;
+        for (const Vec3& d : dirs) {
+            CHECK(angleBetween(cone.axis, d) <= cone.halfAngle);
+            widest = std::max(widest, angleBetween(cone.axis, d));
+        }
+        // The rim touches a direction, and no nearby axis does better.
+        CHECK(cone.halfAngle - widest == Approx(kConeAnglePad).margin(1e-15));
+        for (int k = 0; k < 50; ++k) {
+            const Vec3 other = glm::normalize(cone.axis + 0.3 * widest * u01(rng) * randomUnit(rng));
+            double otherWidest = 0.0;
+            for (const Vec3& d : dirs) otherWidest = std::max(otherWidest, angleBetween(other, d));
+            CHECK(otherWidest >= widest - 1e-12);
+        }
+    }
+    // Not in an open hemisphere: the cone of everything.
+    const std::vector<Vec3> opposite = {Vec3(1, 0, 0), Vec3(-1, 0, 0)};
+    CHECK(smallestEnclosingCone(opposite).halfAngle == kPi);
+}
+
+TEST_CASE("Solid angles of triangles and rectangles are exact", "[beam]") {
+    // An octant: pi/2.
+    CHECK(solidAngle(Vec3(1, 0, 0), Vec3(0, 1, 0), Vec3(0, 0, 1)) == Approx(0.5 * kPi).epsilon(1e-14));
+    // A rectangle a x b centred at distance d: 4 asin(ab / sqrt((a^2 + 4d^2)(b^2 + 4d^2))).
+    const double a = 2.0, b = 3.0, d = 1.5;
+    const std::vector<Vec3> corners = {Vec3(-a / 2, -b / 2, d), Vec3(a / 2, -b / 2, d), Vec3(a / 2, b / 2, d),
+                                       Vec3(-a / 2, b / 2, d)};
+    CHECK(solidAngleOfPolygon(Vec3(0.0), corners) ==
+          Approx(4.0 * std::asin(a * b / std::sqrt((a * a + 4 * d * d) * (b * b + 4 * d * d)))).epsilon(1e-13));
+}
+
+TEST_CASE("Eye pyray: smallest cone about the central ray, exact quarters", "[beam]") {
+    const Pinhole camera;
+    std::mt19937_64 rng(22);
+    std::uniform_real_distribution<double> u01(0.0, 1.0);
+    const double pixel = 1.0 / 64.0;
+    for (int trial = 0; trial < 300; ++trial) {
+        const double u = std::floor(u01(rng) * 64) * pixel, v = std::floor(u01(rng) * 64) * pixel;
+        const EyePyray pixelPyray = EyePyray::make(camera, ImageSquare{u, v, u + pixel, v + pixel});
+        REQUIRE(pixelPyray.projection() == Projection::Perspective);
+        // Descend to a random level up to 4 (MAX), checking every level.
+        EyePyray p = pixelPyray;
+        for (int level = 0; level <= 4; ++level) {
+            const Cone& c = p.cone();
+            CHECK(c.apex == camera.eye);
+            CHECK(angleBetween(c.axis, p.centralRay().dir) <= 1e-15);
+            CHECK(p.weight() == std::ldexp(1.0, -2 * level));
+            // The rim touches a corner ray; every corner is inside.
+            double widest = 0.0;
+            for (const Ray& r : p.cornerRays()) widest = std::max(widest, angleBetween(c.axis, r.dir));
+            CHECK(c.halfAngle - widest == Approx(kConeAnglePad).margin(1e-15));
+            // Rays of the pyray (jittered) are inside its cone and its parent's.
+            for (int k = 0; k < 20; ++k) {
+                const Ray r = p.sampleRay(camera, u01(rng), u01(rng));
+                CHECK(directionInCone(c, r.dir));
+                CHECK(directionInCone(pixelPyray.cone(), r.dir));
+            }
+            const auto quarters = p.split(camera);
+            // The quarters tile the square: shared midpoints, weights summing exactly.
+            double total = 0.0;
+            for (int q = 0; q < 4; ++q) {
+                total += quarters[q].weight();
+                CHECK(quarters[q].level() == level + 1);
+            }
+            CHECK(total == p.weight());
+            CHECK(quarters[0].square().u1 == quarters[1].square().u0);
+            CHECK(quarters[0].square().v1 == quarters[2].square().v0);
+            CHECK(quarters[3].square().u1 == p.square().u1);
+            CHECK(quarters[3].square().v1 == p.square().v1);
+            CHECK(quarters[0].square().u0 == p.square().u0);
+            // The quarter's corner at the parent's centre is the parent's central ray.
+            CHECK(quarters[0].cornerRays()[2].dir == p.centralRay().dir);
+            p = quarters[rng() % 4];
+        }
+    }
+}
+
+TEST_CASE("Eye pyray of an orthographic camera: a cone behind that holds the prism", "[beam]") {
+    const Orthographic camera;
+    std::mt19937_64 rng(23);
+    std::uniform_real_distribution<double> u01(0.0, 1.0);
+    for (double tMax : {50.0, kInfinity}) {
+        for (int trial = 0; trial < 100; ++trial) {
+            const double size = std::ldexp(1.0, -static_cast<int>(rng() % 10));
+            const double u = u01(rng) * (1 - size), v = u01(rng) * (1 - size);
+            const EyePyray p = EyePyray::make(camera, ImageSquare{u, v, u + size, v + size}, 0, 0.5, tMax);
+            REQUIRE(p.projection() == Projection::Orthographic);
+            const ConeBoxTest cone(p.cone());
+            for (int k = 0; k < 200; ++k) {
+                const Ray r = p.sampleRay(camera, k % 10 == 0 ? 0.0 : u01(rng), k % 10 == 1 ? 1.0 : u01(rng));
+                const double far = std::isfinite(tMax) ? tMax : 1e4;
+                const double t = k % 7 == 0 ? 0.5 : (k % 7 == 1 ? far : 0.5 + u01(rng) * (far - 0.5));
+                INFO("size " << size << " t " << t);
+                CHECK(cone.contains(r.at(t)));
+            }
+            // Over a finite depth the cone stays within 1/16 of the prism's width.
+            if (std::isfinite(tMax)) {
+                const Cone& c = p.cone();
+                const double rho = glm::length(p.cornerRays()[0].origin - p.centralRay().origin);
+                CHECK(c.tMax * std::tan(c.halfAngle) <= rho * (1.0 + 1.0 / 16.0) * 1.001);
+            } else {
+                CHECK(std::tan(p.cone().halfAngle) == Approx(1.0 / 4096).epsilon(1e-9));
+            }
+        }
+    }
+    // Rays that share neither origin nor direction are rejected.
+    const auto bad = [](double u, double v) { return Ray{Vec3(u, v, 0), glm::normalize(Vec3(u, v, 1))}; };
+    CHECK_THROWS_AS(EyePyray::make(bad, ImageSquare{}), std::invalid_argument);
+}
+
+TEST_CASE("Rectangle shadow pyray: quarters tile the light, rays inside the cone", "[beam]") {
+    std::mt19937_64 rng(24);
+    std::uniform_real_distribution<double> u01(0.0, 1.0);
+    for (int trial = 0; trial < 200; ++trial) {
+        const LightRectangle light{Vec3(u01(rng), 5 + u01(rng), u01(rng)), randomUnit(rng) * (0.1 + 3 * u01(rng)),
+                                   randomUnit(rng) * (0.1 + 3 * u01(rng))};
+        // Points near and far, head-on and grazing.
+        const Vec3 point = light.corner + randomUnit(rng) * std::pow(10.0, -1.0 + 3.0 * u01(rng));
+        const auto made = RectShadowPyray::make(point, light, 1e-4);
+        if (!made) continue;
+        const Vec3 n = glm::normalize(glm::cross(light.edgeA, light.edgeB));
+        RectShadowPyray p = *made;
+        const double lightArea = glm::length(glm::cross(light.edgeA, light.edgeB));
+        for (int level = 0; level <= 4; ++level) {
+            const Cone& c = p.cone();
+            CHECK(p.weight() == std::ldexp(1.0, -2 * level));
+            CHECK(p.area() == Approx(lightArea * p.weight()).epsilon(1e-12));
+            for (int k = 0; k < 30; ++k) {
+                const BeamRay r = k == 0 ? p.central() : p.sample(k < 5 ? (k & 1) : u01(rng), k < 5 ? (k >> 1 & 1) : u01(rng));
+                CHECK(directionInCone(c, r.ray.dir));
+                // The ray ends on the light's plane, within the cone's t-range.
+                CHECK(std::abs(glm::dot(r.ray.at(r.distance) - light.corner, n)) <= 1e-9 * (1 + r.distance));
+                CHECK(r.distance <= c.tMax);
+                CHECK(r.distance >= p.nearestLightDistance() * (1 - 1e-12));
+            }
+            CHECK(p.cosTheta() == Approx(std::abs(glm::dot(n, p.central().ray.dir))));
+            const auto quarters = p.split();
+            double weights = 0.0, solid = 0.0;
+            for (const auto& q : quarters) {
+                weights += q.weight();
+                solid += q.solidAngle();
+            }
+            CHECK(weights == p.weight());
+            CHECK(solid == Approx(p.solidAngle()).epsilon(1e-9));
+            CHECK(quarters[0].region().s1 == quarters[1].region().s0);
+            CHECK(quarters[0].region().t1 == quarters[2].region().t0);
+            p = quarters[rng() % 4];
+        }
+    }
+    // In the light's plane: no beam. Zero area: an error.
+    const LightRectangle light{Vec3(0.0), Vec3(1, 0, 0), Vec3(0, 1, 0)};
+    CHECK_FALSE(RectShadowPyray::make(Vec3(3, 3, 0), light).has_value());
+    CHECK_THROWS_AS(RectShadowPyray::make(Vec3(0, 0, 1), LightRectangle{Vec3(0.0), Vec3(1, 0, 0), Vec3(2, 0, 0)}),
+                    std::invalid_argument);
+    // Head-on unit square at distance 1 (corner at the foot): cos theta of the
+    // central ray and the nearest distance are known.
+    const auto p = RectShadowPyray::make(Vec3(0, 0, 1), light);
+    REQUIRE(p);
+    CHECK(p->nearestLightDistance() == Approx(1.0));
+    CHECK(p->cosTheta() == Approx(1.0 / std::sqrt(1.5)));
+}
+
+TEST_CASE("Segment shadow pyray: halves tile the light, rays inside the cone", "[beam]") {
+    std::mt19937_64 rng(25);
+    std::uniform_real_distribution<double> u01(0.0, 1.0);
+    for (int trial = 0; trial < 300; ++trial) {
+        const Vec3 a(u01(rng), 4, u01(rng));
+        const Vec3 b = a + randomUnit(rng) * (0.1 + 5 * u01(rng));
+        const Vec3 point = a + randomUnit(rng) * std::pow(10.0, -1.0 + 2.5 * u01(rng));
+        const auto made = SegmentShadowPyray::make(point, a, b);
+        if (!made) continue;
+        SegmentShadowPyray p = *made;
+        for (int level = 0; level <= 6; ++level) {
+            CHECK(p.weight() == std::ldexp(1.0, -level));
+            for (int k = 0; k < 20; ++k) {
+                const BeamRay r = k == 0 ? p.central() : p.sample(k == 1 ? 0.0 : (k == 2 ? 1.0 : u01(rng)));
+                CHECK(directionInCone(p.cone(), r.ray.dir));
+                CHECK(r.distance <= p.cone().tMax);
+                CHECK(r.distance >= p.nearestLightDistance() * (1 - 1e-12));
+                // It ends on the segment.
+                const Vec3 end = r.ray.at(r.distance);
+                CHECK(glm::length(glm::cross(end - a, b - a)) <= 1e-9 * glm::length(b - a) * (1 + glm::length(end - a)));
+            }
+            const auto halves = p.split();
+            CHECK(halves[0].weight() + halves[1].weight() == p.weight());
+            CHECK(halves[0].s1() == halves[1].s0());
+            CHECK(halves[0].length() + halves[1].length() == Approx(p.length()).epsilon(1e-14));
+            p = halves[rng() % 2];
+        }
+    }
+    CHECK_FALSE(SegmentShadowPyray::make(Vec3(0.5, 0, 0), Vec3(0.0), Vec3(1, 0, 0)).has_value());
+    CHECK(SegmentShadowPyray::make(Vec3(2, 0, 0), Vec3(0.0), Vec3(1, 0, 0)).has_value());  // end-on
+    CHECK_THROWS_AS(SegmentShadowPyray::make(Vec3(0, 1, 0), Vec3(0.0), Vec3(0.0)), std::invalid_argument);
+}
+
+TEST_CASE("Sphere shadow cone: the tangent cone, equal-area pieces, rays inside their cones", "[beam]") {
+    std::mt19937_64 rng(26);
+    std::uniform_real_distribution<double> u01(0.0, 1.0);
+    for (int trial = 0; trial < 150; ++trial) {
+        const Vec3 centre(u01(rng), 6, u01(rng));
+        const double radius = 0.05 + 2 * u01(rng);
+        // From far away to just outside the surface.
+        const double distance = radius * (1.0 + std::pow(10.0, -3.0 + 5.0 * u01(rng)));
+        const Vec3 point = centre + randomUnit(rng) * distance;
+        const auto made = SphereShadowCone::make(point, centre, radius, 1e-4);
+        REQUIRE(made);
+        CHECK(made->cone().halfAngle == Approx(std::asin(radius / distance)).margin(1e-12));
+        CHECK(made->central().ray.dir == made->cone().axis);
+        CHECK(made->central().distance == Approx(distance - radius).epsilon(1e-9));
+        CHECK(made->solidAngle() == Approx(2 * kPi * (1 - std::sqrt(1 - (radius / distance) * (radius / distance)))).epsilon(1e-9));
+        // Walk down four levels along random pieces; at each level check all four pieces.
+        SphereShadowCone p = *made;
+        for (int level = 0; level < 4; ++level) {
+            const auto pieces = p.split();
+            double weights = 0.0, solid = 0.0;
+            for (const auto& q : pieces) {
+                weights += q.weight();
+                solid += q.solidAngle();
+                CHECK(q.weight() == std::ldexp(1.0, -2 * (level + 1)));
+                for (int k = 0; k < 60; ++k) {
+                    // Corners of the piece first, then along its outer and
+                    // inner arcs (where a cone of the corners alone could
+                    // fall short), then inside.
+                    double xi1 = u01(rng), xi2 = u01(rng);
+                    if (k < 4) {
+                        xi1 = k & 1;
+                        xi2 = k >> 1 & 1;
+                    } else if (k < 30) {
+                        xi1 = 1.0;
+                        xi2 = (k - 4) / 25.0;
+                    } else if (k < 40) {
+                        xi1 = 0.0;
+                        xi2 = (k - 30) / 9.0;
+                    }
+                    const BeamRay r = k == 4 ? q.central() : q.sample(xi1, xi2);
+                    INFO("level " << level + 1 << " region r [" << q.region().r0 << "," << q.region().r1 << "] phi ["
+                                  << q.region().phi0 << "," << q.region().phi1 << "]");
+                    CHECK(directionInCone(q.cone(), r.ray.dir));
+                    CHECK(directionInCone(made->cone(), r.ray.dir));
+                    // It meets the sphere where the beam says, within the cone's t-range.
+                    CHECK(glm::length(r.ray.at(r.distance) - centre) == Approx(radius).epsilon(1e-6));
+                    CHECK(r.distance <= q.cone().tMax);
+                    CHECK(r.distance >= q.nearestLightDistance() * (1 - 1e-9));
+                }
+            }
+            CHECK(weights == p.weight());
+            CHECK(solid == Approx(p.solidAngle()).epsilon(1e-9));
+            // The pieces' regions tile the parent's: equal areas (r^2 dphi) summing to it.
+            double area = 0.0;
+            for (const auto& q : pieces) {
+                const DiscRegion& d = q.region();
+                const double a = (d.r1 * d.r1 - d.r0 * d.r0) * (d.phi1 - d.phi0);
+                const DiscRegion& e = p.region();
+                CHECK(a == Approx(0.25 * (e.r1 * e.r1 - e.r0 * e.r0) * (e.phi1 - e.phi0)).epsilon(1e-12));
+                CHECK(d.r0 >= e.r0);
+                CHECK(d.r1 <= e.r1);
+                CHECK(d.phi0 >= e.phi0);
+                CHECK(d.phi1 <= e.phi1);
+                area += a;
+            }
+            p = pieces[rng() % 4];
+        }
+    }
+    CHECK_FALSE(SphereShadowCone::make(Vec3(0.5, 0, 0), Vec3(0.0), 1.0).has_value());
+    CHECK_THROWS_AS(SphereShadowCone::make(Vec3(5, 0, 0), Vec3(0.0), 0.0), std::invalid_argument);
+}
