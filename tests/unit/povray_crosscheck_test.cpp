@@ -86,7 +86,7 @@ struct MiniTracer {
             return {&sample, 1};
         };
         auto reflected = [&](const Ray& r, int d, double w) { return radiance(r, d, w); };
-        const Texture& texture = scene.objects[hit->objectIndex].texture;
+        const Texture& texture = *scene.objects[hit->objectIndex].texture;
         return shadeSurface({*hit, texture, ray, depth, weight}, scene.lights, settings,
                             lightArriving, reflected);
     }
@@ -135,14 +135,14 @@ Camera tiltedCamera(Camera::Projection projection, double dirLength, double righ
 Object sphere(const Vec3& c, double r, const Pigment& pigment, const Finish& finish) {
     Object o;
     o.shape = SphereShape{c, r};
-    o.texture = {pigment, finish};
+    o.texture = std::make_shared<const Texture>(Texture{pigment, finish});
     return o;
 }
 
 Object groundPlane(const Pigment& pigment, const Finish& finish) {
     Object o;
     o.shape = PlaneShape{{0, 1, 0}, 0.0};
-    o.texture = {pigment, finish};
+    o.texture = std::make_shared<const Texture>(Texture{pigment, finish});
     return o;
 }
 

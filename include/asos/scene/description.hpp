@@ -111,13 +111,19 @@ struct Texture {
     Finish finish;
 };
 
+// POV-Ray's default texture (black pigment, default finish), shared.
+inline const std::shared_ptr<const Texture>& defaultTexture() {
+    static const std::shared_ptr<const Texture> texture = std::make_shared<const Texture>();
+    return texture;
+}
+
 struct Object {
     Shape shape;
     Transform worldFromObject;
     // Shared, never null: objects given the same declared texture (or none, the
     // default) point to one Texture, as in POV-Ray. This keeps a million
     // spheres under 1 GiB (a Texture with its pattern transform is 432 bytes).
-    std::shared_ptr<const Texture> texture;
+    std::shared_ptr<const Texture> texture = defaultTexture();
     bool noShadow = false;
     AsosOptions asos;
     SourceLoc loc;
