@@ -11,6 +11,9 @@ struct CommandResult {
     int exitCode = 0;
 };
 
+// `asos render SCENE -o OUT …`: renders a scene to an image (cmd_render.cpp).
+void addRenderCommand(CLI::App& app, CommandResult& result);
+
 // `asos bench …`: programs that print figures. Each benchmark registers under
 // the `bench` subcommand returned by addBenchCommand.
 CLI::App* addBenchCommand(CLI::App& app);
