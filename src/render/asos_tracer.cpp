@@ -139,6 +139,7 @@ Vec3 AsosTracer::shadeLeaf(const ImageSquare& square, int level, std::uint32_t i
             if (!footprint) footprint.emplace(camera_, square, hit->position, hit->normal, hit->t);
             PointShadowQuery query;
             query.lightPosition = light.position;
+            query.lightIndex = static_cast<std::size_t>(p.lightIndex);
             query.settings = lightSettings_[static_cast<std::size_t>(p.lightIndex)];
             query.shadedObject = static_cast<std::uint32_t>(hit->objectIndex);
             query.shadedCanSelfShadow = selfShadowing_[query.shadedObject] != 0;
@@ -197,11 +198,17 @@ PixelResult AsosTracer::trace(int px, int py, AsosScratch& s, RenderCounters& c,
     std::vector<Item>& rootItems = s.items[0];
     rootItems.clear();
     const PreparedCone rootCone(root.cone());
-    scene_.coneCandidates(root.cone(), [&](std::uint32_t object) {
+    auto detect = [&](std::uint32_t object) {
         ++c.coneTests;
         const ConeClass k = scene_.primitive(object).classify(rootCone);
         if (k.coverage != Coverage::Miss) rootItems.push_back({object, k});
-    });
+    };
+    // Neighbouring pixels' cones share the eye as apex: a remembered wider
+    // cone's objects serve them (perspective cameras; orthographic pyrays
+    // have an apex each).
+    if (camera_.orthographic()) scene_.coneCandidates(root.cone(), detect);
+    else s.eyeCandidates.visit(scene_, root.cone(), detect);
+    sortByObject(rootItems.data(), rootItems.data() + rootItems.size());
     const std::uint32_t rootCount = pruneHidden(rootItems, 0);
     bool resolved = false;
     const Item* front = resolve(rootItems, 0, rootCount, resolved);

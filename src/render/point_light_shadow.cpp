@@ -28,26 +28,30 @@ struct ShadowPyray {
     bool valid;
 };
 
-ShadowPyray makeShadowPyray(const Vec3& light, const Footprint& footprint, const ImageSquare& sq) {
-    const Vec3 corners[4] = {footprint.at(sq.u0, sq.v0), footprint.at(sq.u1, sq.v0),
-                             footprint.at(sq.u1, sq.v1), footprint.at(sq.u0, sq.v1)};
-    const Vec3 centre = footprint.at(sq.uMid(), sq.vMid());
+// From the footprint points of a square's corners and centre.
+ShadowPyray makeShadowPyray(const Vec3& light, const Footprint& footprint,
+                            const std::array<Vec3, 4>& corners, const Vec3& centre) {
     ShadowPyray p{};
     const Vec3 toCentre = centre - light;
     p.centralDistance = glm::length(toCentre);
     if (!(p.centralDistance > 2.0 * kPovShadowTolerance)) return p;
     const Vec3 axis = toCentre / p.centralDistance;
-    double halfAngle = 0.0, farthest = p.centralDistance, nearestCorner = p.centralDistance;
+    // The widest corner, by the tangent of its angle from the axis (one atan
+    // for the cone rather than one per corner).
+    double widestTangent = 0.0, farthest = p.centralDistance, nearestCorner = p.centralDistance;
     double diameter = 0.0;
     for (int i = 0; i < 4; ++i) {
         const Vec3 d = corners[i] - light;
         const double distance = glm::length(d);
         farthest = std::max(farthest, distance);
         nearestCorner = std::min(nearestCorner, distance);
-        halfAngle = std::max(halfAngle, angleBetween(axis, d));
+        const double along = glm::dot(d, axis);
+        if (!(along > 0.0)) return p;  // a corner at right angles to the axis or behind
+        widestTangent = std::max(widestTangent, glm::length(glm::cross(d, axis)) / along);
         for (int j = i + 1; j < 4; ++j)
             diameter = std::max(diameter, glm::length(corners[i] - corners[j]));
     }
+    double halfAngle = std::atan(widestTangent);
     // Every footprint point lies within `diameter` of a corner.
     p.nearestFootprint = nearestCorner - diameter;
     if (!footprint.onTangentPlane() && p.nearestFootprint > 0.0) {
@@ -62,6 +66,13 @@ ShadowPyray makeShadowPyray(const Vec3& light, const Footprint& footprint, const
     p.central = {light, axis};
     p.valid = true;
     return p;
+}
+
+ShadowPyray makeShadowPyray(const Vec3& light, const Footprint& footprint, const ImageSquare& sq) {
+    return makeShadowPyray(light, footprint,
+                           {footprint.at(sq.u0, sq.v0), footprint.at(sq.u1, sq.v0),
+                            footprint.at(sq.u1, sq.v1), footprint.at(sq.u0, sq.v1)},
+                           footprint.at(sq.uMid(), sq.vMid()));
 }
 
 std::uint64_t subKey(std::uint64_t key, int level, std::uint32_t ix, std::uint32_t iy) {
@@ -80,13 +91,16 @@ Footprint::Footprint(const CameraModel& camera, const ImageSquare& square, const
     : camera_(&camera), square_(square), point_(point), normal_(normal), depth_(depth) {
     const double us[4] = {square.u0, square.u1, square.u1, square.u0};
     const double vs[4] = {square.v0, square.v0, square.v1, square.v1};
+    Ray rays[4];
+    double ts[4];
     for (int i = 0; i < 4; ++i) {
-        const double t = planeDistance(camera.ray(us[i], vs[i]));
-        if (!(t >= depth / kFootprintDepthRatio && t <= depth * kFootprintDepthRatio)) {
+        rays[i] = camera.ray(us[i], vs[i]);
+        ts[i] = planeDistance(rays[i]);
+        if (!(ts[i] >= depth / kFootprintDepthRatio && ts[i] <= depth * kFootprintDepthRatio))
             tangentPlane_ = false;
-            break;
-        }
     }
+    for (int i = 0; i < 4; ++i) corners_[i] = rays[i].at(tangentPlane_ ? ts[i] : depth_);
+    centre_ = at(square.uMid(), square.vMid());
 }
 
 double Footprint::planeDistance(const Ray& ray) const {
@@ -154,7 +168,7 @@ double pointLightLitFraction(const Scene& scene, const Footprint& footprint,
         return plainRayLit(footprint.at(p.x, p.y));
     }
 
-    const ShadowPyray root = makeShadowPyray(light, footprint, footprint.square());
+    const ShadowPyray root = makeShadowPyray(light, footprint, footprint.corners(), footprint.centre());
     if (!root.valid) return plainRayLit(footprint.point());
     counters.countShadowPyray(q.level);
 
@@ -179,13 +193,15 @@ double pointLightLitFraction(const Scene& scene, const Footprint& footprint,
     std::vector<ShadowScratch::Item>& rootItems = s.items[0];
     rootItems.clear();
     const PreparedCone rootCone(root.cone);
-    scene.coneCandidates(root.cone, [&](std::uint32_t object) {
+    if (s.candidates.size() <= q.lightIndex) s.candidates.resize(q.lightIndex + 1);
+    s.candidates[q.lightIndex].visit(scene, root.cone, [&](std::uint32_t object) {
         if (scene.object(object).noShadow) return;
         if (object == q.shadedObject && !q.shadedCanSelfShadow) return;
         ++counters.coneTests;
         const ConeClass k = scene.primitive(object).classify(rootCone);
         if (k.coverage != Coverage::Miss) rootItems.push_back({object, k});
     });
+    sortByObject(rootItems.data(), rootItems.data() + rootItems.size());
     const auto rootCount = static_cast<std::uint32_t>(rootItems.size());
     switch (verdict(rootItems, 0, rootCount, root.nearestFootprint)) {
         case Verdict::Lit: return 1.0;
@@ -201,8 +217,8 @@ double pointLightLitFraction(const Scene& scene, const Footprint& footprint,
     s.nodes[0].clear();
     const ImageSquare& rootSquare = footprint.square();
     s.nodes[0].push_back({rootSquare, q.level, q.ix, q.iy, 0, rootCount, false});
-    s.nodes[0].back().blocked = rayBlocked(footprint.at(rootSquare.uMid(), rootSquare.vMid()),
-                                           rootItems, 0, rootCount, s.hits[0].data());
+    s.nodes[0].back().blocked =
+        rayBlocked(footprint.centre(), rootItems, 0, rootCount, s.hits[0].data());
     double lit = 0.0;
     int cur = 0;
     for (int level = q.level;; ++level) {

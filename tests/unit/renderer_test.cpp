@@ -112,7 +112,11 @@ TEST_CASE("Renders are identical for any thread count and region tiling", "[rend
         const RenderOutput two = renderOrFail(d, s);
         CHECK(one.color == two.color);
         CHECK(one.samples == two.samples);
-        CHECK(one.stats.counters == two.stats.counters);
+        // Every count but the cone tests, which include the objects that a
+        // thread's remembered wider cone offered (render/cone_candidates.hpp).
+        RenderCounters a = one.stats.counters, b = two.stats.counters;
+        a.coneTests = b.coneTests = 0;
+        CHECK(a == b);
 
         // Three regions put together give the whole image.
         Image assembled = Image::rgb(40, 30);

@@ -17,6 +17,7 @@
 #include "asos/geometry/beam_eye.hpp"
 #include "asos/render/asos_settings.hpp"
 #include "asos/render/camera.hpp"
+#include "asos/render/cone_candidates.hpp"
 #include "asos/render/point_light_shadow.hpp"
 #include "asos/render/ray_tracer.hpp"
 #include "asos/render/subdivision_criterion.hpp"
@@ -42,6 +43,7 @@ struct AsosScratch {
     std::vector<Node> nodes[2];
     SubdivisionTally tally;
     ShadowScratch shadow;
+    ConeCandidateCache eyeCandidates;
 };
 
 // One level of a pixel's subdivision, as the paper's Tables 1 and 2 show it.

@@ -13,6 +13,7 @@
 //
 // docs/algorithm.md, "Point lights", has the rules for footprints, occluders
 // and the plain shadow ray used when nothing is marginal.
+#include <array>
 #include <cstdint>
 #include <vector>
 
@@ -20,6 +21,7 @@
 #include "asos/geometry/cone.hpp"
 #include "asos/render/asos_settings.hpp"
 #include "asos/render/camera.hpp"
+#include "asos/render/cone_candidates.hpp"
 #include "asos/render/sampling.hpp"
 #include "asos/render/stats.hpp"
 #include "asos/render/subdivision_criterion.hpp"
@@ -43,6 +45,10 @@ public:
     // The footprint point of image point (u, v) (image coordinates).
     Vec3 at(double u, double v) const;
     const ImageSquare& square() const { return square_; }
+    // The footprint points of the square's corners (u0,v0), (u1,v0),
+    // (u1,v1), (u0,v1), and of its centre.
+    const std::array<Vec3, 4>& corners() const { return corners_; }
+    const Vec3& centre() const { return centre_; }
     // False when the cross-section replaced the tangent plane.
     bool onTangentPlane() const { return tangentPlane_; }
     const Vec3& point() const { return point_; }
@@ -56,6 +62,8 @@ private:
     Vec3 normal_;
     double depth_;
     bool tangentPlane_ = true;
+    std::array<Vec3, 4> corners_;
+    Vec3 centre_;
 };
 
 // Per-thread buffers, so that shadow pyrays allocate nothing per pixel.
@@ -75,11 +83,13 @@ struct ShadowScratch {
     std::vector<std::uint8_t> hits[2];  // per item: the node's central ray hits it
     std::vector<Node> nodes[2];
     SubdivisionTally tally;
+    std::vector<ConeCandidateCache> candidates;  // per light: shadow cones share its position
 };
 
 // One question: how much of a footprint does a point light reach?
 struct PointShadowQuery {
     Vec3 lightPosition{0.0};
+    std::size_t lightIndex = 0;  // which of the scratch's candidate caches serves it
     AsosSettings settings;  // the light's eps, max and jitter
     // The object the footprint lies on. Convex closed shapes (and flat ones)
     // cannot shadow themselves where they face the light, so they are left
