@@ -266,20 +266,22 @@ private:
     }
 
     // A sub-beam that reaches the light unobstructed. One sample along its
-    // central ray when what it carries varies little across it: half the
-    // difference between its central value and the mean of its corners'
-    // (the midpoint rule's error for a quadratic is a third of that
-    // difference on a square, a half on a disc) within EPS of the sub-beam's
-    // share. Otherwise its pieces are refined alike, without any ray, down
-    // to MAX.
+    // central ray when what it carries varies little across it: the
+    // midpoint rule's error on a piece is about a third of the sum of its
+    // second differences along each coordinate (exactly so for a quadratic
+    // on a square; a quarter on a disc), and half that sum within EPS stops
+    // the refinement (the piece's share of EPS, relative to its share of
+    // the light). Otherwise its pieces are refined alike, without any ray,
+    // down to MAX.
     void refineLit(const LightPiece& piece) {
         if (piece.level < model_.asos.maxLevel) {
-            Vec3 corners[4];
-            const int n = beams_.cornerDirections(piece, corners);
-            double mean = 0.0;
-            for (int i = 0; i < n; ++i) mean += carried(corners[i]);
-            mean /= n;
-            if (0.5 * std::abs(mean - carried(piece.central.ray.dir)) > model_.asos.eps) {
+            Vec3 probes[4];
+            const int n = beams_.probeDirections(piece, probes);
+            const double centre = carried(piece.central.ray.dir);
+            double differences = 0.0;
+            for (int i = 0; i < n; i += 2)
+                differences += std::abs(0.5 * (carried(probes[i]) + carried(probes[i + 1])) - centre);
+            if (0.5 * differences > model_.asos.eps) {
                 LightPiece children[LightBeams::kMaxChildren];
                 const int count = beams_.split(piece, children);
                 for (int i = 0; i < count; ++i)

@@ -265,28 +265,32 @@ double LightBeams::nearestLightDistance(const LightPiece& p) const {
     return 0.0;
 }
 
-int LightBeams::cornerDirections(const LightPiece& p, Vec3* out) const {
+int LightBeams::probeDirections(const LightPiece& p, Vec3* out) const {
     switch (shape_) {
         case LightShape::Rectangle: {
-            const Vec3 corners[4] = {rectPoint(p.a0, p.b0), rectPoint(p.a1, p.b0), rectPoint(p.a1, p.b1),
-                                     rectPoint(p.a0, p.b1)};
-            for (int i = 0; i < 4; ++i) out[i] = glm::normalize(corners[i] - apex_);
+            const double sm = 0.5 * (p.a0 + p.a1), tm = 0.5 * (p.b0 + p.b1);
+            out[0] = glm::normalize(rectPoint(p.a0, tm) - apex_);
+            out[1] = glm::normalize(rectPoint(p.a1, tm) - apex_);
+            out[2] = glm::normalize(rectPoint(sm, p.b0) - apex_);
+            out[3] = glm::normalize(rectPoint(sm, p.b1) - apex_);
             return 4;
         }
         case LightShape::Segment:
             out[0] = glm::normalize(corner_ + p.a0 * edgeA_ - apex_);
             out[1] = glm::normalize(corner_ + p.a1 * edgeA_ - apex_);
             return 2;
-        case LightShape::Sphere:
+        case LightShape::Sphere: {
             if (p.level == 0) {
-                for (int i = 0; i < 4; ++i) out[i] = discDirection(1.0, 0.5 * kPi * i);
+                for (int i = 0; i < 4; ++i) out[i] = discDirection(1.0, 0.5 * kPi * ((i & 1) * 2 + (i >> 1)));
                 return 4;
             }
-            out[0] = discDirection(p.a0, p.b0);
-            out[1] = discDirection(p.a0, p.b1);
-            out[2] = discDirection(p.a1, p.b0);
-            out[3] = discDirection(p.a1, p.b1);
+            const double rm = areaRadius(p.a0, p.a1, 0.5), pm = 0.5 * (p.b0 + p.b1);
+            out[0] = discDirection(p.a0, pm);
+            out[1] = discDirection(p.a1, pm);
+            out[2] = discDirection(rm, p.b0);
+            out[3] = discDirection(rm, p.b1);
             return 4;
+        }
         case LightShape::Point: break;
     }
     return 0;

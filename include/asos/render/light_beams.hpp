@@ -59,9 +59,12 @@ public:
     double share(int level) const;
     // No ray of the piece reaches the light nearer than this.
     double nearestLightDistance(const LightPiece& piece) const;
-    // The directions toward the piece's corners (a segment's two ends; the
-    // whole sphere's four rim points at level 0). Returns how many.
-    int cornerDirections(const LightPiece& piece, Vec3* out) const;
+    // Pairs of directions across the piece through its central point, one
+    // pair per coordinate: toward the midpoints of opposite edges (a
+    // segment's two ends; for the whole sphere, opposite points of its rim).
+    // Their means less the central value are the piece's second
+    // differences. Returns how many directions (2 or 4).
+    int probeDirections(const LightPiece& piece, Vec3* out) const;
     // The emitter's weighting along a direction: |cos theta| between the
     // rectangle's normal and the direction; 1 for segments and spheres.
     double emission(const Vec3& dir) const;
