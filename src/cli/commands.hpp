@@ -27,4 +27,7 @@ void addBenchParseCommand(CLI::App& bench, CommandResult& result);
 // `asos bench bvh` (bench_bvh.cpp).
 void addBenchBvhCommand(CLI::App& bench, CommandResult& result);
 
+// `asos bench lights`: area light shadows, ASOS against the grid (bench_lights.cpp).
+void addBenchLightsCommand(CLI::App& bench, CommandResult& result);
+
 }  // namespace asos::cli

@@ -11,7 +11,7 @@ std::span<const LightSample> areaLightSamples(const Scene& scene, const SceneLig
     const LightModel& model = lights[query.lightIndex];
     if (lights.setup().method == LightMethod::Asos)
         return asosAreaLightSamples(scene, model, lights.setup().apex, query, scratch, counters);
-    return gridAreaLightSamples(scene, model, query, scratch, counters);
+    return gridAreaLightSamples(scene, model, query, scratch, counters, lights.setup().gridCulling);
 }
 
 Vec3 diffuseIrradiance(std::span<const LightSample> samples, const Vec3& normal) {

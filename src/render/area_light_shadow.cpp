@@ -46,10 +46,34 @@ struct Origin {
     }
 };
 
-// Every direction of the cone is at or below the tangent plane: nothing
-// through it can light the point.
-bool belowHorizon(const Vec3& normal, const Cone& cone) {
-    return angleBetween(normal, cone.axis) - cone.halfAngle >= 0.5 * kPi;
+// Every direction of the piece's cone is at or below the tangent plane:
+// nothing through it can light the point.
+bool belowHorizon(const Vec3& normal, const LightPiece& piece) {
+    if (piece.tanHalf >= 0.0) {
+        // angle(normal, axis) >= pi/2 + halfAngle, i.e. cos <= -sin(halfAngle).
+        const double t = piece.tanHalf;
+        return glm::dot(normal, piece.cone.axis) < -t / std::sqrt(1.0 + t * t) - 1e-12;
+    }
+    return angleBetween(normal, piece.cone.axis) - piece.cone.halfAngle >= 0.5 * kPi;
+}
+
+// The piece's cone prepared for the primitives, from the tangent of its
+// half-angle where it has one (no trigonometry), widened as PreparedCone
+// widens every cone (kConeAngleMargin), and the padding kConeAnglePad.
+PreparedCone preparedCone(const LightPiece& piece, const Cone& cone) {
+    if (!(piece.tanHalf >= 0.0 && piece.tanHalf < 1e6)) return PreparedCone(cone);
+    PreparedCone p;
+    p.apex = cone.apex;
+    p.axis = cone.axis;
+    p.tMin = std::max(cone.tMin, 0.0);
+    p.tMax = cone.tMax;
+    const double c = 1.0 / std::sqrt(1.0 + piece.tanHalf * piece.tanHalf), s = piece.tanHalf * c;
+    // cos and sin of halfAngle + delta, delta far below 1e-6 (cos delta is
+    // 1 in doubles, sin delta is delta).
+    const double delta = 2.0 * kConeAnglePad + kConeAngleMargin * (1.0 + cone.halfAngle);
+    p.cosHalf = c - s * delta;
+    p.sinHalf = s + c * delta;
+    return p;
 }
 
 // The shadow of one area light at one point: detection, then subdivision
@@ -74,7 +98,7 @@ public:
     void run() {
         if (!beams_.valid()) return;  // the point lies in the light (its plane, its line, inside it)
         const LightPiece root = beams_.root();
-        if (belowHorizon(q_.normal, root.cone)) return;
+        if (belowHorizon(q_.normal, root)) return;
         if (model_.shadowless) {
             refineLit(root);
             return;
@@ -142,7 +166,7 @@ public:
             if (childLevel >= settings.maxLevel) {
                 // MAX-beams need no detection: each is one point sample.
                 for (const Node& n : levelNodes) {
-                    const int count = beams_.split(n.piece, children);
+                    const int count = beams_.split(n.piece, children, false);
                     for (int i = 0; i < count; ++i) {
                         c_.countShadowPyray(childLevel);
                         const BeamRay ray = settings.jitter ? beams_.sample(children[i], randomPoint(children[i]))
@@ -164,11 +188,11 @@ public:
                 const int count = beams_.split(n.piece, children);
                 for (int i = 0; i < count; ++i) {
                     const LightPiece& child = children[i];
-                    if (belowHorizon(q_.normal, child.cone)) continue;
+                    if (belowHorizon(q_.normal, child)) continue;
                     c_.countShadowPyray(childLevel);
                     const auto first = static_cast<std::uint32_t>(childItems.size());
                     const Cone cone = coneOf(child);
-                    const PreparedCone prepared(cone);
+                    const PreparedCone prepared = preparedCone(child, cone);
                     for (std::uint32_t j = n.first; j < n.first + n.count; ++j) {
                         ++c_.coneTests;
                         const ConeClass k = scene_.primitive(items[j].object).classify(prepared);
@@ -213,13 +237,15 @@ private:
     Verdict verdict(const std::vector<Item>& items, std::uint32_t first, std::uint32_t count,
                     const LightPiece& piece, const Cone& cone) const {
         if (count == 0) return Verdict::Lit;
-        const double nearestLight = beams_.nearestLightDistance(piece) - kTolerance;
-        const double farthestSurface = origin_.farthestSurface(cone) + kTolerance;
+        double nearestLight = -1.0, farthestSurface = 0.0;
         for (std::uint32_t i = first; i < first + count; ++i) {
             const ConeClass& k = items[i].cls;
-            if (k.coverage == Coverage::Full && k.tFar < nearestLight &&
-                (!origin_.behind || k.tNear > farthestSurface))
-                return Verdict::Blocked;
+            if (k.coverage != Coverage::Full) continue;
+            if (nearestLight < 0.0) {
+                nearestLight = beams_.nearestLightDistance(piece) - kTolerance;
+                farthestSurface = origin_.farthestSurface(cone) + kTolerance;
+            }
+            if (k.tFar < nearestLight && (!origin_.behind || k.tNear > farthestSurface)) return Verdict::Blocked;
         }
         return Verdict::Marginal;
     }
@@ -265,31 +291,34 @@ private:
         return beams_.emission(dir) * std::max(0.0, glm::dot(q_.normal, dir));
     }
 
-    // A sub-beam that reaches the light unobstructed. One sample along its
-    // central ray when what it carries varies little across it: the
-    // midpoint rule's error on a piece is about a third of the sum of its
-    // second differences along each coordinate (exactly so for a quadratic
-    // on a square; a quarter on a disc), and half that sum within EPS stops
-    // the refinement (the piece's share of EPS, relative to its share of
-    // the light). Otherwise its pieces are refined alike, without any ray,
-    // down to MAX.
+    // A sub-beam that reaches the light unobstructed (no ray needed). Its
+    // light is integrated by a rule exact for quadratics: the central ray
+    // and two pairs of probe rays across the piece (LightBeams::ruleWeights),
+    // where what the piece carries varies little: half the sum of its second
+    // differences along each coordinate (three times the one-ray midpoint
+    // rule's error for a quadratic on a square) within EPS. Otherwise its
+    // pieces are refined alike down to MAX.
     void refineLit(const LightPiece& piece) {
+        BeamRay probes[4];
+        const int n = beams_.probeRays(piece, probes);
         if (piece.level < model_.asos.maxLevel) {
-            Vec3 probes[4];
-            const int n = beams_.probeDirections(piece, probes);
             const double centre = carried(piece.central.ray.dir);
             double differences = 0.0;
             for (int i = 0; i < n; i += 2)
-                differences += std::abs(0.5 * (carried(probes[i]) + carried(probes[i + 1])) - centre);
+                differences +=
+                    std::abs(0.5 * (carried(probes[i].ray.dir) + carried(probes[i + 1].ray.dir)) - centre);
             if (0.5 * differences > model_.asos.eps) {
                 LightPiece children[LightBeams::kMaxChildren];
                 const int count = beams_.split(piece, children);
                 for (int i = 0; i < count; ++i)
-                    if (!belowHorizon(q_.normal, children[i].cone)) refineLit(children[i]);
+                    if (!belowHorizon(q_.normal, children[i])) refineLit(children[i]);
                 return;
             }
         }
-        emit(piece.central, beams_.share(piece.level));
+        const double share = beams_.share(piece.level);
+        const auto [centreWeight, probeWeight] = beams_.ruleWeights(piece);
+        emit(piece.central, share * centreWeight);
+        for (int i = 0; i < n; ++i) emit(probes[i], share * probeWeight);
     }
 
     // Two numbers in [0, 1) for a piece: its level and position decide them.
@@ -388,6 +417,26 @@ std::optional<Vec3> behindApex(const LightModel& model, const Vec3& point, const
         (holds(mid) ? hi : lo) = mid;
     }
     return point - hi * axis;
+}
+
+WholeLight wholeLightVisibility(const Scene& scene, const LightModel& model, const AreaLightQuery& q,
+                                RenderCounters& counters) {
+    const LightBeams beams(model, q.point, kTolerance);
+    if (!beams.valid()) return WholeLight::Partial;
+    const LightPiece root = beams.root();
+    const PreparedCone prepared(root.cone);
+    const double nearestLight = beams.nearestLightDistance(root) - kTolerance;
+    bool any = false, blocked = false;
+    scene.coneCandidates(root.cone, [&](std::uint32_t object) {
+        if (blocked || scene.object(object).noShadow) return;
+        if (object == q.shadedObject && !q.shadedCanSelfShadow) return;
+        ++counters.coneTests;
+        const ConeClass k = scene.primitive(object).classify(prepared);
+        if (k.coverage == Coverage::Miss) return;
+        any = true;
+        blocked = k.coverage == Coverage::Full && k.tFar < nearestLight;
+    });
+    return blocked ? WholeLight::Blocked : (any ? WholeLight::Partial : WholeLight::Lit);
 }
 
 std::span<const LightSample> asosAreaLightSamples(const Scene& scene, const LightModel& model,

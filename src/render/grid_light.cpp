@@ -5,6 +5,7 @@
 #include <optional>
 
 #include "asos/geometry/beam_sphere.hpp"
+#include "asos/render/area_light_shadow.hpp"
 
 namespace asos {
 
@@ -79,10 +80,20 @@ private:
 
 std::span<const LightSample> gridAreaLightSamples(const Scene& scene, const LightModel& model,
                                                   const AreaLightQuery& q, AreaLightScratch& s,
-                                                  RenderCounters& counters) {
+                                                  RenderCounters& counters, bool culling) {
     s.samples.clear();
     const LightPoints light(model, q.point);
     if (!light.usable()) return s.samples;
+    // With culling, a whole-light verdict stands for every ray (adaptive
+    // sampling, whose choices depend on the rays, traces them anyway).
+    std::optional<bool> allVisible;
+    if (culling && !model.shadowless && !model.adaptive) {
+        switch (wholeLightVisibility(scene, model, q, counters)) {
+            case WholeLight::Lit: allVisible = true; break;
+            case WholeLight::Blocked: return s.samples;
+            case WholeLight::Partial: break;
+        }
+    }
     const int n1 = std::max(model.count1, 1);
     const int n2 = model.shape == LightShape::Segment ? 1 : std::max(model.count2, 1);
     const std::uint64_t key = mix64(q.key ^ mix64(0x9e1d0u + q.lightIndex));
@@ -90,7 +101,7 @@ std::span<const LightSample> gridAreaLightSamples(const Scene& scene, const Ligh
         return q.rng.uniform2(SampleStream::LightJitter, mix64(key ^ (std::uint64_t(j) << 32 | std::uint32_t(i))));
     };
     auto blocked = [&](const BeamRay& ray) {
-        if (model.shadowless || !(ray.distance > 2.0 * kTolerance)) return false;
+        if (allVisible || model.shadowless || !(ray.distance > 2.0 * kTolerance)) return false;
         ++counters.shadowRays;
         return scene.occluded(ray.ray, kTolerance, ray.distance - kTolerance);
     };

@@ -106,7 +106,8 @@ double LightBeams::sphereDistanceAtRadius(double r, double widen) const {
     return distance_ * cosPsi - std::sqrt(std::max(0.0, inside));
 }
 
-Cone LightBeams::coneAbout(const Vec3& axis, const Vec3* directions, int count, double farthest) const {
+Cone LightBeams::coneAbout(const Vec3& axis, const Vec3* directions, int count, double farthest,
+                           double& tanHalf) const {
     // The widest direction by the tangent of its angle: one arctangent.
     double widest = 0.0;
     bool hemisphere = true;
@@ -121,15 +122,17 @@ Cone LightBeams::coneAbout(const Vec3& axis, const Vec3* directions, int count, 
     // A piece reaching a right angle from its central ray has no convex cone
     // about it: the cone of all directions holds it.
     const double halfAngle = hemisphere ? std::atan(widest) + kConeAnglePad : kPi;
+    tanHalf = hemisphere ? widest : std::numeric_limits<double>::quiet_NaN();
     return {apex_, axis, halfAngle, tMin_, farthest * (1.0 + 1e-12)};
 }
 
-LightPiece LightBeams::make(double a0, double b0, double a1, double b1, int level,
-                            std::uint64_t path) const {
+LightPiece LightBeams::make(double a0, double b0, double a1, double b1, int level, std::uint64_t path,
+                            bool cone) const {
     LightPiece p{a0, b0, a1, b1, level, path, {}, {}};
     switch (shape_) {
         case LightShape::Rectangle: {
             p.central = toward(rectPoint(0.5 * (a0 + a1), 0.5 * (b0 + b1)));
+            if (!cone) break;
             const Vec3 corners[4] = {rectPoint(a0, b0), rectPoint(a1, b0), rectPoint(a1, b1), rectPoint(a0, b1)};
             Vec3 dirs[4];
             double farthest = 0.0;
@@ -139,11 +142,12 @@ LightPiece LightBeams::make(double a0, double b0, double a1, double b1, int leve
                 farthest = std::max(farthest, l);
                 dirs[i] = d / l;
             }
-            p.cone = coneAbout(p.central.ray.dir, dirs, 4, farthest);
+            p.cone = coneAbout(p.central.ray.dir, dirs, 4, farthest, p.tanHalf);
             break;
         }
         case LightShape::Segment: {
             p.central = toward(corner_ + 0.5 * (a0 + a1) * edgeA_);
+            if (!cone) break;
             const Vec3 d0 = corner_ + a0 * edgeA_ - apex_, d1 = corner_ + a1 * edgeA_ - apex_;
             const double l0 = glm::length(d0), l1 = glm::length(d1);
             const Vec3 dirs[2] = {d0 / l0, d1 / l1};
@@ -163,9 +167,10 @@ LightPiece LightBeams::make(double a0, double b0, double a1, double b1, int leve
             }
             const Vec3 dir = discDirection(areaRadius(a0, a1, 0.5), 0.5 * (b0 + b1));
             p.central = {Ray{apex_, dir}, sphereDistance(dir)};
+            if (!cone) break;
             const Vec3 corners[4] = {discDirection(a0, b0), discDirection(a0, b1), discDirection(a1, b0),
                                      discDirection(a1, b1)};
-            p.cone = coneAbout(dir, corners, 4, far);
+            p.cone = coneAbout(dir, corners, 4, far, p.tanHalf);
             break;
         }
         case LightShape::Point: break;
@@ -177,20 +182,42 @@ LightPiece LightBeams::root() const {
     return shape_ == LightShape::Sphere ? make(0.0, 0.0, 1.0, 2.0 * kPi, 0, 0) : make(0.0, 0.0, 1.0, 1.0, 0, 0);
 }
 
-int LightBeams::split(const LightPiece& p, LightPiece* out) const {
+int LightBeams::splitRectangle(const LightPiece& p, LightPiece* out, bool cones) const {
+    // The quarters share the nine points of a 3 x 3 lattice over the piece:
+    // each is made and normalised once.
+    const double s[3] = {p.a0, 0.5 * (p.a0 + p.a1), p.a1};
+    const double t[3] = {p.b0, 0.5 * (p.b0 + p.b1), p.b1};
+    Vec3 dirs[3][3];
+    double lengths[3][3];
+    if (cones)
+        for (int j = 0; j < 3; ++j)
+            for (int i = 0; i < 3; ++i) {
+                const Vec3 d = rectPoint(s[i], t[j]) - apex_;
+                lengths[j][i] = glm::length(d);
+                dirs[j][i] = d / lengths[j][i];
+            }
+    for (int q = 0; q < 4; ++q) {
+        const int i = q & 1, j = q >> 1;
+        LightPiece& c = out[q];
+        c = LightPiece{s[i], t[j], s[i + 1], t[j + 1], p.level + 1, 4 * p.path + std::uint64_t(q), {}, {}};
+        c.central = toward(rectPoint(0.5 * (s[i] + s[i + 1]), 0.5 * (t[j] + t[j + 1])));
+        if (!cones) continue;
+        const Vec3 corners[4] = {dirs[j][i], dirs[j][i + 1], dirs[j + 1][i + 1], dirs[j + 1][i]};
+        const double farthest = std::max(std::max(lengths[j][i], lengths[j][i + 1]),
+                                         std::max(lengths[j + 1][i + 1], lengths[j + 1][i]));
+        c.cone = coneAbout(c.central.ray.dir, corners, 4, farthest, c.tanHalf);
+    }
+    return 4;
+}
+
+int LightBeams::split(const LightPiece& p, LightPiece* out, bool cones) const {
     const int level = p.level + 1;
     switch (shape_) {
-        case LightShape::Rectangle: {
-            const double sm = 0.5 * (p.a0 + p.a1), tm = 0.5 * (p.b0 + p.b1);
-            for (int q = 0; q < 4; ++q)
-                out[q] = make((q & 1) ? sm : p.a0, (q & 2) ? tm : p.b0, (q & 1) ? p.a1 : sm,
-                              (q & 2) ? p.b1 : tm, level, 4 * p.path + std::uint64_t(q));
-            return 4;
-        }
+        case LightShape::Rectangle: return splitRectangle(p, out, cones);
         case LightShape::Segment: {
             const double mid = 0.5 * (p.a0 + p.a1);
-            out[0] = make(p.a0, 0.0, mid, 1.0, level, 2 * p.path);
-            out[1] = make(mid, 0.0, p.a1, 1.0, level, 2 * p.path + 1);
+            out[0] = make(p.a0, 0.0, mid, 1.0, level, 2 * p.path, cones);
+            out[1] = make(mid, 0.0, p.a1, 1.0, level, 2 * p.path + 1, cones);
             return 2;
         }
         case LightShape::Sphere: {
@@ -223,7 +250,7 @@ int LightBeams::split(const LightPiece& p, LightPiece* out) const {
             }
             for (int q = 0; q < 4; ++q)
                 out[q] = make(pieces[q][0], pieces[q][2], pieces[q][1], pieces[q][3], level,
-                              4 * p.path + std::uint64_t(q));
+                              4 * p.path + std::uint64_t(q), cones);
             return 4;
         }
         case LightShape::Point: break;
@@ -265,35 +292,45 @@ double LightBeams::nearestLightDistance(const LightPiece& p) const {
     return 0.0;
 }
 
-int LightBeams::probeDirections(const LightPiece& p, Vec3* out) const {
+int LightBeams::probeRays(const LightPiece& p, BeamRay* out) const {
+    const auto disc = [&](double r, double phi) {
+        const Vec3 dir = discDirection(r, phi);
+        return BeamRay{Ray{apex_, dir}, sphereDistance(dir)};
+    };
     switch (shape_) {
         case LightShape::Rectangle: {
             const double sm = 0.5 * (p.a0 + p.a1), tm = 0.5 * (p.b0 + p.b1);
-            out[0] = glm::normalize(rectPoint(p.a0, tm) - apex_);
-            out[1] = glm::normalize(rectPoint(p.a1, tm) - apex_);
-            out[2] = glm::normalize(rectPoint(sm, p.b0) - apex_);
-            out[3] = glm::normalize(rectPoint(sm, p.b1) - apex_);
+            out[0] = toward(rectPoint(p.a0, tm));
+            out[1] = toward(rectPoint(p.a1, tm));
+            out[2] = toward(rectPoint(sm, p.b0));
+            out[3] = toward(rectPoint(sm, p.b1));
             return 4;
         }
         case LightShape::Segment:
-            out[0] = glm::normalize(corner_ + p.a0 * edgeA_ - apex_);
-            out[1] = glm::normalize(corner_ + p.a1 * edgeA_ - apex_);
+            out[0] = toward(corner_ + p.a0 * edgeA_);
+            out[1] = toward(corner_ + p.a1 * edgeA_);
             return 2;
         case LightShape::Sphere: {
             if (p.level == 0) {
-                for (int i = 0; i < 4; ++i) out[i] = discDirection(1.0, 0.5 * kPi * ((i & 1) * 2 + (i >> 1)));
+                for (int i = 0; i < 4; ++i) out[i] = disc(1.0, 0.5 * kPi * ((i & 1) * 2 + (i >> 1)));
                 return 4;
             }
             const double rm = areaRadius(p.a0, p.a1, 0.5), pm = 0.5 * (p.b0 + p.b1);
-            out[0] = discDirection(p.a0, pm);
-            out[1] = discDirection(p.a1, pm);
-            out[2] = discDirection(rm, p.b0);
-            out[3] = discDirection(rm, p.b1);
+            out[0] = disc(p.a0, pm);
+            out[1] = disc(p.a1, pm);
+            out[2] = disc(rm, p.b0);
+            out[3] = disc(rm, p.b1);
             return 4;
         }
         case LightShape::Point: break;
     }
     return 0;
+}
+
+std::pair<double, double> LightBeams::ruleWeights(const LightPiece& p) const {
+    if (shape_ == LightShape::Segment) return {2.0 / 3.0, 1.0 / 6.0};
+    if (shape_ == LightShape::Sphere && p.level == 0) return {0.5, 0.125};
+    return {1.0 / 3.0, 1.0 / 6.0};
 }
 
 double LightBeams::emission(const Vec3& dir) const {

@@ -21,9 +21,12 @@
 
 namespace asos {
 
+// `culling`: skip the rays a cone test over the whole light decides
+// (LightSetup::gridCulling); the samples are the same.
 std::span<const LightSample> gridAreaLightSamples(const Scene& scene, const LightModel& model,
                                                   const AreaLightQuery& query,
-                                                  AreaLightScratch& scratch, RenderCounters& counters);
+                                                  AreaLightScratch& scratch, RenderCounters& counters,
+                                                  bool culling = false);
 
 // Shirley and Chiu's concentric map from [0, 1]^2 onto the unit disc: equal
 // areas to equal areas, square rings to circles.

@@ -14,7 +14,9 @@
 // sphere piece, because the central ray lies within the piece's angular
 // range (docs/accel.md, "Sphere pieces").
 #include <cstdint>
+#include <limits>
 #include <optional>
+#include <utility>
 
 #include "asos/geometry/beam.hpp"
 #include "asos/render/light_model.hpp"
@@ -32,6 +34,10 @@ struct LightPiece {
     std::uint64_t path = 0;
     BeamRay central;
     Cone cone;
+    // The tangent of the cone's half-angle before its padding, when the cone
+    // was made through its widest corner (rectangle pieces, sphere pieces
+    // below level 0); NaN otherwise. Spares its users the trigonometry.
+    double tanHalf = std::numeric_limits<double>::quiet_NaN();
 };
 
 class LightBeams {
@@ -48,8 +54,9 @@ public:
     // The whole light: the level-0 piece.
     LightPiece root() const;
     // The pieces of the next level, written to out[]: four (rectangle,
-    // sphere) or two (segment). Returns how many.
-    int split(const LightPiece& piece, LightPiece* out) const;
+    // sphere) or two (segment). Returns how many. Without `cones` the
+    // pieces' cones are left empty (pieces that are only sampled by rays).
+    int split(const LightPiece& piece, LightPiece* out, bool cones = true) const;
     static constexpr int kMaxChildren = 4;
 
     // A ray inside the piece from two numbers in [0, 1) (a segment uses the
@@ -59,12 +66,18 @@ public:
     double share(int level) const;
     // No ray of the piece reaches the light nearer than this.
     double nearestLightDistance(const LightPiece& piece) const;
-    // Pairs of directions across the piece through its central point, one
-    // pair per coordinate: toward the midpoints of opposite edges (a
-    // segment's two ends; for the whole sphere, opposite points of its rim).
-    // Their means less the central value are the piece's second
-    // differences. Returns how many directions (2 or 4).
-    int probeDirections(const LightPiece& piece, Vec3* out) const;
+    // Pairs of rays across the piece through its central point, one pair per
+    // coordinate: toward the midpoints of opposite edges (a segment's two
+    // ends; for the whole sphere, opposite points of its rim). Their means
+    // less the central value are the piece's second differences. Returns
+    // how many rays (2 or 4).
+    int probeRays(const LightPiece& piece, BeamRay* out) const;
+    // The weights of a rule exact for quadratics (cubics) over the piece:
+    // the central ray's, and each probe ray's; they sum to 1. Square pieces
+    // (rectangle quarters, the sphere's pieces in their equal-area
+    // coordinates) 1/3 and 1/6; the whole disc 1/2 and 1/8; a segment
+    // (Simpson's rule) 2/3 and 1/6.
+    std::pair<double, double> ruleWeights(const LightPiece& piece) const;
     // The emitter's weighting along a direction: |cos theta| between the
     // rectangle's normal and the direction; 1 for segments and spheres.
     double emission(const Vec3& dir) const;
@@ -76,13 +89,16 @@ public:
     bool singleEdgeHalving() const { return shape_ != LightShape::Sphere; }
 
 private:
-    LightPiece make(double a0, double b0, double a1, double b1, int level, std::uint64_t path) const;
+    LightPiece make(double a0, double b0, double a1, double b1, int level, std::uint64_t path,
+                    bool cone = true) const;
+    int splitRectangle(const LightPiece& piece, LightPiece* out, bool cones) const;
     Vec3 rectPoint(double s, double t) const { return corner_ + s * edgeA_ + t * edgeB_; }
     Vec3 discDirection(double r, double phi) const;
     double sphereDistance(const Vec3& dir) const;
     double sphereDistanceAtRadius(double r, double widen) const;
     BeamRay toward(const Vec3& target) const;
-    Cone coneAbout(const Vec3& axis, const Vec3* directions, int count, double farthest) const;
+    Cone coneAbout(const Vec3& axis, const Vec3* directions, int count, double farthest,
+                   double& tanHalf) const;
 
     LightShape shape_ = LightShape::Point;
     Vec3 apex_{0.0};
