@@ -12,7 +12,8 @@
 //     traces them: a shadow ray to every point.
 // For each: render time, shadow rays, and the error against the reference
 // (RMS and largest, over every channel of every pixel, linear values).
-// References are kept in --cache (when given) and reused.
+// References are kept in --cache (when given) and reused; each row shows the
+// best time of --passes renders.
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -45,6 +46,7 @@ struct BenchLightsArgs {
     int reference = 64;
     bool behind = false;
     std::string cache;
+    int passes = 1;
 };
 
 struct Kind {
@@ -163,16 +165,22 @@ int runBenchLights(const BenchLightsArgs& args) {
                 if (l.area) l.area->jitter = true;
         return d;
     };
-    auto render = [&](const SceneDescription& d, RenderSettings s) -> std::optional<Run> {
+    // The best time of --passes renders (the machine may be shared).
+    auto render = [&](const SceneDescription& d, RenderSettings s, int passes) -> std::optional<Run> {
         s.width = args.width;
         s.height = args.height;
         s.threads = args.threads;
-        Diagnostics diagnostics;
-        std::optional<RenderOutput> out = asos::render(d, s, diagnostics);
-        for (const Diagnostic& diag : diagnostics.all()) std::cerr << formatDiagnostic(diag);
-        if (!out) return std::nullopt;
-        return Run{std::move(out->color), out->stats.times.renderSeconds, out->stats.counters.shadowRays,
-                   out->stats.counters.coneTests};
+        std::optional<Run> best;
+        for (int pass = 0; pass < passes; ++pass) {
+            Diagnostics diagnostics;
+            std::optional<RenderOutput> out = asos::render(d, s, diagnostics);
+            for (const Diagnostic& diag : diagnostics.all()) std::cerr << formatDiagnostic(diag);
+            if (!out) return std::nullopt;
+            if (best && best->seconds <= out->stats.times.renderSeconds) continue;
+            best = Run{std::move(out->color), out->stats.times.renderSeconds, out->stats.counters.shadowRays,
+                       out->stats.counters.coneTests};
+        }
+        return best;
     };
 
     std::printf("asos bench lights: %s at %dx%d, %d threads, ASOS eye method; error against the grid "
@@ -200,7 +208,7 @@ int runBenchLights(const BenchLightsArgs& args) {
             s.lightMethod = LightMethod::Grid;
             s.lightSamples = args.reference;
             s.gridLightCulling = true;
-            const std::optional<Run> run = render(*d, s);
+            const std::optional<Run> run = render(*d, s, 1);
             if (!run) return 1;
             reference = run->image;
             std::printf("%-12s %-30s %9.2f %12s %11s %10s %10s\n", kind.name,
@@ -213,7 +221,7 @@ int runBenchLights(const BenchLightsArgs& args) {
         const std::optional<SceneDescription> d = load(kind, false);
         if (!d) return 1;
         auto row = [&](const std::string& what, const SceneDescription& scene, const RenderSettings& s) {
-            const std::optional<Run> run = render(scene, s);
+            const std::optional<Run> run = render(scene, s, std::max(args.passes, 1));
             if (!run) return false;
             const Errors e = compare(run->image, reference);
             std::printf("%-12s %-30s %9.2f %12s %11s %10.5f %10.4f\n", kind.name, what.c_str(), run->seconds,
@@ -264,6 +272,7 @@ void addBenchLightsCommand(CLI::App& bench, CommandResult& result) {
     cmd->add_option("--reference", args->reference, "Reference grid size, jittered (default 64)");
     cmd->add_flag("--behind", args->behind, "Also ASOS with the shadow apex behind the surface");
     cmd->add_option("--cache", args->cache, "Folder keeping the reference images between runs");
+    cmd->add_option("--passes", args->passes, "Renders per row; the best time is shown (default 1)");
     cmd->callback([args, &result] { result.exitCode = runBenchLights(*args); });
 }
 

@@ -291,31 +291,34 @@ private:
         return beams_.emission(dir) * std::max(0.0, glm::dot(q_.normal, dir));
     }
 
-    // A sub-beam that reaches the light unobstructed (no ray needed). Its
-    // light is integrated by a rule exact for quadratics: the central ray
-    // and two pairs of probe rays across the piece (LightBeams::ruleWeights),
-    // where what the piece carries varies little: half the sum of its second
-    // differences along each coordinate (three times the one-ray midpoint
-    // rule's error for a quadratic on a square) within EPS. Otherwise its
-    // pieces are refined alike down to MAX.
+    // A sub-beam that reaches the light unobstructed (no ray needed). The
+    // one-ray midpoint rule's error on it is about a third of the sum of its
+    // second differences along each coordinate (exactly so for a quadratic
+    // on a square), measured with two pairs of probe rays across it. Where
+    // that error is negligible (below EPS / 64 of the piece's share) the
+    // central ray alone carries the piece; where half the sum is within EPS,
+    // a rule exact for quadratics: the central ray and the probes
+    // (LightBeams::ruleWeights); otherwise the pieces are refined alike,
+    // down to MAX.
     void refineLit(const LightPiece& piece) {
         BeamRay probes[4];
         const int n = beams_.probeRays(piece, probes);
-        if (piece.level < model_.asos.maxLevel) {
-            const double centre = carried(piece.central.ray.dir);
-            double differences = 0.0;
-            for (int i = 0; i < n; i += 2)
-                differences +=
-                    std::abs(0.5 * (carried(probes[i].ray.dir) + carried(probes[i + 1].ray.dir)) - centre);
-            if (0.5 * differences > model_.asos.eps) {
-                LightPiece children[LightBeams::kMaxChildren];
-                const int count = beams_.split(piece, children);
-                for (int i = 0; i < count; ++i)
-                    if (!belowHorizon(q_.normal, children[i])) refineLit(children[i]);
-                return;
-            }
-        }
+        const double centre = carried(piece.central.ray.dir);
+        double differences = 0.0;
+        for (int i = 0; i < n; i += 2)
+            differences += std::abs(0.5 * (carried(probes[i].ray.dir) + carried(probes[i + 1].ray.dir)) - centre);
         const double share = beams_.share(piece.level);
+        if (differences / 3.0 <= model_.asos.eps / 64.0) {
+            emit(piece.central, share);
+            return;
+        }
+        if (piece.level < model_.asos.maxLevel && 0.5 * differences > model_.asos.eps) {
+            LightPiece children[LightBeams::kMaxChildren];
+            const int count = beams_.split(piece, children);
+            for (int i = 0; i < count; ++i)
+                if (!belowHorizon(q_.normal, children[i])) refineLit(children[i]);
+            return;
+        }
         const auto [centreWeight, probeWeight] = beams_.ruleWeights(piece);
         emit(piece.central, share * centreWeight);
         for (int i = 0; i < n; ++i) emit(probes[i], share * probeWeight);

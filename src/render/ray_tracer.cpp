@@ -39,6 +39,9 @@ std::span<const LightSample> RayTracer::areaLightSamples(const ShadingPoint& poi
     q.rng = context.rng;
     q.key = context.key;
     q.footprint = context.footprint;
+    const Finish& finish = textureOf(scene_.object(q.shadedObject)).finish;
+    q.diffuseOnly = finish.brilliance == 1.0 && !(finish.phong > 0.0) && !(finish.specular > 0.0) &&
+                    !(point.light->fadePower > 0.0);
     return asos::areaLightSamples(scene_, lights_, q, *context.scratch, counters);
 }
 

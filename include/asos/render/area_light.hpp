@@ -39,6 +39,7 @@ struct AreaLightScratch {
     std::vector<std::uint8_t> hits[2];  // per item: the node's central ray hits the object
     std::vector<AreaBeamNode> nodes[2];
     std::vector<LightSample> samples;       // the answer
+    LightSample merged;                     // the answer, summed (mergeDiffuse)
     std::vector<LightSample> gridSamples;   // grid: per lattice point, its sample
     std::vector<double> gridWeights;        // grid: per lattice point, its weight
     std::vector<std::int8_t> gridState;     // grid: per lattice point, -1 unknown, 0 blocked, 1 lit
@@ -78,6 +79,10 @@ struct AreaLightQuery {
     PixelRandom rng{0, 0, 0};
     std::uint64_t key = 0;                  // LightContext::key
     const Footprint* footprint = nullptr;   // LightContext::footprint
+    // The surface only reflects diffusely (brilliance 1, no phong or
+    // specular) and the light does not fade: then the samples may be summed
+    // into one (mergeDiffuse), which lights the point exactly alike.
+    bool diffuseOnly = false;
 };
 
 // The samples of an area light at a shaded point, by the lights' method
@@ -87,6 +92,14 @@ struct AreaLightQuery {
 std::span<const LightSample> areaLightSamples(const Scene& scene, const SceneLights& lights,
                                               const AreaLightQuery& query, AreaLightScratch& scratch,
                                               RenderCounters& counters);
+
+// One sample that lights a surface of diffuse-only finish (brilliance 1, no
+// highlights, no fade) exactly as `samples` together: the sum of colour x
+// direction is linear in the cosine of incidence, so its length and
+// direction are the merged sample's weight and direction (the samples share
+// the light's colour, and each faces the surface). The span lives in
+// `storage`.
+std::span<const LightSample> mergeDiffuse(std::span<const LightSample> samples, LightSample& storage);
 
 // The diffuse weighting of a sample set: sum of colour x max(0, N . L), the
 // irradiance a diffuse white surface would receive (for tests and the docs).
