@@ -13,7 +13,6 @@
 #include <bit>
 #include <cmath>
 #include <cstdint>
-#include <cstring>
 #include <limits>
 #include <optional>
 #include <span>
@@ -57,7 +56,7 @@ inline bool isLeaf(std::uint32_t ref) { return (ref & kLeafBit) != 0; }
 inline std::uint32_t leafFirst(std::uint32_t ref) { return ref & kFirstMask; }
 inline std::uint32_t leafCount(std::uint32_t ref) { return (ref >> kCountShift) & 15u; }
 
-// The smallest float >= x and the largest float <= x.
+// The float after and before f; x rounded up and down to a float.
 inline float nextFloatUp(float f) {
     if (std::isnan(f) || f == std::numeric_limits<float>::infinity()) return f;
     if (f == 0.0f) return std::numeric_limits<float>::denorm_min();
@@ -106,6 +105,8 @@ struct RayPrep {
                 // 0 * inf (NaN) can only occur for a plane strictly outside,
                 // where either answer is right.
                 nearInv = farInv = side ? -inf : inf;
+                oN = side ? below : above;
+                oF = side ? above : below;
             } else if (std::abs(d) < 1e-30) {
                 // 1/d overflows a float: drop this axis's constraint
                 // (conservative; a unit direction has another, larger
@@ -114,18 +115,12 @@ struct RayPrep {
                 nearInv = farInv = inf;
                 oN = inf;
                 oF = -inf;
-                nearSide[i] = side;
-                oNear[i] = Float4{oN, oN, oN, oN};
-                oFar[i] = Float4{oF, oF, oF, oF};
-                invNear[i] = Float4{nearInv, nearInv, nearInv, nearInv};
-                invFar[i] = Float4{farInv, farInv, farInv, farInv};
-                continue;
             } else {
                 nearInv = static_cast<float>(1.0 / d);
                 farInv = static_cast<float>(kFarScale / d);
+                oN = side ? below : above;
+                oF = side ? above : below;
             }
-            oN = side ? below : above;
-            oF = side ? above : below;
             nearSide[i] = side;
             oNear[i] = Float4{oN, oN, oN, oN};
             oFar[i] = Float4{oF, oF, oF, oF};
