@@ -15,4 +15,7 @@ struct CommandResult {
 // the `bench` subcommand returned by addBenchCommand.
 CLI::App* addBenchCommand(CLI::App& app);
 
+// `asos bench intersect` (bench_intersect.cpp).
+void addBenchIntersectCommand(CLI::App& bench, CommandResult& result);
+
 }  // namespace asos::cli

@@ -9,6 +9,7 @@ int main(int argc, char** argv) {
     // Subcommands register here, one line each.
     [[maybe_unused]] CLI::App* bench = addBenchCommand(app);
     // Benchmarks register under `bench`, one line each.
+    addBenchIntersectCommand(*bench, result);
 
     try {
         app.parse(argc, argv);

@@ -13,13 +13,6 @@ namespace {
 
 double sq(double x) { return x * x; }
 
-double segmentDistance(Vec2 p, Vec2 a, Vec2 b) {
-    const Vec2 e = b - a;
-    const double ee = glm::dot(e, e);
-    const double t = ee > 0.0 ? std::clamp(glm::dot(p - a, e) / ee, 0.0, 1.0) : 0.0;
-    return glm::length(p - (a + t * e));
-}
-
 // The real roots of A t^2 + 2 B t + C (A may be 0); returns how many.
 int quadraticRoots(double a, double b, double c, double roots[2]) {
     if (a == 0.0) {
@@ -42,18 +35,20 @@ int quadraticRoots(double a, double b, double c, double roots[2]) {
 // nearest a centre on the axis: the tip of the side's cone when that is near
 // (rays grazing a tip would otherwise lose half their digits to the double
 // root there), else the middle of the axis (rays from far away).
-Frustum::SideQuadratic Frustum::sideQuadratic(const Vec3& origin, const Vec3& d) const {
+Frustum::SideQuadratic Frustum::sideQuadratic(const Profile& f, const Vec3& origin,
+                                               const Vec3& d) {
     SideQuadratic q;
-    q.centerZ = 0.5 * length_;
-    if (slope_ != 0.0) {
-        const double tipZ = -r0_ / slope_;
-        if (std::abs(tipZ - 0.5 * length_) <= 2.0 * length_) q.centerZ = tipZ;
+    const double mid = 0.5 * (f.zLo + f.zHi);
+    q.centerZ = mid;
+    if (f.slope != 0.0) {
+        const double tipZ = -f.r0 / f.slope;
+        if (std::abs(tipZ - mid) <= 2.0 * (f.zHi - f.zLo)) q.centerZ = tipZ;
     }
     const Vec3 center(0.0, 0.0, q.centerZ);
     q.shift = glm::dot(center - origin, d) / glm::dot(d, d);
     q.o = origin + q.shift * d - center;
-    const double k = slope_;
-    const double rz = radiusAt(q.centerZ) + k * q.o.z;
+    const double k = f.slope;
+    const double rz = f.r0 + k * (q.centerZ + q.o.z);
     q.a = d.x * d.x + d.y * d.y - k * k * d.z * d.z;
     q.b = q.o.x * d.x + q.o.y * d.y - k * d.z * rz;
     q.c = q.o.x * q.o.x + q.o.y * q.o.y - rz * rz;
@@ -75,7 +70,7 @@ Bounds3 Frustum::worldBounds(const Mat3& m, const Vec3& offset) const {
     for (int end = 0; end < 2; ++end) {
         const Vec3 c = m * Vec3(0.0, 0.0, end ? length_ : 0.0) + offset;
         Vec3 half;
-        for (int i = 0; i < 3; ++i) half[i] = radii[end] * std::hypot(m[0][i], m[1][i]);
+        for (int i = 0; i < 3; ++i) half[i] = radii[end] * length2d(m[0][i], m[1][i]);
         b.extend(Bounds3{c - half, c + half});
     }
     return b;
@@ -99,7 +94,7 @@ std::optional<LocalHit> Frustum::intersect(const Ray& ray, double tMin, double t
         }
     } else {
         // Open: the side alone, between the rims.
-        const SideQuadratic q = sideQuadratic(ray.origin, ray.dir);
+        const SideQuadratic q = sideQuadratic(profile(), ray.origin, ray.dir);
         t = kInfinity;
         for (int i = 0; i < q.count; ++i) {
             const double z = q.centerZ + q.o.z + q.roots[i] * ray.dir.z;
@@ -120,16 +115,16 @@ std::optional<LocalHit> Frustum::intersect(const Ray& ray, double tMin, double t
     return LocalHit{t, point, normal};
 }
 
-Frustum::Interval Frustum::solidInterval(const Vec3& origin, const Vec3& d) const {
-    const SideQuadratic side = sideQuadratic(origin, d);
+Frustum::Interval Frustum::solidInterval(const Profile& f, const Vec3& origin, const Vec3& d) {
+    const SideQuadratic side = sideQuadratic(f, origin, d);
     const double shift = side.shift;
     const double oz = side.centerZ + side.o.z;  // the line's z at the shifted origin
     double lo = -kInfinity, hi = kInfinity;
     int loPart = 0, hiPart = 0;
     if (d.z == 0.0) {
-        if (oz < 0.0 || oz > length_) return {};
+        if (oz < f.zLo || oz > f.zHi) return {};
     } else {
-        const double a = -oz / d.z, b = (length_ - oz) / d.z;
+        const double a = (f.zLo - oz) / d.z, b = (f.zHi - oz) / d.z;
         lo = std::min(a, b);
         hi = std::max(a, b);
         loPart = d.z > 0.0 ? 1 : 2;
@@ -173,7 +168,7 @@ Frustum::Interval Frustum::solidInterval(const Vec3& origin, const Vec3& d) cons
 }
 
 bool Frustum::sideHitAhead(const Vec3& origin, const Vec3& d) const {
-    const SideQuadratic q = sideQuadratic(origin, d);
+    const SideQuadratic q = sideQuadratic(profile(), origin, d);
     for (int i = 0; i < q.count; ++i) {
         const double z = q.centerZ + q.o.z + q.roots[i] * d.z;
         if (z >= 0.0 && z <= length_ && q.shift + q.roots[i] >= 0.0) return true;
@@ -182,12 +177,18 @@ bool Frustum::sideHitAhead(const Vec3& origin, const Vec3& d) const {
 }
 
 double Frustum::distanceTo(double rho, double z) const {
-    const Vec2 p(rho, z);
-    const double side = segmentDistance(p, {r0_, 0.0}, {r1_, length_});
-    if (!capped_) return side;
-    if (z >= 0.0 && z <= length_ && rho <= radiusAt(z)) return 0.0;
-    return std::min({side, segmentDistance(p, {0.0, 0.0}, {r0_, 0.0}),
-                     segmentDistance(p, {0.0, length_}, {r1_, length_})});
+    // The nearest of the side segment (r0, 0)-(r1, length) and, when capped,
+    // the two cap segments from the axis, in the meridian half-plane.
+    const double dr = r1_ - r0_;
+    const double u = std::clamp(((rho - r0_) * dr + z * length_) / (dr * dr + length_ * length_),
+                                0.0, 1.0);
+    double best = sq(rho - (r0_ + u * dr)) + sq(z - u * length_);
+    if (capped_) {
+        if (z >= 0.0 && z <= length_ && rho <= radiusAt(z)) return 0.0;
+        best = std::min({best, sq(std::max(rho - r0_, 0.0)) + sq(z),
+                         sq(std::max(rho - r1_, 0.0)) + sq(z - length_)});
+    }
+    return std::sqrt(best);
 }
 
 double Frustum::depthInside(double rho, double z) const {
@@ -199,23 +200,23 @@ ConeClass Frustum::classify(const LocalCone& cone) const {
     if (empty()) return missClass();
     if (ballOutside(cone, ball_.center, ball_.radius)) return missClass();
     const Vec3& p = cone.apex;
-    const double rho = std::hypot(p.x, p.y);
+    const double rho = length2d(p.x, p.y);
     // Every point of the object is within dFar: the farthest point is on a rim.
     const double dFar =
         std::sqrt(std::max(sq(rho + r0_) + sq(p.z), sq(rho + r1_) + sq(p.z - length_)));
     const double tol =
         1e-14 * (std::abs(p.x) + std::abs(p.y) + std::abs(p.z) + ball_.radius + ball_.center.z) +
         cone.absTol;
-    const double sideGap = (rho - radiusAt(p.z)) / slant_;
+    const double rp = radiusAt(p.z);
+    const double sideGap = (rho - rp) / slant_;
     const bool nearSide = p.z >= -tol && p.z <= length_ + tol && std::abs(sideGap) <= tol;
     const bool nearBottom = capped_ && std::abs(p.z) <= tol && rho <= r0_ + tol;
     const bool nearTop = capped_ && std::abs(p.z - length_) <= tol && rho <= r1_ + tol;
     if (nearSide || nearBottom || nearTop)
         return classifyOnSurface(cone, rho, tol, dFar, nearSide, nearBottom, nearTop);
-    const double dNear = distanceTo(rho, p.z);
-    if (capped_ && dNear == 0.0) return classifyInside(cone, rho, dFar);
-    if (cone.surelyAfter(dNear) || cone.surelyBefore(dFar)) return missClass();
-    return classifyOff(cone, rho, tol, dNear, dFar);
+    if (capped_ && p.z > 0.0 && p.z < length_ && rho < rp) return classifyInside(cone, rho, dFar);
+    if (cone.surelyBefore(dFar)) return missClass();
+    return classifyOff(cone, rho, tol, dFar);
 }
 
 ConeClass Frustum::classifyInside(const LocalCone& cone, double rho, double dFar) const {
@@ -246,10 +247,22 @@ ConeClass Frustum::classifyOnSurface(const LocalCone& cone, double rho, double t
     return marginalClass(cone, cone.tMin, dFar + tol);
 }
 
-ConeClass Frustum::classifyOff(const LocalCone& cone, double rho, double tol, double dNear,
-                               double dFar) const {
+ConeClass Frustum::classifyOff(const LocalCone& cone, double rho, double tol, double dFar) const {
     const Vec3& p = cone.apex;
     const double c = cone.cosHalf, s = cone.sinHalf;
+    // Fast path. Up to dFar the cone lies within r = dFar sin(theta) of its
+    // axis: if the axis misses the solid grown by r, so does the cone, and no
+    // hit is nearer than the grown solid.
+    double nearBound = 0.0;
+    Interval axisChord;
+    if (c > 0.0) {
+        const Interval grownChord = solidInterval(grown(dFar * s + tol), p, cone.axis);
+        if (!grownChord.hit || grownChord.exit < 0.0 || grownChord.enter > dFar) return missClass();
+        nearBound = std::max(0.0, grownChord.enter);
+        if (cone.surelyAfter(nearBound)) return missClass();
+    }
+    const double dNear = std::max(nearBound, distanceTo(rho, p.z));
+    if (cone.surelyAfter(dNear)) return missClass();
     const double rp = radiusAt(p.z);  // the side's radius at the apex's height (signed)
     const bool facesBottom = capped_ && r0_ > 0.0 && p.z < 0.0;
     const bool facesTop = capped_ && r1_ > 0.0 && p.z > length_;
@@ -267,20 +280,16 @@ ConeClass Frustum::classifyOff(const LocalCone& cone, double rho, double tol, do
         frontFar = std::min(dFar, std::sqrt(far2));
     }
     const double firstFar = dNear >= cone.tMinInner ? frontFar : dFar;
-
-    // Quick Full: a ball inside the solid around the axis' chord that every
-    // ray of the cone passes through.
-    Interval axisChord;
     if (capped_) {
         axisChord = solidInterval(p, cone.axis);
-        if (axisChord.hit && axisChord.exit >= 0.0 && c > 0.0) {
+        if (c > 0.0 && axisChord.hit && axisChord.exit >= 0.0) {
+            // Quick Full: a ball inside the solid around the axis' chord,
+            // which every ray passes through.
             const double tm = 0.5 * (std::max(axisChord.enter, 0.0) + axisChord.exit);
             const Vec3 q = p + tm * cone.axis;
-            const double depth = depthInside(std::hypot(q.x, q.y), q.z);
-            if (tm * s < depth - tol) {
-                const double tFar = std::min(frontFar, tm + depth);
-                if (cone.surelyWithin(dNear, tFar)) return fullClass(dNear, tFar);
-            }
+            const double depth = depthInside(length2d(q.x, q.y), q.z);
+            const double tFar = std::min(frontFar, tm + depth);
+            if (tm * s < depth - tol && cone.surelyWithin(dNear, tFar)) return fullClass(dNear, tFar);
         }
     }
 

@@ -57,11 +57,64 @@ std::optional<LocalHit> Polygon::intersect(const Ray& ray, double tMin, double t
 
 ConeClass Polygon::classify(const LocalCone& cone) const {
     if (empty()) return missClass();
+    const Vec3& p = cone.apex;
+    const Vec3& axis = cone.axis;
+    const double c = cone.cosHalf, s = cone.sinHalf;
+    // Rays cross the plane z = 0 at t = h / d.z.
+    const double h = -p.z;
+    if (c > 0.0 && h * axis.z > 0.0) {
+        // Fast path. When every ray crosses, the footprint (an ellipse) lies
+        // within `radius` of the axis' crossing q; if no edge comes that near
+        // q, the footprint is wholly inside or outside, as q: one pass over
+        // the edges, like the ray's own even-odd test.
+        const double an = std::abs(axis.z);
+        const double g2 = axis.x * axis.x + axis.y * axis.y;
+        const double k = c * c - g2;
+        if (k > 1e-6) {
+            const double g = std::sqrt(g2), depth = std::abs(h);
+            const double tAxis = h / axis.z;
+            const Vec2 q(p.x + tAxis * axis.x, p.y + tAxis * axis.y);
+            // The ellipse: semi-major depth s c / k about a centre depth g s^2 / (an k) from q.
+            const double radius = depth * s / k * (c + g * s / an) * (1.0 + 1e-12) + cone.absTol;
+            const double radius2 = radius * radius;
+            bool inside = false, near = false;
+            std::uint32_t begin = 0;
+            for (const std::uint32_t end : loopEnds_) {
+                Vec2 v0 = vertices_[end - 1];
+                for (std::uint32_t i = begin; i < end; ++i) {
+                    const Vec2 v1 = vertices_[i];
+                    const Vec2 e = v1 - v0, w = q - v0;
+                    const double side = e.x * w.y - w.x * e.y;
+                    if ((v0.y > q.y) != (v1.y > q.y) && (side > 0.0) == (v1.y > v0.y)) inside = !inside;
+                    // Distance from q to the edge.
+                    const double along = glm::dot(e, w), ee = glm::dot(e, e);
+                    const double dist2 = along <= 0.0  ? glm::dot(w, w)
+                                         : along >= ee ? glm::dot(q - v1, q - v1)
+                                                       : side * side / ee;
+                    near = near || dist2 <= radius2;
+                    v0 = v1;
+                }
+                begin = end;
+            }
+            if (!near) {
+                if (!inside) return missClass();
+                const double lo = an * c - g * s;
+                const double hi = angleWithin(an, g, c, s) ? 1.0 : an * c + g * s;
+                const double tNear = depth / hi, tFar = depth / lo;
+                if (cone.surelyAfter(tNear) || cone.surelyBefore(tFar)) return missClass();
+                if (cone.surelyWithin(tNear, tFar)) return fullClass(tNear, tFar);
+                return marginalClass(cone, tNear, tFar);
+            }
+        }
+    }
+    return classifyExactly(cone);
+}
+
+ConeClass Polygon::classifyExactly(const LocalCone& cone) const {
     const Vec3 center(center_, 0.0);
     if (ballOutside(cone, center, radius_)) return missClass();
     const Vec3& p = cone.apex;
     const Vec3& axis = cone.axis;
-    // Rays cross the plane z = 0 at t = h / d.z.
     const double h = -p.z;
     const DotRange range = dotRange(cone, axis.z, std::sqrt(axis.x * axis.x + axis.y * axis.y));
     const double ballDist = glm::length(center - p);

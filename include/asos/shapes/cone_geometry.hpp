@@ -15,6 +15,10 @@
 
 namespace asos::conegeom {
 
+// sqrt(x^2 + y^2) without std::hypot's (slow) overflow guard: the
+// coordinates here are far from overflow.
+inline double length2d(double x, double y) { return std::sqrt(x * x + y * y); }
+
 inline ConeClass missClass() { return {}; }
 inline ConeClass fullClass(double tNear, double tFar) {
     return {Coverage::Full, tNear, tFar, false};
