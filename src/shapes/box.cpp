@@ -192,13 +192,18 @@ ConeClass Box::classifyOutside(const LocalCone& cone) const {
     // The silhouette: edges between a face turned to the apex and one turned
     // away (paper: "Detection Phase"; the boundary seen from the apex).
     ConePoint corner[8];
-    for (int c = 0; c < 8; ++c) {
-        const Vec3 x((c & 1) ? hi_.x : lo_.x, (c & 2) ? hi_.y : lo_.y, (c & 4) ? hi_.z : lo_.z);
-        corner[c] = conePoint(cone, x - p);
-    }
+    unsigned known = 0;  // corners computed so far (only silhouette ends are needed)
+    auto cornerAt = [&](int c) -> const ConePoint& {
+        if (!(known & (1u << c))) {
+            const Vec3 x((c & 1) ? hi_.x : lo_.x, (c & 2) ? hi_.y : lo_.y, (c & 4) ? hi_.z : lo_.z);
+            corner[c] = conePoint(cone, x - p);
+            known |= 1u << c;
+        }
+        return corner[c];
+    };
     int meeting = 0;
     bool endpointInside = false;
-    for (int k = 0; k < 3; ++k) {  // edges along axis k
+    for (int k = 0; k < 3 && meeting < 2; ++k) {  // edges along axis k; two meeting settle it
         const int i = (k + 1) % 3, j = (k + 2) % 3;
         for (int si = 0; si < 2; ++si) {
             for (int sj = 0; sj < 2; ++sj) {
@@ -206,8 +211,8 @@ ConeClass Box::classifyOutside(const LocalCone& cone) const {
                 const bool frontJ = front[j] == (sj ? 1 : -1);
                 if (frontI == frontJ) continue;
                 const int base = (si << i) | (sj << j);
-                const ConePoint& a = corner[base];
-                const ConePoint& b = corner[base | (1 << k)];
+                const ConePoint& a = cornerAt(base);
+                const ConePoint& b = cornerAt(base | (1 << k));
                 if (segmentMeetsCone(cone, a, b)) {
                     ++meeting;
                     endpointInside = endpointInside || a.inside || b.inside;

@@ -48,13 +48,28 @@ ConeClass Disc::classify(const LocalCone& cone) const {
             const double radius = depth * s / k * (c + g * s / an) * (1.0 + 1e-12) + cone.absTol;
             if (q2 > (radius_ + radius) * (radius_ + radius)) return missClass();
             if (hole_ > radius && q2 < (hole_ - radius) * (hole_ - radius)) return missClass();
+            const double lo = an * c - g * s;
+            const double hi = angleWithin(an, g, c, s) ? 1.0 : an * c + g * s;
+            const double tNear = depth / hi, tFar = depth / lo;
             if (radius_ > radius && q2 < (radius_ - radius) * (radius_ - radius) &&
                 (hole_ == 0.0 || q2 > (hole_ + radius) * (hole_ + radius))) {
-                const double lo = an * c - g * s;
-                const double hi = angleWithin(an, g, c, s) ? 1.0 : an * c + g * s;
-                const double tNear = depth / hi, tFar = depth / lo;
                 if (cone.surelyAfter(tNear) || cone.surelyBefore(tFar)) return missClass();
                 if (cone.surelyWithin(tNear, tFar)) return fullClass(tNear, tFar);
+                return marginalClass(cone, tNear, tFar);
+            }
+            // Surely crossing a circle: q (in the footprint) on one side, a
+            // point of the disc inscribed in the ellipse (centre m, radius
+            // the minor semi-axis) on the other.
+            const double scale = depth * an / k;
+            const double m = length2d(p.x + scale * axis.x, p.y + scale * axis.y);
+            const double minor = depth * s / std::sqrt(k);
+            const double q1 = std::sqrt(q2), tol = cone.absTol + 1e-12 * (q1 + radius_);
+            auto crosses = [&](double rho) {
+                return (q1 < rho - tol && m + minor > rho + tol) ||
+                       (q1 > rho + tol && m - minor < rho - tol);
+            };
+            if (crosses(radius_) || (hole_ > 0.0 && crosses(hole_))) {
+                if (cone.surelyAfter(tNear) || cone.surelyBefore(tFar)) return missClass();
                 return marginalClass(cone, tNear, tFar);
             }
         }

@@ -295,7 +295,7 @@ ConeClass Frustum::classifyOff(const LocalCone& cone, double rho, double tol, do
 
     // The boundary as seen from the apex.
     int meeting = 0;
-    bool straight = true, endpointInside = false;
+    bool endpointInside = false;
     Vec2 er(1.0, 0.0);
     if (rho > 0.0) er = Vec2(p.x, p.y) / rho;
     const double tangency = rho * rho - rp * rp;
@@ -303,20 +303,6 @@ ConeClass Frustum::classifyOff(const LocalCone& cone, double rho, double tol, do
         // The apex is (nearly) on the side's cone extended: the contour
         // generators are ill-conditioned. Be safe.
         return marginalClass(cone, dNear, firstFar);
-    }
-    if (tangency > 0.0) {
-        // The two contour generators: where the tangent plane holds the apex.
-        const double ca = rp / rho, sa = std::sqrt(tangency) / rho;
-        const Vec2 et(-er.y, er.x);
-        for (const double sign : {-1.0, 1.0}) {
-            const Vec2 u = ca * er + sign * sa * et;
-            const ConePoint a = conePoint(cone, Vec3(r0_ * u, 0.0) - p);
-            const ConePoint b = conePoint(cone, Vec3(r1_ * u, length_) - p);
-            if (segmentMeetsCone(cone, a, b)) {
-                ++meeting;
-                endpointInside = endpointInside || a.inside || b.inside;
-            }
-        }
     }
     const double rims[2][2] = {{0.0, r0_}, {length_, r1_}};
     for (int end = 0; end < 2; ++end) {
@@ -335,14 +321,25 @@ ConeClass Frustum::classifyOff(const LocalCone& cone, double rho, double tol, do
                 if (faces == sideFaces) continue;  // no silhouette on this rim
             }
         }
-        if (circleMayMeetCone(cone, zc, rc, arc)) {
-            ++meeting;
-            straight = false;
+        // A curved boundary in the cone: Marginal, and not a single edge.
+        if (circleMayMeetCone(cone, zc, rc, arc)) return marginalClass(cone, dNear, firstFar);
+    }
+    if (tangency > 0.0) {
+        // The two contour generators: where the tangent plane holds the apex.
+        const double ca = rp / rho, sa = std::sqrt(tangency) / rho;
+        const Vec2 et(-er.y, er.x);
+        for (const double sign : {-1.0, 1.0}) {
+            const Vec2 u = ca * er + sign * sa * et;
+            const ConePoint a = conePoint(cone, Vec3(r0_ * u, 0.0) - p);
+            const ConePoint b = conePoint(cone, Vec3(r1_ * u, length_) - p);
+            if (segmentMeetsCone(cone, a, b)) {
+                ++meeting;
+                endpointInside = endpointInside || a.inside || b.inside;
+            }
         }
     }
     if (meeting > 0) {
-        const bool single =
-            straight && meeting == 1 && !endpointInside && cone.surelyWithin(dNear, dFar);
+        const bool single = meeting == 1 && !endpointInside && cone.surelyWithin(dNear, dFar);
         return marginalClass(cone, dNear, firstFar, single);
     }
     // No boundary in the cone: every ray hits or none does, as the axis.
