@@ -129,3 +129,27 @@ bool circleMayMeetCone(const LocalCone& cone, double zc, double rho, const Arc& 
 }
 
 }  // namespace asos::conegeom
+
+namespace asos::conegeom {
+
+bool discMayMeetCone(const LocalCone& cone, double zc, double rho) {
+    const Vec3& p = cone.apex;
+    const Vec3& axis = cone.axis;
+    const double c = cone.cosHalf, s = cone.sinHalf;
+    const double h = zc - p.z;
+    if (c > 0.0 && h * axis.z > 0.0) {
+        const double an = std::abs(axis.z);
+        const double g2 = axis.x * axis.x + axis.y * axis.y;
+        const double k = c * c - g2;
+        if (k > 1e-6) {
+            // The footprint within `radius` of the axis' crossing q.
+            const double tAxis = h / axis.z;
+            const double radius =
+                std::abs(h) * s / k * (c + std::sqrt(g2) * s / an) * (1.0 + 1e-12) + cone.absTol;
+            return length2d(p.x + tAxis * axis.x, p.y + tAxis * axis.y) - radius <= rho;
+        }
+    }
+    return !ballOutsideAngular(cone, Vec3(0.0, 0.0, zc), rho);
+}
+
+}  // namespace asos::conegeom

@@ -264,8 +264,8 @@ ConeClass Frustum::classifyOff(const LocalCone& cone, double rho, double tol, do
     const double dNear = std::max(nearBound, distanceTo(rho, p.z));
     if (cone.surelyAfter(dNear)) return missClass();
     const double rp = radiusAt(p.z);  // the side's radius at the apex's height (signed)
-    const bool facesBottom = capped_ && r0_ > 0.0 && p.z < 0.0;
-    const bool facesTop = capped_ && r1_ > 0.0 && p.z > length_;
+    const bool facesBottom = r0_ > 0.0 && p.z < 0.0;  // the cap's side of its plane
+    const bool facesTop = r1_ > 0.0 && p.z > length_;
     // How deep a first hit can be: rays enter through a face turned to the
     // apex. On a side generator turned to it (P.u > rp), the squared
     // distance at height z is at most rho^2 - 2 r(z) rp + r(z)^2 + (z - p.z)^2,
@@ -276,7 +276,7 @@ ConeClass Frustum::classifyOff(const LocalCone& cone, double rho, double tol, do
         for (const double z : {0.0, length_})
             far2 = std::max(far2, rho * rho - 2.0 * radiusAt(z) * rp + sq(radiusAt(z)) + sq(z - p.z));
         if (facesBottom) far2 = std::max(far2, sq(rho + r0_) + sq(p.z));
-        if (facesTop) far2 = std::max(far2, sq(rho + r1_) + sq(p.z - length_));
+        if (facesTop) far2 = std::max(far2, sq(rho + r1_) + sq(p.z - length_));  // capped here
         frontFar = std::min(dFar, std::sqrt(far2));
     }
     const double firstFar = dNear >= cone.tMinInner ? frontFar : dFar;
@@ -304,25 +304,37 @@ ConeClass Frustum::classifyOff(const LocalCone& cone, double rho, double tol, do
         // generators are ill-conditioned. Be safe.
         return marginalClass(cone, dNear, firstFar);
     }
+    // The rims. Of a capped solid only the silhouette arcs count: where
+    // exactly one of the cap and the side (turned to the apex where
+    // P.y > rc rp) faces the apex. An open surface keeps those and adds the
+    // edge of what is seen through both openings: a rim counts whole when
+    // the cone also meets the other opening (or whenever the apex is inside
+    // the tube).
+    const bool insideTube = !capped_ && p.z > 0.0 && p.z < length_ && rho < rp;
     const double rims[2][2] = {{0.0, r0_}, {length_, r1_}};
     for (int end = 0; end < 2; ++end) {
         const double zc = rims[end][0], rc = rims[end][1];
         if (!(rc > 0.0)) continue;
+        bool silhouette = true;
         Arc arc;  // the whole circle
-        if (capped_) {
-            // The silhouette arc: where exactly one of the cap and the side
-            // (turned to the apex where P.y > rc rp) faces the apex.
+        if (!insideTube) {
             const bool faces = end ? facesTop : facesBottom;
             if (rho > 0.0) {
                 arc.nu = faces ? er : -er;
                 arc.kappa = (faces ? 1.0 : -1.0) * rc * rp / rho;
             } else {
-                const bool sideFaces = 0.0 > rc * rp;
-                if (faces == sideFaces) continue;  // no silhouette on this rim
+                silhouette = faces != (0.0 > rc * rp);
             }
         }
         // A curved boundary in the cone: Marginal, and not a single edge.
-        if (circleMayMeetCone(cone, zc, rc, arc)) return marginalClass(cone, dNear, firstFar);
+        if (silhouette && circleMayMeetCone(cone, zc, rc, arc))
+            return marginalClass(cone, dNear, firstFar);
+        if (!capped_ && !insideTube) {
+            const double otherZ = rims[1 - end][0], otherR = rims[1 - end][1];
+            if (otherR > 0.0 && discMayMeetCone(cone, otherZ, otherR) &&
+                circleMayMeetCone(cone, zc, rc))
+                return marginalClass(cone, dNear, firstFar);
+        }
     }
     if (tangency > 0.0) {
         // The two contour generators: where the tangent plane holds the apex.

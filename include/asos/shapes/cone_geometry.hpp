@@ -287,4 +287,7 @@ struct Arc {
 };
 bool circleMayMeetCone(const LocalCone& cone, double zc, double rho, const Arc& arc = {});
 
+// Whether the filled disc {z = zc, x^2 + y^2 <= rho^2} may meet the cone.
+bool discMayMeetCone(const LocalCone& cone, double zc, double rho);
+
 }  // namespace asos::conegeom
