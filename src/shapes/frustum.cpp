@@ -58,7 +58,8 @@ Frustum::SideQuadratic Frustum::sideQuadratic(const Profile& f, const Vec3& orig
 
 Frustum::Frustum(double r0, double r1, double length, bool capped)
     : r0_(r0), r1_(r1), length_(length), slope_((r1 - r0) / length),
-      slant_(std::sqrt(1.0 + sq((r1 - r0) / length))), capped_(capped) {
+      slant_(std::sqrt(1.0 + sq((r1 - r0) / length))), invSlant_(1.0 / slant_),
+      invSide2_(1.0 / (sq(r1 - r0) + length * length)), capped_(capped) {
     // The smallest sphere centred on the axis holding both rims.
     const double zc = std::clamp((r1 * r1 - r0 * r0 + length * length) / (2.0 * length), 0.0, length);
     ball_ = {Vec3(0.0, 0.0, zc), std::sqrt(std::max(r0 * r0 + zc * zc, r1 * r1 + sq(length - zc)))};
@@ -124,7 +125,8 @@ Frustum::Interval Frustum::solidInterval(const Profile& f, const Vec3& origin, c
     if (d.z == 0.0) {
         if (oz < f.zLo || oz > f.zHi) return {};
     } else {
-        const double a = (f.zLo - oz) / d.z, b = (f.zHi - oz) / d.z;
+        const double inv = 1.0 / d.z;
+        const double a = (f.zLo - oz) * inv, b = (f.zHi - oz) * inv;
         lo = std::min(a, b);
         hi = std::max(a, b);
         loPart = d.z > 0.0 ? 1 : 2;
@@ -180,8 +182,7 @@ double Frustum::distanceTo(double rho, double z) const {
     // The nearest of the side segment (r0, 0)-(r1, length) and, when capped,
     // the two cap segments from the axis, in the meridian half-plane.
     const double dr = r1_ - r0_;
-    const double u = std::clamp(((rho - r0_) * dr + z * length_) / (dr * dr + length_ * length_),
-                                0.0, 1.0);
+    const double u = std::clamp(((rho - r0_) * dr + z * length_) * invSide2_, 0.0, 1.0);
     double best = sq(rho - (r0_ + u * dr)) + sq(z - u * length_);
     if (capped_) {
         if (z >= 0.0 && z <= length_ && rho <= radiusAt(z)) return 0.0;
@@ -193,7 +194,7 @@ double Frustum::distanceTo(double rho, double z) const {
 
 double Frustum::depthInside(double rho, double z) const {
     // The boundary lies on the planes z = 0, z = length and the side's cone.
-    return std::min({z, length_ - z, (radiusAt(z) - rho) / slant_});
+    return std::min({z, length_ - z, (radiusAt(z) - rho) * invSlant_});
 }
 
 ConeClass Frustum::classify(const LocalCone& cone) const {
@@ -208,7 +209,7 @@ ConeClass Frustum::classify(const LocalCone& cone) const {
         1e-14 * (std::abs(p.x) + std::abs(p.y) + std::abs(p.z) + ball_.radius + ball_.center.z) +
         cone.absTol;
     const double rp = radiusAt(p.z);
-    const double sideGap = (rho - rp) / slant_;
+    const double sideGap = (rho - rp) * invSlant_;
     const bool nearSide = p.z >= -tol && p.z <= length_ + tol && std::abs(sideGap) <= tol;
     const bool nearBottom = capped_ && std::abs(p.z) <= tol && rho <= r0_ + tol;
     const bool nearTop = capped_ && std::abs(p.z - length_) <= tol && rho <= r1_ + tol;
@@ -250,47 +251,46 @@ ConeClass Frustum::classifyOnSurface(const LocalCone& cone, double rho, double t
 ConeClass Frustum::classifyOff(const LocalCone& cone, double rho, double tol, double dFar) const {
     const Vec3& p = cone.apex;
     const double c = cone.cosHalf, s = cone.sinHalf;
-    // Fast path. Up to dFar the cone lies within r = dFar sin(theta) of its
-    // axis: if the axis misses the solid grown by r, so does the cone, and no
-    // hit is nearer than the grown solid.
-    double nearBound = 0.0;
-    Interval axisChord;
-    if (c > 0.0) {
-        const Interval grownChord = solidInterval(grown(dFar * s + tol), p, cone.axis);
-        if (!grownChord.hit || grownChord.exit < 0.0 || grownChord.enter > dFar) return missClass();
-        nearBound = std::max(0.0, grownChord.enter);
-        if (cone.surelyAfter(nearBound)) return missClass();
-    }
-    const double dNear = std::max(nearBound, distanceTo(rho, p.z));
-    if (cone.surelyAfter(dNear)) return missClass();
     const double rp = radiusAt(p.z);  // the side's radius at the apex's height (signed)
     const bool facesBottom = r0_ > 0.0 && p.z < 0.0;  // the cap's side of its plane
     const bool facesTop = r1_ > 0.0 && p.z > length_;
-    // How deep a first hit can be: rays enter through a face turned to the
-    // apex. On a side generator turned to it (P.u > rp), the squared
-    // distance at height z is at most rho^2 - 2 r(z) rp + r(z)^2 + (z - p.z)^2,
-    // largest at an end; a cap is within its far rim point.
+    // Depths. No hit is nearer than the solid. Rays enter a capped solid
+    // through a face turned to the apex: on a side generator turned to it
+    // (P.u > rp) the squared distance at height z is at most
+    // rho^2 - 2 r(z) rp + r(z)^2 + (z - p.z)^2, largest at an end; a cap is
+    // within its far rim point.
+    const double dNear = distanceTo(rho, p.z);
+    if (cone.surelyAfter(dNear)) return missClass();
     double frontFar = dFar;
     if (capped_) {
         double far2 = 0.0;
         for (const double z : {0.0, length_})
             far2 = std::max(far2, rho * rho - 2.0 * radiusAt(z) * rp + sq(radiusAt(z)) + sq(z - p.z));
         if (facesBottom) far2 = std::max(far2, sq(rho + r0_) + sq(p.z));
-        if (facesTop) far2 = std::max(far2, sq(rho + r1_) + sq(p.z - length_));  // capped here
-        frontFar = std::min(dFar, std::sqrt(far2));
+        if (facesTop) far2 = std::max(far2, sq(rho + r1_) + sq(p.z - length_));
+        frontFar = std::sqrt(far2);
     }
     const double firstFar = dNear >= cone.tMinInner ? frontFar : dFar;
+
+    // Fast paths. A capped solid is hit by every ray that passes through a
+    // ball inside it: one around the middle of the axis' chord, as deep as
+    // that point, holds every ray when tm sin(theta) is smaller. Up to dFar
+    // the cone lies within r = dFar sin(theta) of its axis: if the axis
+    // misses the solid grown by r, so does the cone.
+    Interval axisChord;
     if (capped_) {
         axisChord = solidInterval(p, cone.axis);
         if (c > 0.0 && axisChord.hit && axisChord.exit >= 0.0) {
-            // Quick Full: a ball inside the solid around the axis' chord,
-            // which every ray passes through.
             const double tm = 0.5 * (std::max(axisChord.enter, 0.0) + axisChord.exit);
             const Vec3 q = p + tm * cone.axis;
             const double depth = depthInside(length2d(q.x, q.y), q.z);
             const double tFar = std::min(frontFar, tm + depth);
             if (tm * s < depth - tol && cone.surelyWithin(dNear, tFar)) return fullClass(dNear, tFar);
         }
+    }
+    if (c > 0.0 && !(capped_ && axisChord.hit && axisChord.exit >= 0.0)) {
+        const Interval grownChord = solidInterval(grown(dFar * s + tol), p, cone.axis);
+        if (!grownChord.hit || grownChord.exit < 0.0 || grownChord.enter > dFar) return missClass();
     }
 
     // The boundary as seen from the apex.

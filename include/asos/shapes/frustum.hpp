@@ -88,6 +88,8 @@ private:
     double r0_, r1_, length_;
     double slope_;  // dr/dz
     double slant_;  // sqrt(1 + slope^2)
+    double invSlant_;
+    double invSide2_;  // 1 / |(r1 - r0, length)|^2
     bool capped_;
     BoundingSphere ball_;
 };
