@@ -42,10 +42,11 @@ ConeClass Disc::classify(const LocalCone& cone) const {
         const double k = c * c - g2;
         if (k > 1e-6) {
             const double g = std::sqrt(g2), depth = std::abs(h);
-            const double tAxis = h / axis.z;
+            const double invAn = 1.0 / an;
+            const double tAxis = depth * invAn;
             const double qx = p.x + tAxis * axis.x, qy = p.y + tAxis * axis.y;
             const double q2 = qx * qx + qy * qy;
-            const double radius = depth * s / k * (c + g * s / an) * (1.0 + 1e-12) + cone.absTol;
+            const double radius = depth * s / k * (c + g * s * invAn) * (1.0 + 1e-12) + cone.absTol;
             if (q2 > (radius_ + radius) * (radius_ + radius)) return missClass();
             if (hole_ > radius && q2 < (hole_ - radius) * (hole_ - radius)) return missClass();
             const double lo = an * c - g * s;

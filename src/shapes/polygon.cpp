@@ -73,10 +73,11 @@ ConeClass Polygon::classify(const LocalCone& cone) const {
         const double k = c * c - g2;
         if (k > 1e-6) {
             const double g = std::sqrt(g2), depth = std::abs(h);
-            const double tAxis = h / axis.z;
+            const double invAn = 1.0 / an;
+            const double tAxis = depth * invAn;
             const Vec2 q(p.x + tAxis * axis.x, p.y + tAxis * axis.y);
             // The ellipse: semi-major depth s c / k about a centre depth g s^2 / (an k) from q.
-            const double radius = depth * s / k * (c + g * s / an) * (1.0 + 1e-12) + cone.absTol;
+            const double radius = depth * s / k * (c + g * s * invAn) * (1.0 + 1e-12) + cone.absTol;
             const double radius2 = radius * radius;
             // The footprint wholly off the polygon's bounding box: a miss.
             if (q.x + radius < lo_.x || q.x - radius > hi_.x || q.y + radius < lo_.y ||
