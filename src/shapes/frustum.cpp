@@ -45,7 +45,9 @@ Frustum::SideQuadratic Frustum::sideQuadratic(const Profile& f, const Vec3& orig
         if (std::abs(tipZ - mid) <= 2.0 * (f.zHi - f.zLo)) q.centerZ = tipZ;
     }
     const Vec3 center(0.0, 0.0, q.centerZ);
-    q.shift = glm::dot(center - origin, d) / glm::dot(d, d);
+    const double dd = glm::dot(d, d);
+    q.shift = glm::dot(center - origin, d);
+    if (dd != 1.0) q.shift /= dd;
     q.o = origin + q.shift * d - center;
     const double k = f.slope;
     const double rz = f.r0 + k * (q.centerZ + q.o.z);
@@ -254,13 +256,33 @@ ConeClass Frustum::classifyOff(const LocalCone& cone, double rho, double tol, do
     const double rp = radiusAt(p.z);  // the side's radius at the apex's height (signed)
     const bool facesBottom = r0_ > 0.0 && p.z < 0.0;  // the cap's side of its plane
     const bool facesTop = r1_ > 0.0 && p.z > length_;
-    // Depths. No hit is nearer than the solid. Rays enter a capped solid
-    // through a face turned to the apex: on a side generator turned to it
-    // (P.u > rp) the squared distance at height z is at most
-    // rho^2 - 2 r(z) rp + r(z)^2 + (z - p.z)^2, largest at an end; a cap is
-    // within its far rim point.
+    // No hit is nearer than the solid.
     const double dNear = distanceTo(rho, p.z);
     if (cone.surelyAfter(dNear)) return missClass();
+
+    // Fast path: a capped solid is hit by every ray that passes through a
+    // ball inside it. One around the middle of the axis' chord, as deep as
+    // that point, holds every ray when tm sin(theta) is smaller, and each
+    // ray enters the solid no later than the ball, by tm - sqrt(depth^2 -
+    // (tm sin(theta))^2).
+    Interval axisChord;
+    if (capped_) {
+        axisChord = solidInterval(p, cone.axis);
+        if (c > 0.0 && axisChord.hit && axisChord.exit >= 0.0) {
+            const double tm = 0.5 * (std::max(axisChord.enter, 0.0) + axisChord.exit);
+            const Vec3 q = p + tm * cone.axis;
+            const double depth = depthInside(length2d(q.x, q.y), q.z);
+            const double spread = tm * s;
+            if (spread < depth - tol) {
+                const double tFar = tm - std::sqrt((depth - spread) * (depth + spread));
+                if (cone.surelyWithin(dNear, tFar)) return fullClass(dNear, tFar);
+            }
+        }
+    }
+    // Depths of first hits: rays enter a capped solid through a face turned
+    // to the apex: on a side generator turned to it (P.u > rp) the squared
+    // distance at height z is at most rho^2 - 2 r(z) rp + r(z)^2 + (z - p.z)^2,
+    // largest at an end; a cap is within its far rim point.
     double frontFar = dFar;
     if (capped_) {
         double far2 = 0.0;
@@ -271,23 +293,8 @@ ConeClass Frustum::classifyOff(const LocalCone& cone, double rho, double tol, do
         frontFar = std::sqrt(far2);
     }
     const double firstFar = dNear >= cone.tMinInner ? frontFar : dFar;
-
-    // Fast paths. A capped solid is hit by every ray that passes through a
-    // ball inside it: one around the middle of the axis' chord, as deep as
-    // that point, holds every ray when tm sin(theta) is smaller. Up to dFar
-    // the cone lies within r = dFar sin(theta) of its axis: if the axis
-    // misses the solid grown by r, so does the cone.
-    Interval axisChord;
-    if (capped_) {
-        axisChord = solidInterval(p, cone.axis);
-        if (c > 0.0 && axisChord.hit && axisChord.exit >= 0.0) {
-            const double tm = 0.5 * (std::max(axisChord.enter, 0.0) + axisChord.exit);
-            const Vec3 q = p + tm * cone.axis;
-            const double depth = depthInside(length2d(q.x, q.y), q.z);
-            const double tFar = std::min(frontFar, tm + depth);
-            if (tm * s < depth - tol && cone.surelyWithin(dNear, tFar)) return fullClass(dNear, tFar);
-        }
-    }
+    // Up to dFar the cone lies within r = dFar sin(theta) of its axis: if the
+    // axis misses the solid grown by r, so does the cone.
     if (c > 0.0 && !(capped_ && axisChord.hit && axisChord.exit >= 0.0)) {
         const Interval grownChord = solidInterval(grown(dFar * s + tol), p, cone.axis);
         if (!grownChord.hit || grownChord.exit < 0.0 || grownChord.enter > dFar) return missClass();
