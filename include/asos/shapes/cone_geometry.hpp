@@ -250,13 +250,6 @@ inline Footprint footprintOnZPlane(const LocalCone& cone, double zc) {
     return footprintOnPlane(cone, 2, zc);
 }
 
-// Half-widths of the footprint ellipse's bounding box along its two coordinates.
-inline Vec2 footprintHalfWidths(const Footprint& f) {
-    const double u = f.major.x, v = f.major.y;
-    return {std::sqrt(f.a * f.a * u * u + f.b * f.b * v * v),
-            std::sqrt(f.a * f.a * v * v + f.b * f.b * u * u)};
-}
-
 // Support of the footprint ellipse in the unit direction nu: max over the
 // ellipse of nu.(y - center).
 inline double footprintSupport(const Footprint& f, const Vec2& nu) {
