@@ -187,7 +187,7 @@ Timing timeKind(const std::vector<Primitive>& objects, const Queries& q, int rep
     };
     // Short rounds, interleaved, the best of each kept.
     Timing t{kInfinity, kInfinity, kInfinity};
-    for (int i = 0; i < 15; ++i) {
+    for (int i = 0; i < 40; ++i) {
         t.rayNs = std::min(t.rayNs, round(q.rays, rays));
         t.coneNs = std::min(t.coneNs, round(q.cones, cones));
         t.coneTrigNs = std::min(t.coneTrigNs, round(q.raw, raw));
@@ -195,12 +195,12 @@ Timing timeKind(const std::vector<Primitive>& objects, const Queries& q, int rep
     return t;
 }
 
-// ns per classification over a subset of the cones (the best of 15 rounds).
+// ns per classification over a subset of the cones (the best of 40 rounds).
 double timeCones(const std::vector<Primitive>& objects,
                  const std::vector<Queries::ConeQuery>& cones, int repeat, double& sink) {
     if (cones.empty()) return 0.0;
     double best = kInfinity;
-    for (int round = 0; round < 15; ++round) {
+    for (int round = 0; round < 40; ++round) {
         const double start = threadNanoseconds();
         for (int r = 0; r < repeat; ++r)
             for (const auto& c : cones) sink += static_cast<double>(objects[c.object].classify(c.cone).coverage);
@@ -212,7 +212,7 @@ double timeCones(const std::vector<Primitive>& objects,
 
 int run(int queries, int repeat, int probes, std::uint64_t seed, const std::string& only,
         const std::string& mix) {
-    std::printf("asos bench intersect: %d queries per primitive, best of 15 interleaved rounds of %d passes; "
+    std::printf("asos bench intersect: %d queries per primitive, best of 40 interleaved rounds of %d passes; "
                 "%d probed cones per primitive; %s placements\n\n",
                 queries, repeat, probes, mix.c_str());
     std::printf("%-9s %9s %9s %12s %7s %7s\n", "primitive", "ray_ns", "cone_ns", "cone+trig_ns",
@@ -301,7 +301,7 @@ void addBenchIntersectCommand(CLI::App& bench, CommandResult& result) {
         "intersect", "Ray test vs cone classification per primitive (the paper's Table 3)");
     struct Options {
         int queries = 8192;
-        int repeat = 8;
+        int repeat = 2;
         int probes = 8192;
         std::uint64_t seed = 1993;
         std::string only;

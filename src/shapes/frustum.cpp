@@ -205,8 +205,7 @@ ConeClass Frustum::classify(const LocalCone& cone) const {
     const Vec3& p = cone.apex;
     const double rho = length2d(p.x, p.y);
     // Every point of the object is within dFar: the farthest point is on a rim.
-    const double dFar =
-        std::sqrt(std::max(sq(rho + r0_) + sq(p.z), sq(rho + r1_) + sq(p.z - length_)));
+    const double far2 = std::max(sq(rho + r0_) + sq(p.z), sq(rho + r1_) + sq(p.z - length_));
     const double tol =
         1e-14 * (std::abs(p.x) + std::abs(p.y) + std::abs(p.z) + ball_.radius + ball_.center.z) +
         cone.absTol;
@@ -216,10 +215,11 @@ ConeClass Frustum::classify(const LocalCone& cone) const {
     const bool nearBottom = capped_ && std::abs(p.z) <= tol && rho <= r0_ + tol;
     const bool nearTop = capped_ && std::abs(p.z - length_) <= tol && rho <= r1_ + tol;
     if (nearSide || nearBottom || nearTop)
-        return classifyOnSurface(cone, rho, tol, dFar, nearSide, nearBottom, nearTop);
-    if (capped_ && p.z > 0.0 && p.z < length_ && rho < rp) return classifyInside(cone, rho, dFar);
-    if (cone.surelyBefore(dFar)) return missClass();
-    return classifyOff(cone, rho, tol, dFar);
+        return classifyOnSurface(cone, rho, tol, std::sqrt(far2), nearSide, nearBottom, nearTop);
+    if (capped_ && p.z > 0.0 && p.z < length_ && rho < rp)
+        return classifyInside(cone, rho, std::sqrt(far2));
+    if (cone.tMinOuter > 0.0 && far2 < cone.tMinOuter * cone.tMinOuter) return missClass();
+    return classifyOff(cone, rho, tol, far2);
 }
 
 ConeClass Frustum::classifyInside(const LocalCone& cone, double rho, double dFar) const {
@@ -250,7 +250,7 @@ ConeClass Frustum::classifyOnSurface(const LocalCone& cone, double rho, double t
     return marginalClass(cone, cone.tMin, dFar + tol);
 }
 
-ConeClass Frustum::classifyOff(const LocalCone& cone, double rho, double tol, double dFar) const {
+ConeClass Frustum::classifyOff(const LocalCone& cone, double rho, double tol, double far2) const {
     const Vec3& p = cone.apex;
     const double c = cone.cosHalf, s = cone.sinHalf;
     const double rp = radiusAt(p.z);  // the side's radius at the apex's height (signed)
@@ -279,18 +279,19 @@ ConeClass Frustum::classifyOff(const LocalCone& cone, double rho, double tol, do
             }
         }
     }
+    const double dFar = std::sqrt(far2);
     // Depths of first hits: rays enter a capped solid through a face turned
     // to the apex: on a side generator turned to it (P.u > rp) the squared
     // distance at height z is at most rho^2 - 2 r(z) rp + r(z)^2 + (z - p.z)^2,
     // largest at an end; a cap is within its far rim point.
     double frontFar = dFar;
     if (capped_) {
-        double far2 = 0.0;
+        double front2 = 0.0;
         for (const double z : {0.0, length_})
-            far2 = std::max(far2, rho * rho - 2.0 * radiusAt(z) * rp + sq(radiusAt(z)) + sq(z - p.z));
-        if (facesBottom) far2 = std::max(far2, sq(rho + r0_) + sq(p.z));
-        if (facesTop) far2 = std::max(far2, sq(rho + r1_) + sq(p.z - length_));
-        frontFar = std::sqrt(far2);
+            front2 = std::max(front2, rho * rho - 2.0 * radiusAt(z) * rp + sq(radiusAt(z)) + sq(z - p.z));
+        if (facesBottom) front2 = std::max(front2, sq(rho + r0_) + sq(p.z));
+        if (facesTop) front2 = std::max(front2, sq(rho + r1_) + sq(p.z - length_));
+        frontFar = std::sqrt(front2);
     }
     const double firstFar = dNear >= cone.tMinInner ? frontFar : dFar;
     // Up to dFar the cone lies within r = dFar sin(theta) of its axis: if the

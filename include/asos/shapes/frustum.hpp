@@ -83,7 +83,8 @@ private:
     ConeClass classifyInside(const LocalCone& cone, double rho, double dFar) const;
     ConeClass classifyOnSurface(const LocalCone& cone, double rho, double tol, double dFar,
                                 bool nearSide, bool nearBottom, bool nearTop) const;
-    ConeClass classifyOff(const LocalCone& cone, double rho, double tol, double dFar) const;
+    // far2: the squared distance to the farthest point of the object.
+    ConeClass classifyOff(const LocalCone& cone, double rho, double tol, double far2) const;
 
     double r0_, r1_, length_;
     double slope_;  // dr/dz
