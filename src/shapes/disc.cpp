@@ -41,14 +41,17 @@ ConeClass Disc::classify(const LocalCone& cone) const {
         const double g2 = axis.x * axis.x + axis.y * axis.y;
         const double k = c * c - g2;
         if (k > 1e-6) {
-            const double g = std::sqrt(g2), depth = std::abs(h);
+            // sin(gamma) = sqrt(g2) <= (1 + g2) / 2: the radius needs no root
+            // (it grows by a fraction of order sin^2(theta)); the depths do.
+            const double gBound = 0.5 * (1.0 + g2), depth = std::abs(h);
             const double invAn = 1.0 / an;
             const double tAxis = depth * invAn;
             const double qx = p.x + tAxis * axis.x, qy = p.y + tAxis * axis.y;
             const double q2 = qx * qx + qy * qy;
-            const double radius = depth * s / k * (c + g * s * invAn) * (1.0 + 1e-12) + cone.absTol;
+            const double radius = depth * s / k * (c + gBound * s * invAn) * (1.0 + 1e-12) + cone.absTol;
             if (q2 > (radius_ + radius) * (radius_ + radius)) return missClass();
             if (hole_ > radius && q2 < (hole_ - radius) * (hole_ - radius)) return missClass();
+            const double g = std::sqrt(g2);
             const double lo = an * c - g * s;
             const double hi = angleWithin(an, g, c, s) ? 1.0 : an * c + g * s;
             const double tNear = depth / hi, tFar = depth / lo;

@@ -72,12 +72,14 @@ ConeClass Polygon::classify(const LocalCone& cone) const {
         const double g2 = axis.x * axis.x + axis.y * axis.y;
         const double k = c * c - g2;
         if (k > 1e-6) {
-            const double g = std::sqrt(g2), depth = std::abs(h);
+            // sin(gamma) = sqrt(g2) <= (1 + g2) / 2: the radius needs no root
+            // (it grows by a fraction of order sin^2(theta)); the depths do.
+            const double gBound = 0.5 * (1.0 + g2), depth = std::abs(h);
             const double invAn = 1.0 / an;
             const double tAxis = depth * invAn;
             const Vec2 q(p.x + tAxis * axis.x, p.y + tAxis * axis.y);
             // The ellipse: semi-major depth s c / k about a centre depth g s^2 / (an k) from q.
-            const double radius = depth * s / k * (c + g * s * invAn) * (1.0 + 1e-12) + cone.absTol;
+            const double radius = depth * s / k * (c + gBound * s * invAn) * (1.0 + 1e-12) + cone.absTol;
             const double radius2 = radius * radius;
             // The footprint wholly off the polygon's bounding box: a miss.
             if (q.x + radius < lo_.x || q.x - radius > hi_.x || q.y + radius < lo_.y ||
@@ -111,6 +113,8 @@ ConeClass Polygon::classify(const LocalCone& cone) const {
                 }
                 begin = end;
             }
+            if (nearCount == 0 && !inside) return missClass();
+            const double g = std::sqrt(g2);
             const double lo = an * c - g * s;
             const double hi = angleWithin(an, g, c, s) ? 1.0 : an * c + g * s;
             const double tNear = depth / hi, tFar = depth / lo;
