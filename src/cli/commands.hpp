@@ -24,4 +24,7 @@ void addBenchParseCommand(CLI::App& bench, CommandResult& result);
 // `asos bench bvh` (bench_bvh.cpp).
 void addBenchBvhCommand(CLI::App& bench, CommandResult& result);
 
+// `asos bench intersect` (bench_intersect.cpp).
+void addBenchIntersectCommand(CLI::App& bench, CommandResult& result);
+
 }  // namespace asos::cli

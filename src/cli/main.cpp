@@ -12,6 +12,7 @@ int main(int argc, char** argv) {
     // Benchmarks register under `bench`, one line each.
     addBenchParseCommand(*bench, result);
     addBenchBvhCommand(*bench, result);
+    addBenchIntersectCommand(*bench, result);
 
     try {
         app.parse(argc, argv);
