@@ -30,4 +30,7 @@ void addBenchRenderCommand(CLI::App& bench, CommandResult& result);
 // `asos bench bvh` (bench_bvh.cpp).
 void addBenchBvhCommand(CLI::App& bench, CommandResult& result);
 
+// `asos bench intersect` (bench_intersect.cpp).
+void addBenchIntersectCommand(CLI::App& bench, CommandResult& result);
+
 }  // namespace asos::cli
