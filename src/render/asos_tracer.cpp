@@ -145,7 +145,13 @@ Vec3 AsosTracer::shadeLeaf(const ImageSquare& square, int level, std::uint32_t i
             query.lightIndex = static_cast<std::size_t>(p.lightIndex);
             query.settings = lightSettings_[static_cast<std::size_t>(p.lightIndex)];
             query.shadedObject = static_cast<std::uint32_t>(hit->objectIndex);
-            query.shadedCanSelfShadow = selfShadowing_[query.shadedObject] != 0;
+            // An open tube is the boundary of a convex solid: its outer side,
+            // like any convex surface, shadows itself only through N.L <= 0.
+            // Only its inner side, seen through an opening (the normal
+            // turned toward the viewer points inward), can be in its own
+            // shadow.
+            query.shadedCanSelfShadow = selfShadowing_[query.shadedObject] != 0 &&
+                                        glm::dot(p.normal, hit->normal) < 0.0;
             query.level = level;
             query.ix = ix;
             query.iy = iy;
