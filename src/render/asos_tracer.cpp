@@ -198,12 +198,17 @@ PixelResult AsosTracer::trace(int px, int py, AsosScratch& s, RenderCounters& c,
         const Footprint footprint(camera_, pyray.square(), hit->position, hit->normal, hit->t);
         return pigmentMayChange(textureOf(scene_.object(front.object)).pigment, footprint);
     };
-    // Classifies a fresh pyray's objects items[first, end): returns the
-    // object that resolves it, or null with `resolved` false when marginal.
-    auto resolve = [](const std::vector<Item>& items, std::uint32_t first, std::uint32_t count,
-                      bool& resolved) -> const Item* {
-        resolved = count == 0 || (count == 1 && items[first].cls.coverage == Coverage::Full);
-        return count == 1 && resolved ? &items[first] : nullptr;
+    // How a fresh pyray's objects items[first, first + count) decide it:
+    // resolved with no object (background) or one in front, or marginal.
+    struct Resolution {
+        bool resolved;
+        const Item* front;
+    };
+    auto resolve = [](const std::vector<Item>& items, std::uint32_t first, std::uint32_t count) {
+        if (count == 0) return Resolution{true, nullptr};
+        if (count == 1 && items[first].cls.coverage == Coverage::Full)
+            return Resolution{true, &items[first]};
+        return Resolution{false, nullptr};
     };
 
     // Detection phase: the pixel's list.
@@ -226,8 +231,7 @@ PixelResult AsosTracer::trace(int px, int py, AsosScratch& s, RenderCounters& c,
     else s.eyeCandidates.visit(scene_, root.cone(), detect);
     sortByObject(rootItems.data(), rootItems.data() + rootItems.size());
     const std::uint32_t rootCount = pruneHidden(rootItems, 0);
-    bool resolved = false;
-    const Item* front = resolve(rootItems, 0, rootCount, resolved);
+    const auto [resolved, front] = resolve(rootItems, 0, rootCount);
 
     auto finish = [&]() {
         if (report) report->leaves = leaves;
@@ -379,8 +383,7 @@ PixelResult AsosTracer::trace(int px, int py, AsosScratch& s, RenderCounters& c,
                     if (k.coverage != Coverage::Miss) childItems.push_back({items[i].object, k});
                 }
                 const std::uint32_t count = pruneHidden(childItems, first);
-                bool childResolved = false;
-                const Item* childFront = resolve(childItems, first, count, childResolved);
+                const auto [childResolved, childFront] = resolve(childItems, first, count);
                 if (childResolved && !childFront) {
                     ++leaves;
                     color += childWeight * background;
