@@ -4,6 +4,8 @@
 // never fires on a path that is later abandoned.
 #include "asos/lang/parse.hpp"
 
+#include <algorithm>
+#include <cctype>
 #include <charconv>
 #include <string>
 #include <vector>
@@ -680,8 +682,20 @@ bool parseWith(Ast& ast, std::string_view text, NameTable& names, Diagnostics& d
         return true;
     } catch (const pegtl::parse_error& e) {
         const pegtl::position& p = e.positions().front();
-        diagnostics.report(makeError(ast.file, text, p.line, p.column,
-                                     std::string(e.message()) + ", found " + foundAt(text, p.byte)));
+        std::string message(e.message());
+        if (message.rfind("expected", 0) == 0) message += ", found " + foundAt(text, p.byte);
+        std::size_t line = p.line;
+        std::size_t column = p.column;
+        if (p.byte >= text.size()) {
+            // At the end of the file: point just after the last token, on a
+            // line that can be shown.
+            std::size_t end = text.size();
+            while (end > 0 && std::isspace(static_cast<unsigned char>(text[end - 1]))) --end;
+            const std::size_t lineStart = text.rfind('\n', end == 0 ? 0 : end - 1);
+            line = 1 + static_cast<std::size_t>(std::count(text.begin(), text.begin() + static_cast<std::ptrdiff_t>(end), '\n'));
+            column = end - (lineStart == std::string_view::npos || end == 0 ? 0 : lineStart + 1) + 1;
+        }
+        diagnostics.report(makeError(ast.file, text, line, column, std::move(message)));
     } catch (const Rejection& r) {
         diagnostics.report(makeError(ast.file, text, r.line, r.column, r.message));
     }
