@@ -21,9 +21,10 @@ struct texture_block;
 template <typename Entry>
 struct directive;
 
-// A block's body: its items and directives, in any order.
+// A block's body: its items and directives, in any order. (The not_at spares
+// trying every kind of item at the closing brace.)
 template <typename Entry>
-struct entries : star<sor<directive<Entry>, Entry>> {};
+struct entries : star<not_at<one<'}'>>, sor<directive<Entry>, Entry>> {};
 
 // A directive's body becomes a Sequence node.
 struct sequence_start : success {};

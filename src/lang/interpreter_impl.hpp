@@ -56,7 +56,7 @@ struct ObjectTree {
     Kind kind = Kind::Shape;
     Shape shape;
     Transform worldFromObject;
-    Light light;
+    std::shared_ptr<const Light> light;      // Kind::Light (shared: changed by copying)
     std::shared_ptr<const Texture> texture;  // its own; null: inherited or the default
     bool noShadow = false;
     bool modified = false;  // a union has had a modifier: no more children

@@ -96,8 +96,8 @@ void Interpreter::flatten(ObjectTree& node, const std::shared_ptr<const Texture>
         return;
     }
     case ObjectTree::Kind::Light: {
-        Light& l = scene_.lights.emplace_back(node.light);
-        l.asos = inherit(node.light.asos, asos);
+        Light& l = scene_.lights.emplace_back(*node.light);
+        l.asos = inherit(node.light->asos, asos);
         return;
     }
     case ObjectTree::Kind::Union:
@@ -203,7 +203,7 @@ ObjectTree Interpreter::evalObject(const Node& block) {
     }
     case Word::LightSource:
         t.kind = ObjectTree::Kind::Light;
-        t.light = evalLight(block);
+        t.light = std::make_shared<const Light>(evalLight(block));
         return t;
     case Word::Union: {
         t.kind = ObjectTree::Kind::Union;
@@ -248,13 +248,16 @@ void Interpreter::applyTransform(ObjectTree& tree, const Transform& m) {
     case ObjectTree::Kind::Shape:
         tree.worldFromObject = compose(m, tree.worldFromObject);
         break;
-    case ObjectTree::Kind::Light:
-        tree.light.position = m.point(tree.light.position);
-        if (tree.light.area) {
-            tree.light.area->axis1 = m.vector(tree.light.area->axis1);
-            tree.light.area->axis2 = m.vector(tree.light.area->axis2);
+    case ObjectTree::Kind::Light: {
+        auto light = std::make_shared<Light>(*tree.light);
+        light->position = m.point(light->position);
+        if (light->area) {
+            light->area->axis1 = m.vector(light->area->axis1);
+            light->area->axis2 = m.vector(light->area->axis2);
         }
+        tree.light = std::move(light);
         break;
+    }
     case ObjectTree::Kind::Union:
         for (ObjectTree& child : tree.children) applyTransform(child, m);
         break;
@@ -331,10 +334,13 @@ void Interpreter::applyObjectModifier(ObjectTree& tree, const Node& n, bool isSh
         }
         fail(n, "'open' applies only to a cone or a cylinder");
     case Word::Asos:
-        if (isLight)
-            tree.light.asos = evalAsos(n, tree.light.asos);
-        else
+        if (isLight) {
+            auto light = std::make_shared<Light>(*tree.light);
+            light->asos = evalAsos(n, light->asos);
+            tree.light = std::move(light);
+        } else {
             tree.asos = evalAsos(n, tree.asos);
+        }
         return;
     default:
         fail(n, "this is not an object modifier");
@@ -433,7 +439,7 @@ Light Interpreter::evalLight(const Node& block) {
     if (const auto* o = std::get_if<std::shared_ptr<const ObjectTree>>(&first)) {
         if ((*o)->kind != ObjectTree::Kind::Light)
             fail(args[0], "expected the position of the light or a declared light_source, found an object");
-        l = (*o)->light;
+        l = *(*o)->light;
         l.loc = locOf(block);
         fromIdentifier = true;
     } else if (std::holds_alternative<Num>(first)) {
