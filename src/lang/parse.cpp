@@ -684,6 +684,9 @@ bool parseWith(Ast& ast, std::string_view text, NameTable& names, Diagnostics& d
         const pegtl::position& p = e.positions().front();
         std::string message(e.message());
         if (message.rfind("expected", 0) == 0) message += ", found " + foundAt(text, p.byte);
+        if (message == "maximum parser rule nesting depth exceeded")  // limit_depth's words
+            message = "nested too deep (parentheses, operators, objects or directives, over " +
+                      std::to_string(kMaxNesting) + " levels)";
         std::size_t line = p.line;
         std::size_t column = p.column;
         if (p.byte >= text.size()) {
