@@ -150,7 +150,7 @@ public:
 
     // A top-level entry is complete: give it away and forget its nodes.
     void finishTopEntry() {
-        if (!consume) return;
+        if (!consume || stack_.empty()) return;  // a lone '#' leaves no node
         const Node entry = takeSingle();
         (*consume)(ast_, entry);
         ast_.arena.reset();

@@ -116,6 +116,11 @@ TEST_CASE("the entries of a file are handed over one by one", "[lang][parse]") {
                                       [&](const Ast&, const Node& n) { words.push_back(n.word); });
     CHECK(ok);
     CHECK(words == std::vector<Word>{Word::Sphere, Word::Declare, Word::Box});
+
+    words.clear();  // a lone '#' is no entry
+    CHECK(parseSceneEntries("sphere { 0, 1 } # // nothing after it", std::make_shared<const std::string>("t.pov"), names,
+                            diagnostics, [&](const Ast&, const Node& n) { words.push_back(n.word); }));
+    CHECK(words == std::vector<Word>{Word::Sphere});
 }
 
 TEST_CASE("syntax errors name the place and what was found there", "[lang][parse]") {
