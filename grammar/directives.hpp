@@ -21,9 +21,10 @@ struct texture_block;
 template <typename Entry>
 struct directive;
 
-// A block's body: its items and directives, in any order.
+// A block's body: its items and directives, in any order. (The not_at spares
+// trying every kind of item at the closing brace.)
 template <typename Entry>
-struct entries : star<sor<directive<Entry>, Entry>> {};
+struct entries : star<not_at<one<'}'>>, sor<directive<Entry>, Entry>> {};
 
 // A directive's body becomes a Sequence node.
 struct sequence_start : success {};
@@ -85,7 +86,13 @@ struct declare_equals : equals {};
 struct declare_semicolon : semicolon {};
 struct declarable_block : sor<object_statement, light_source_block, camera_block, pigment_block,
                               finish_block, texture_block> {};
-struct declared_value : sor<seq<declarable_block, opt<semicolon>>, seq<expression, declare_semicolon>> {};
+// POV-Ray wants the ';' after a float, vector or colour, not after a string
+// or a block. A string is told by how it starts: a literal, concat, str, chr.
+struct string_start : sor<one<'"'>, TAO_PEGTL_KEYWORD("concat"), TAO_PEGTL_KEYWORD("str"),
+                          TAO_PEGTL_KEYWORD("chr")> {};
+struct declared_value
+    : sor<seq<declarable_block, opt<semicolon>>, seq<at<string_start>, expression, opt<semicolon>>,
+          seq<expression, declare_semicolon>> {};
 struct declare_directive : if_must<declare_start, declared_name, declare_equals, declared_value> {};
 struct local_directive : if_must<local_start, declared_name, declare_equals, declared_value> {};
 
@@ -117,6 +124,8 @@ struct error_directive : if_must<error_start, message_value> {};
 // error; any other word after '#' is not a directive at all. #else, #elseif
 // and #end end a body and are left to the directive that owns it.
 struct unsupported_directive : seq<hash, word_if<accept_unsupported_directive>> {};
+// A '#' with no word after it does nothing, as in POV-Ray.
+struct empty_directive : seq<hash, not_at<ascii::identifier_first>> {};
 struct unknown_directive
     : seq<hash, not_at<sor<kw_end, kw_else, kw_elseif>>, word_if<accept_any>> {};
 
@@ -127,6 +136,7 @@ struct directive
           sor<if_directive<Entry>, ifdef_directive<Entry>, ifndef_directive<Entry>,
               while_directive<Entry>, for_directive<Entry>, declare_directive, local_directive,
               undef_directive, include_directive, version_directive, debug_directive,
-              warning_directive, error_directive, unsupported_directive, unknown_directive>> {};
+              warning_directive, error_directive, unsupported_directive, empty_directive,
+              unknown_directive>> {};
 
 }  // namespace asos::grammar

@@ -1,7 +1,8 @@
 #pragma once
 // The one table of error messages. must_if raises with `error_message<Rule>`
 // wherever Rule fails and refuses, at compile time, a rule under must<> that
-// has none. The parser appends what it found instead ("…, found 'foo'").
+// has none. After a message that starts with "expected", the parser says what
+// it found instead ("…, found 'foo'").
 //
 // Rules that cannot fail (opt, star, success and sequences of those) get an
 // empty message that is never shown: must<> instantiates raise() for them too.
@@ -35,7 +36,7 @@ inline constexpr const char* error_message = detail::never_fails<Rule> ? "" : nu
 
 // clang-format off
 // lexical
-template <> inline constexpr auto error_message<block_comment_body> = "unterminated comment: the file ends inside '/* … */'";
+template <> inline constexpr auto error_message<unterminated_comment> = "unterminated comment: no '*/' closes this '/*'";
 template <> inline constexpr auto error_message<string_body> = "unterminated string: expected '\"' before the end of the line";
 // expressions
 template <> inline constexpr auto error_message<logical_expression> = "expected an expression";

@@ -41,10 +41,42 @@ struct blank_run {
         return true;
     }
 };
-struct block_comment;
-// Block comments nest, as in POV-Ray.
-struct block_comment_body : until<string<'*', '/'>, sor<block_comment, any>> {};
-struct block_comment : if_must<string<'/', '*'>, block_comment_body> {};
+// Block comments nest, as in POV-Ray. An unterminated one is reported where
+// it starts, not at the end of the file.
+struct unterminated_comment {
+    using rule_t = unterminated_comment;
+    using subs_t = empty_list;
+    template <typename ParseInput>
+    static bool match(ParseInput&) {
+        return false;
+    }
+};
+struct block_comment {
+    using rule_t = block_comment;
+    using subs_t = empty_list;
+
+    template <apply_mode, rewind_mode, template <typename...> class Action,
+              template <typename...> class Control, typename ParseInput, typename... States>
+    static bool match(ParseInput& in, States&&... st) {
+        const char* const begin = in.current();
+        const char* const end = in.end();
+        if (end - begin < 2 || begin[0] != '/' || begin[1] != '*') return false;
+        int depth = 0;
+        for (const char* p = begin; p + 1 < end; ++p) {
+            if (p[0] == '/' && p[1] == '*') {
+                ++depth;
+                ++p;
+            } else if (p[0] == '*' && p[1] == '/') {
+                ++p;
+                if (--depth == 0) {
+                    in.bump(static_cast<std::size_t>(p + 1 - begin));  // counts the lines
+                    return true;
+                }
+            }
+        }
+        Control<unterminated_comment>::raise(static_cast<const ParseInput&>(in), st...);
+    }
+};
 struct skip : seq<blank_run, star<block_comment, blank_run>> {};
 struct byte_order_mark : string<'\xEF', '\xBB', '\xBF'> {};
 
@@ -167,4 +199,8 @@ template <typename Name>
 struct analyze_traits<Name, asos::grammar::number_text> : analyze_any_traits<> {};
 template <typename Name>
 struct analyze_traits<Name, asos::grammar::blank_run> : analyze_opt_traits<> {};
+template <typename Name>
+struct analyze_traits<Name, asos::grammar::block_comment> : analyze_any_traits<> {};
+template <typename Name>
+struct analyze_traits<Name, asos::grammar::unterminated_comment> : analyze_any_traits<> {};
 }  // namespace tao::pegtl

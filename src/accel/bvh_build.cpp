@@ -85,8 +85,10 @@ public:
     const BinaryNode& node(std::uint32_t i) const { return nodes_[i]; }
 
 private:
+    // Plain data (no default initialisation): findSplit sets only the bins
+    // it uses.
     struct Bin {
-        FloatBox box;
+        float lo[3], hi[3];
         std::uint32_t count;
     };
     static constexpr int kMaxBins = 256;
@@ -125,8 +127,8 @@ private:
             }
             if (split.found) {
                 const float lo = centres.lo[split.axis];
-                const float scale = binScale(centres, split.axis);
-                const int bins = options_.binCount;
+                const int bins = binsFor(count);
+                const float scale = binScale(centres, split.axis, bins);
                 PrimRef* m = std::partition(begin, begin + count, [&](const PrimRef& p) {
                     return binOf(p.centre(split.axis), lo, scale, bins) < split.bin;
                 });
@@ -176,10 +178,15 @@ private:
         double cost = 0.0;  // area-weighted item count of both sides
     };
 
-    float binScale(const FloatBox& centres, int axis) const {
+    // Small ranges use fewer bins: the sweep's cost then follows the item
+    // count (most ranges in a big tree are small), and with as many bins as
+    // items the split is nearly the exact SAH one anyway.
+    int binsFor(std::uint32_t count) const {
+        return static_cast<int>(std::min<std::uint32_t>(options_.binCount, std::max(4u, count)));
+    }
+    static float binScale(const FloatBox& centres, int axis, int bins) {
         const float extent = centres.hi[axis] - centres.lo[axis];
-        return extent > 0.0f ? static_cast<float>(options_.binCount) * (1.0f - 1e-6f) / extent
-                             : 0.0f;
+        return extent > 0.0f ? static_cast<float>(bins) * (1.0f - 1e-6f) / extent : 0.0f;
     }
     static int binOf(float c, float lo, float scale, int bins) {
         const int b = static_cast<int>((c - lo) * scale);
@@ -187,20 +194,31 @@ private:
     }
 
     Split findSplit(const PrimRef* prims, std::uint32_t count, const FloatBox& centres) const {
-        const int bins = options_.binCount;
+        const int bins = binsFor(count);
         Split best;
         Bin binArray[3][kMaxBins];
         float lo[3], scale[3];
         for (int axis = 0; axis < 3; ++axis) {
             lo[axis] = centres.lo[axis];
-            scale[axis] = binScale(centres, axis);
-            for (int i = 0; i < bins; ++i) binArray[axis][i] = Bin{FloatBox{}, 0};
+            scale[axis] = binScale(centres, axis, bins);
+            const FloatBox empty;
+            for (int i = 0; i < bins; ++i) {
+                Bin& b = binArray[axis][i];
+                for (int k = 0; k < 3; ++k) {
+                    b.lo[k] = empty.lo[k];
+                    b.hi[k] = empty.hi[k];
+                }
+                b.count = 0;
+            }
         }
         for (std::uint32_t i = 0; i < count; ++i) {
             const PrimRef& p = prims[i];
             for (int axis = 0; axis < 3; ++axis) {
                 Bin& bin = binArray[axis][binOf(p.centre(axis), lo[axis], scale[axis], bins)];
-                bin.box.extend(p.lo, p.hi);
+                for (int k = 0; k < 3; ++k) {
+                    bin.lo[k] = std::min(bin.lo[k], p.lo[k]);
+                    bin.hi[k] = std::max(bin.hi[k], p.hi[k]);
+                }
                 ++bin.count;
             }
         }
@@ -212,7 +230,7 @@ private:
             FloatBox acc;
             std::uint32_t n = 0;
             for (int i = bins - 1; i > 0; --i) {
-                acc.extend(b[i].box);
+                acc.extend(b[i].lo, b[i].hi);
                 n += b[i].count;
                 rightArea[i] = acc.area();
                 rightCount[i] = n;
@@ -220,7 +238,7 @@ private:
             FloatBox leftAcc;
             std::uint32_t leftN = 0;
             for (int i = 1; i < bins; ++i) {
-                leftAcc.extend(b[i - 1].box);
+                leftAcc.extend(b[i - 1].lo, b[i - 1].hi);
                 leftN += b[i - 1].count;
                 if (leftN == 0 || rightCount[i] == 0) continue;
                 const double cost = leftAcc.area() * leftN + rightArea[i] * rightCount[i];

@@ -155,33 +155,43 @@ double ConeBoxTest::entryDistance(const Bounds3& box) const {
     const double axialHalf = glm::dot(glm::abs(w), halfExtent);
     if (p - axialHalf > axialHi_ + slack || p + axialHalf < axialLo_ - slack) return kInfinity;
 
-    // 3. The spherical shell tMin <= |x - apex| <= tMax.
+    // 3. The spherical shell tMin <= |x - apex| <= tMax (compared squared).
     const Vec3 nearest = glm::max(glm::max(box.lo - cone_.apex, Vec3(0.0)), cone_.apex - box.hi);
-    const double nearestDistance = glm::length(nearest);
-    if (nearestDistance > cone_.tMax + slack) return kInfinity;
-    const Vec3 farthest = glm::max(glm::abs(box.lo - cone_.apex), glm::abs(box.hi - cone_.apex));
-    if (glm::length(farthest) < cone_.tMin - slack) return kInfinity;
-
-    // 4. The bounding sphere against the exact cone.
-    const double radius = glm::length(halfExtent);
-    if (distanceTo(centre) > radius + slack) return kInfinity;
-
-    // 5. A tangent plane through the apex, facing the box's centre.
-    // The plane is valid for any unit e orthogonal to w, so where the centre
-    // is too near the axis for its offset to give a reliable direction, a
-    // fixed e orthogonal to w serves.
-    if (cos_ > 0.0) {
-        Vec3 e = v - p * w;
-        const double eLength = glm::length(e);
-        if (eLength > 1e-3 * glm::length(v)) {
-            e /= eLength;
-        } else {
-            e = orthogonal_;
-        }
-        const Vec3 n = cos_ * e - sin_ * w;
-        const double lowest = glm::dot(n, v) - glm::dot(glm::abs(n), halfExtent);
-        if (lowest > slack) return kInfinity;
+    const double nearestSquared = glm::dot(nearest, nearest);
+    if (std::isfinite(cone_.tMax) && nearestSquared > (cone_.tMax + slack) * (cone_.tMax + slack))
+        return kInfinity;
+    if (cone_.tMin > slack) {
+        const Vec3 farthest = glm::max(glm::abs(box.lo - cone_.apex), glm::abs(box.hi - cone_.apex));
+        if (glm::dot(farthest, farthest) < (cone_.tMin - slack) * (cone_.tMin - slack)) return kInfinity;
     }
+
+    // 4. The bounding sphere against the exact cone (as distanceTo, inlined
+    // so that the pieces serve test 5 too).
+    const double radius = glm::length(halfExtent);
+    const double q = glm::length(glm::cross(v, w));  // distance of the centre from the axis line
+    const double d = std::sqrt(p * p + q * q);
+    if (p >= d * cos_) {
+        // The centre is within the angular range: only the t-range can
+        // separate, and no tangent plane can (the centre is on the cone's side).
+        if (std::max({0.0, cone_.tMin - d, d - cone_.tMax}) > radius + slack) return kInfinity;
+    } else {
+        const double s = p * cos_ + q * sin_;
+        const double h = q * cos_ - p * sin_;
+        const double along = s - std::clamp(s, cone_.tMin, cone_.tMax);
+        if (h * h + along * along > (radius + slack) * (radius + slack)) return kInfinity;
+
+        // 5. A tangent plane through the apex, facing the box's centre. The
+        // plane is valid for any unit e orthogonal to w, so where the centre
+        // is too near the axis for its offset to give a reliable direction,
+        // a fixed e orthogonal to w serves.
+        if (cos_ > 0.0) {
+            const Vec3 e = q > 1e-3 * d ? (v - p * w) / q : orthogonal_;
+            const Vec3 n = cos_ * e - sin_ * w;
+            const double lowest = glm::dot(n, v) - glm::dot(glm::abs(n), halfExtent);
+            if (lowest > slack) return kInfinity;
+        }
+    }
+    const double nearestDistance = std::sqrt(nearestSquared);
     return std::max(0.0, std::max(nearestDistance, cone_.tMin) - slack);
 }
 

@@ -1,11 +1,15 @@
 // asos bench parse [--max-exponent 6] [--povray] [--dir DIR]
 // Writes scenes of 10^3 … 10^N spheres, written out one by one ("explicit")
 // and made by a #while loop ("loop"), then times scene text → description for
-// each. Each case runs in a forked child so that its peak memory (the child's
-// getrusage maxrss) is its own. With --povray, POV-Ray 3.7 parses the same
-// files (`povray +W1 +H1 -D -GA +GS`) and its reported parse time is shown.
+// each: wall time, CPU time (user + system: steadier when the machine is
+// shared) and peak memory. Each case runs in a forked child so that its peak
+// memory (the child's getrusage maxrss) is its own. With --povray, POV-Ray 3.7
+// parses the same files (`povray +W1 +H1 -D -F -GA +GS<file>`) and the parse
+// time it reports (wall and CPU) is shown with its peak memory.
+#include <fcntl.h>
 #include <sys/resource.h>
 #include <sys/wait.h>
+#include <time.h>
 #include <unistd.h>
 
 #include <array>
@@ -40,9 +44,16 @@ struct BenchArgs {
 struct Measure {
     bool ok = false;
     double seconds = 0.0;
+    double cpuSeconds = 0.0;
     double peakMiB = 0.0;
     std::size_t objects = 0;
 };
+
+double cpuNow() {
+    timespec t{};
+    clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &t);
+    return static_cast<double>(t.tv_sec) + 1e-9 * static_cast<double>(t.tv_nsec);
+}
 
 // Explicit spheres on a 100 x 100 x 100 grid with varied radii and colours.
 void writeExplicit(const fs::path& path, long n) {
@@ -78,21 +89,24 @@ void writeLoop(const fs::path& path, long n) {
 Measure measureInChild(const fs::path& scene) {
     int fds[2];
     if (pipe(fds) != 0) return {};
+    std::cout.flush();  // the child must not inherit (and print again) pending output
     const pid_t pid = fork();
     if (pid < 0) return {};
     if (pid == 0) {
         close(fds[0]);
         Diagnostics diagnostics;
+        const double cpuStart = cpuNow();
         const auto start = std::chrono::steady_clock::now();
         auto description = lang::interpretFile(scene, lang::InterpreterOptions{}, diagnostics);
         const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-        const double report[2] = {description ? seconds : -1.0,
-                                  description ? static_cast<double>(description->objects.size()) : 0.0};
+        const double report[3] = {description ? seconds : -1.0,
+                                  description ? static_cast<double>(description->objects.size()) : 0.0,
+                                  cpuNow() - cpuStart};
         const ssize_t written = write(fds[1], report, sizeof report);
         _exit(written == sizeof report ? 0 : 1);
     }
     close(fds[1]);
-    double report[2] = {-1.0, 0.0};
+    double report[3] = {-1.0, 0.0, 0.0};
     const ssize_t got = read(fds[0], report, sizeof report);
     close(fds[0]);
     int status = 0;
@@ -102,20 +116,27 @@ Measure measureInChild(const fs::path& scene) {
     m.ok = got == sizeof report && report[0] >= 0 && WIFEXITED(status) && WEXITSTATUS(status) == 0;
     m.seconds = report[0];
     m.objects = static_cast<std::size_t>(report[1]);
+    m.cpuSeconds = report[2];
     m.peakMiB = usage.ru_maxrss / 1024.0;
     return m;
 }
 
-// POV-Ray's own "Parse Time" for the file, and its peak RSS.
+// POV-Ray's own "Parse Time" for the file (wall and CPU), and its peak RSS.
 std::optional<Measure> measurePovray(const fs::path& scene) {
-    const fs::path log = scene.string() + ".povray.log";
+    const fs::path stats = scene.string() + ".povray-stats.txt";
+    std::cout.flush();
     const pid_t pid = fork();
     if (pid < 0) return std::nullopt;
     if (pid == 0) {
-        std::FILE* f = std::freopen(log.c_str(), "w", stderr);
-        if (!f || !std::freopen("/dev/null", "w", stdout)) _exit(127);
-        const std::string input = "+I" + scene.string();
-        execlp("povray", "povray", "+W1", "+H1", "-D", "-GA", "+GS", "-F", input.c_str(),
+        const int devNull = open("/dev/null", O_WRONLY);
+        if (devNull < 0) _exit(126);
+        dup2(devNull, STDOUT_FILENO);
+        dup2(devNull, STDERR_FILENO);
+        // POV-Ray writes stream files only beside its image: run in the scene's folder.
+        if (chdir(scene.parent_path().c_str()) != 0) _exit(126);
+        const std::string input = "+I" + scene.filename().string();
+        const std::string statsOption = "+GS" + stats.filename().string();
+        execlp("povray", "povray", "+W1", "+H1", "-D", "-F", "-GA", statsOption.c_str(), input.c_str(),
                static_cast<char*>(nullptr));
         _exit(127);
     }
@@ -124,17 +145,19 @@ std::optional<Measure> measurePovray(const fs::path& scene) {
     wait4(pid, &status, 0, &usage);
     std::string text;
     {
-        std::ifstream in(log);
+        std::ifstream in(stats);
         text.assign(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
     }
     std::error_code ec;
-    fs::remove(log, ec);
+    fs::remove(stats, ec);
     std::smatch match;
-    if (!std::regex_search(text, match, std::regex(R"(Parse Time:[^(]*\(([0-9.]+) seconds\))")))
+    if (!std::regex_search(text, match,
+                           std::regex(R"(Parse Time:[^(]*\(([0-9.]+) seconds\)\s*using \d+ thread\(s\) with ([0-9.]+) CPU-seconds)")))
         return std::nullopt;
     Measure m;
     m.ok = WIFEXITED(status) && WEXITSTATUS(status) == 0;
     m.seconds = std::stod(match[1]);
+    m.cpuSeconds = std::stod(match[2]);
     m.peakMiB = usage.ru_maxrss / 1024.0;
     return m;
 }
@@ -155,8 +178,13 @@ int runBench(const BenchArgs& args) {
     std::cout << "scene text -> scene description (asos parse), one child process per case\n"
               << "files in " << dir.string() << "\n\n"
               << std::left << std::setw(10) << "case" << std::right << std::setw(10) << "spheres"
-              << std::setw(10) << "MiB file" << std::setw(10) << "seconds" << std::setw(12) << "peak MiB";
-    if (args.povray) std::cout << std::setw(16) << "povray seconds" << std::setw(14) << "povray MiB";
+              << std::setw(10) << "file MiB" << std::setw(10) << "wall s" << std::setw(10) << "CPU s"
+              << std::setw(10) << "peak MiB";
+    if (args.povray)
+        std::cout << "  |" << std::setw(10) << "povray" << std::setw(10) << "povray" << std::setw(10) << "povray";
+    std::cout << '\n' << std::setw(60) << "";
+    if (args.povray)
+        std::cout << "  |" << std::setw(10) << "wall s" << std::setw(10) << "CPU s" << std::setw(10) << "peak MiB";
     std::cout << '\n';
     int failures = 0;
     for (int e = 3; e <= args.maxExponent; ++e) {
@@ -173,13 +201,15 @@ int runBench(const BenchArgs& args) {
             std::cout << std::left << std::setw(10) << (loop ? "loop" : "explicit") << std::right
                       << std::setw(10) << n << std::setw(10) << std::fixed << std::setprecision(1)
                       << fs::file_size(file, ec) / 1048576.0 << std::setw(10) << std::setprecision(3)
-                      << m.seconds << std::setw(12) << std::setprecision(1) << m.peakMiB;
+                      << m.seconds << std::setw(10) << m.cpuSeconds << std::setw(10) << std::setprecision(1)
+                      << m.peakMiB;
             if (args.povray) {
+                std::cout << "  |";
                 if (auto p = measurePovray(file))
-                    std::cout << std::setw(16) << std::setprecision(3) << p->seconds << std::setw(14)
-                              << std::setprecision(1) << p->peakMiB;
+                    std::cout << std::setw(10) << std::setprecision(3) << p->seconds << std::setw(10)
+                              << p->cpuSeconds << std::setw(10) << std::setprecision(1) << p->peakMiB;
                 else
-                    std::cout << std::setw(16) << "failed" << std::setw(14) << "-";
+                    std::cout << std::setw(30) << "failed";
             }
             std::cout << (ok ? "" : "   FAILED") << std::endl;
             if (args.dir.empty()) fs::remove(file, ec);

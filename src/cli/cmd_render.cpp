@@ -1,5 +1,5 @@
 // asos render SCENE -o OUT.png|.exr|.tif|… [-W 640 -H 480] [--method asos|single|grid|jitter|adaptive]
-//   [--eps E|A/B --max M --jitter on|off] [--samples N] [--threshold T --depth D]
+//   [--eps E|A/B --max M --jitter on|off --pattern-edges on|off] [--samples N] [--threshold T --depth D]
 //   [--light-method asos|grid] [--light-samples N] [--shadow-apex surface|behind] [--threads N]
 //   [--seed S] [--region x0,y0,x1,y1] [--clock C] [-D NAME=VALUE]... [-L DIR]...
 //   [--stats] [--stats-json FILE] [--aov samples=FILE] [--quiet]
@@ -41,6 +41,7 @@ struct RenderArgs {
     std::optional<std::string> eps;
     std::optional<int> maxLevel;
     std::optional<std::string> jitter;
+    std::string patternEdges = "off";
     int samples = 4;
     double threshold = 0.3;
     int depth = 2;
@@ -134,6 +135,10 @@ int runRender(const RenderArgs& args) {
         else problems.push_back("--jitter wants on or off, not '" + *args.jitter + "'");
         settings.adaptive.jitter = settings.asos.jitter.value_or(false);
     }
+    if (args.patternEdges == "on" || args.patternEdges == "off")
+        settings.patternEdges = args.patternEdges == "on";
+    else
+        problems.push_back("--pattern-edges wants on or off, not '" + args.patternEdges + "'");
     settings.samples = args.samples;
     settings.adaptive.threshold = args.threshold;
     settings.adaptive.depth = args.depth;
@@ -260,6 +265,8 @@ void addRenderCommand(CLI::App& app, CommandResult& result) {
     cmd->add_option("--max", args->maxLevel, "ASOS: MAX, the deepest subdivision level (default 4)");
     cmd->add_option("--jitter", args->jitter,
                     "on|off: ASOS jitters its MAX-rays, adaptive its sub-samples (default off)");
+    cmd->add_option("--pattern-edges", args->patternEdges,
+                    "on|off: ASOS also subdivides where a pigment pattern's edge crosses a pixel (default off)");
     cmd->add_option("--samples", args->samples, "grid and jitter: N x N rays per pixel (default 4)");
     cmd->add_option("--threshold", args->threshold, "adaptive: colour difference that subdivides (default 0.3)");
     cmd->add_option("--depth", args->depth, "adaptive: subdivision levels (default 2, POV-Ray's +R3)");

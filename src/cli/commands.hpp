@@ -24,8 +24,14 @@ void addParseCommand(CLI::App& app, CommandResult& result);
 // `asos bench parse`: parse time and peak memory for 10^3 … 10^6 spheres.
 void addBenchParseCommand(CLI::App& bench, CommandResult& result);
 
+// `asos bench render`: time and rays of every method (bench_render.cpp).
+void addBenchRenderCommand(CLI::App& bench, CommandResult& result);
+
 // `asos bench bvh` (bench_bvh.cpp).
 void addBenchBvhCommand(CLI::App& bench, CommandResult& result);
+
+// `asos bench intersect` (bench_intersect.cpp).
+void addBenchIntersectCommand(CLI::App& bench, CommandResult& result);
 
 // `asos bench lights`: area light shadows, ASOS against the grid (bench_lights.cpp).
 void addBenchLightsCommand(CLI::App& bench, CommandResult& result);

@@ -13,6 +13,8 @@ int main(int argc, char** argv) {
     // Benchmarks register under `bench`, one line each.
     addBenchParseCommand(*bench, result);
     addBenchBvhCommand(*bench, result);
+    addBenchIntersectCommand(*bench, result);
+    addBenchRenderCommand(*bench, result);
     addBenchLightsCommand(*bench, result);
 
     try {

@@ -319,13 +319,18 @@ void Interpreter::runInclude(const Node& n, EntryHandler handle) {
         for (const auto& p : includeStack_) chain += p.filename().string() + " -> ";
         fatal(n, "#include cycle: " + chain + found.filename().string());
     }
-    auto text = readFile(found);
-    if (!text) fatal(n[0], "cannot read include file '" + found.string() + "'");
-
-    SourceFile& f = files_.emplace_back();
-    f.name = std::make_shared<const std::string>(found.string());
-    f.text = std::move(*text);
-    f.path = found;
+    // A file included again (say, in a loop) is read once.
+    SourceFile*& cached = filesByPath_[found.string()];
+    if (!cached) {
+        auto text = readFile(found);
+        if (!text) fatal(n[0], "cannot read include file '" + found.string() + "'");
+        SourceFile& added = files_.emplace_back();
+        added.name = std::make_shared<const std::string>(found.string());
+        added.text = std::move(*text);
+        added.path = found;
+        cached = &added;
+    }
+    SourceFile& f = *cached;
 
     SourceFile* const savedFile = file_;
     const Ast* const savedAst = ast_;

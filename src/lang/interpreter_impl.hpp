@@ -56,7 +56,7 @@ struct ObjectTree {
     Kind kind = Kind::Shape;
     Shape shape;
     Transform worldFromObject;
-    Light light;
+    std::shared_ptr<const Light> light;      // Kind::Light (shared: changed by copying)
     std::shared_ptr<const Texture> texture;  // its own; null: inherited or the default
     bool noShadow = false;
     bool modified = false;  // a union has had a modifier: no more children
@@ -224,6 +224,7 @@ private:
     double version_ = 3.7;
 
     std::deque<SourceFile> files_;  // every file read, kept for error lines
+    std::unordered_map<std::string, SourceFile*> filesByPath_;  // included files, by canonical path
     SourceFile* file_ = nullptr;    // the file being run
     const Ast* ast_ = nullptr;      // its tree (for string literals)
     std::vector<std::filesystem::path> includeStack_;

@@ -96,8 +96,8 @@ void Interpreter::flatten(ObjectTree& node, const std::shared_ptr<const Texture>
         return;
     }
     case ObjectTree::Kind::Light: {
-        Light& l = scene_.lights.emplace_back(node.light);
-        l.asos = inherit(node.light.asos, asos);
+        Light& l = scene_.lights.emplace_back(*node.light);
+        l.asos = inherit(node.light->asos, asos);
         return;
     }
     case ObjectTree::Kind::Union:
@@ -167,17 +167,16 @@ ObjectTree Interpreter::evalObject(const Node& block) {
             invalid(args[0], "the polygon announces " + formatNumber(count) + " points but lists " +
                                  std::to_string(p.points.size()));
         } else {
-            // All points in one plane, and not all on one line.
+            // All points in the plane of the first three that span one (as
+            // POV-Ray), and not all on one line.
             const Vec3 origin = p.points[0];
-            Vec3 far = origin;
-            for (const Vec3& q : p.points)
-                if (glm::length(q - origin) > glm::length(far - origin)) far = q;
-            const double size = glm::length(far - origin);
+            double size = 0;
+            for (const Vec3& q : p.points) size = std::max(size, glm::length(q - origin));
+            std::size_t second = 1;
+            while (second < p.points.size() && p.points[second] == origin) ++second;
             Vec3 normal(0.0);
-            for (const Vec3& q : p.points) {
-                const Vec3 c = glm::cross(far - origin, q - origin);
-                if (glm::length(c) > glm::length(normal)) normal = c;
-            }
+            for (std::size_t i = second + 1; i < p.points.size() && glm::length(normal) <= 1e-12 * size * size; ++i)
+                normal = glm::cross(p.points[second] - origin, p.points[i] - origin);
             if (size == 0 || glm::length(normal) <= 1e-12 * size * size) {
                 invalid(args[0], "the points of the polygon are all on one line");
             } else {
@@ -187,7 +186,7 @@ ObjectTree Interpreter::evalObject(const Node& block) {
                     if (off > 1e-9 * size) {
                         invalid(points[i], "the points of the polygon are not in one plane: point " +
                                                std::to_string(i + 1) + " is " + formatNumber(off) +
-                                               " away from it");
+                                               " away from the plane of the first ones");
                         break;
                     }
                 }
@@ -204,7 +203,7 @@ ObjectTree Interpreter::evalObject(const Node& block) {
     }
     case Word::LightSource:
         t.kind = ObjectTree::Kind::Light;
-        t.light = evalLight(block);
+        t.light = std::make_shared<const Light>(evalLight(block));
         return t;
     case Word::Union: {
         t.kind = ObjectTree::Kind::Union;
@@ -249,13 +248,16 @@ void Interpreter::applyTransform(ObjectTree& tree, const Transform& m) {
     case ObjectTree::Kind::Shape:
         tree.worldFromObject = compose(m, tree.worldFromObject);
         break;
-    case ObjectTree::Kind::Light:
-        tree.light.position = m.point(tree.light.position);
-        if (tree.light.area) {
-            tree.light.area->axis1 = m.vector(tree.light.area->axis1);
-            tree.light.area->axis2 = m.vector(tree.light.area->axis2);
+    case ObjectTree::Kind::Light: {
+        auto light = std::make_shared<Light>(*tree.light);
+        light->position = m.point(light->position);
+        if (light->area) {
+            light->area->axis1 = m.vector(light->area->axis1);
+            light->area->axis2 = m.vector(light->area->axis2);
         }
+        tree.light = std::move(light);
         break;
+    }
     case ObjectTree::Kind::Union:
         for (ObjectTree& child : tree.children) applyTransform(child, m);
         break;
@@ -332,10 +334,13 @@ void Interpreter::applyObjectModifier(ObjectTree& tree, const Node& n, bool isSh
         }
         fail(n, "'open' applies only to a cone or a cylinder");
     case Word::Asos:
-        if (isLight)
-            tree.light.asos = evalAsos(n, tree.light.asos);
-        else
+        if (isLight) {
+            auto light = std::make_shared<Light>(*tree.light);
+            light->asos = evalAsos(n, light->asos);
+            tree.light = std::move(light);
+        } else {
             tree.asos = evalAsos(n, tree.asos);
+        }
         return;
     default:
         fail(n, "this is not an object modifier");
@@ -434,7 +439,7 @@ Light Interpreter::evalLight(const Node& block) {
     if (const auto* o = std::get_if<std::shared_ptr<const ObjectTree>>(&first)) {
         if ((*o)->kind != ObjectTree::Kind::Light)
             fail(args[0], "expected the position of the light or a declared light_source, found an object");
-        l = (*o)->light;
+        l = *(*o)->light;
         l.loc = locOf(block);
         fromIdentifier = true;
     } else if (std::holds_alternative<Num>(first)) {
@@ -567,13 +572,22 @@ CameraValue Interpreter::evalCamera(const Node& block) {
         if (glm::length(toTarget) == 0)
             fail((*lookAtNode)[0], "the camera looks at its own location");
         const Vec3 direction = glm::normalize(toTarget);
+        const double sign = handedness > 0 ? 1.0 : -1.0;
         const Vec3 side = glm::cross(cv.sky, direction);
-        if (glm::length(side) == 0)
-            fail((*lookAtNode)[0], "the camera looks along its sky vector: no way to tell up");
-        const Vec3 right = glm::normalize(side);
+        Vec3 right;
+        if (glm::length(side) > 0) {
+            right = glm::normalize(side) * sign;
+        } else {
+            // POV-Ray warns and keeps the right vector as given.
+            report(Severity::Warning, (*lookAtNode)[0],
+                   "the camera looks along its sky vector; the right vector is kept as given");
+            right = glm::normalize(c.right);
+            if (glm::length(glm::cross(direction, right)) == 0)
+                fail((*lookAtNode)[0], "the camera looks along both its sky and its right vectors");
+        }
         c.direction = direction * directionLength;
-        c.right = right * (handedness > 0 ? rightLength : -rightLength);
-        c.up = glm::cross(direction, right) * upLength;
+        c.right = right * rightLength;
+        c.up = glm::normalize(glm::cross(direction, right)) * (sign * upLength);
     }
     if (!transform.isIdentity()) {
         c.location = transform.point(c.location);

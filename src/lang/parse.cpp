@@ -4,6 +4,8 @@
 // never fires on a path that is later abandoned.
 #include "asos/lang/parse.hpp"
 
+#include <algorithm>
+#include <cctype>
 #include <charconv>
 #include <string>
 #include <vector>
@@ -148,7 +150,7 @@ public:
 
     // A top-level entry is complete: give it away and forget its nodes.
     void finishTopEntry() {
-        if (!consume) return;
+        if (!consume || stack_.empty()) return;  // a lone '#' leaves no node
         const Node entry = takeSingle();
         (*consume)(ast_, entry);
         ast_.arena.reset();
@@ -680,8 +682,23 @@ bool parseWith(Ast& ast, std::string_view text, NameTable& names, Diagnostics& d
         return true;
     } catch (const pegtl::parse_error& e) {
         const pegtl::position& p = e.positions().front();
-        diagnostics.report(makeError(ast.file, text, p.line, p.column,
-                                     std::string(e.message()) + ", found " + foundAt(text, p.byte)));
+        std::string message(e.message());
+        if (message.rfind("expected", 0) == 0) message += ", found " + foundAt(text, p.byte);
+        if (message == "maximum parser rule nesting depth exceeded")  // limit_depth's words
+            message = "nested too deep (parentheses, operators, objects or directives, over " +
+                      std::to_string(kMaxNesting) + " levels)";
+        std::size_t line = p.line;
+        std::size_t column = p.column;
+        if (p.byte >= text.size()) {
+            // At the end of the file: point just after the last token, on a
+            // line that can be shown.
+            std::size_t end = text.size();
+            while (end > 0 && std::isspace(static_cast<unsigned char>(text[end - 1]))) --end;
+            const std::size_t lineStart = text.rfind('\n', end == 0 ? 0 : end - 1);
+            line = 1 + static_cast<std::size_t>(std::count(text.begin(), text.begin() + static_cast<std::ptrdiff_t>(end), '\n'));
+            column = end - (lineStart == std::string_view::npos || end == 0 ? 0 : lineStart + 1) + 1;
+        }
+        diagnostics.report(makeError(ast.file, text, line, column, std::move(message)));
     } catch (const Rejection& r) {
         diagnostics.report(makeError(ast.file, text, r.line, r.column, r.message));
     }

@@ -52,14 +52,17 @@ Vec2 pointInSquare(const ImageSquare& sq, const Vec2& xi) {
 }  // namespace
 
 AsosTracer::AsosTracer(const RayTracer& tracer, const CameraModel& camera,
-                       const AsosSettings& sceneSettings, std::uint64_t seed)
-    : tracer_(tracer), scene_(tracer.scene()), camera_(camera), seed_(seed) {
+                       const AsosSettings& sceneSettings, std::uint64_t seed, bool patternEdges)
+    : tracer_(tracer), scene_(tracer.scene()), camera_(camera), seed_(seed),
+      patternEdges_(patternEdges) {
     const SceneDescription& d = scene_.description();
     objectSettings_.reserve(d.objects.size());
     selfShadowing_.reserve(d.objects.size());
+    patterned_.reserve(d.objects.size());
     for (const Object& o : d.objects) {
         objectSettings_.push_back(sceneSettings.refinedBy(o.asos));
         selfShadowing_.push_back(canShadowItself(o.shape) ? 1 : 0);
+        patterned_.push_back(hasPattern(textureOf(o).pigment) ? 1 : 0);
     }
     for (const Light& l : d.lights) lightSettings_.push_back(sceneSettings.refinedBy(l.asos));
 
@@ -151,7 +154,13 @@ Vec3 AsosTracer::shadeLeaf(const ImageSquare& square, int level, std::uint32_t i
             query.lightIndex = static_cast<std::size_t>(p.lightIndex);
             query.settings = lightSettings_[static_cast<std::size_t>(p.lightIndex)];
             query.shadedObject = static_cast<std::uint32_t>(hit->objectIndex);
-            query.shadedCanSelfShadow = selfShadowing_[query.shadedObject] != 0;
+            // An open tube is the boundary of a convex solid: its outer side,
+            // like any convex surface, shadows itself only through N.L <= 0.
+            // Only its inner side, seen through an opening (the normal
+            // turned toward the viewer points inward), can be in its own
+            // shadow.
+            query.shadedCanSelfShadow = selfShadowing_[query.shadedObject] != 0 &&
+                                        glm::dot(p.normal, hit->normal) < 0.0;
             query.level = level;
             query.ix = ix;
             query.iy = iy;
@@ -175,28 +184,40 @@ PixelResult AsosTracer::trace(int px, int py, AsosScratch& s, RenderCounters& c,
     std::uint32_t pyrays = 0;
     int deepest = 0, leaves = 0;
 
-    // A resolved pyray: nothing in it (background), or one Full object in
-    // front of everything else, which its central ray must hit ("additional
-    // eye rays through this pixel can only strike this object").
-    auto shadeResolved = [&](const EyePyray& pyray, std::uint32_t ix, std::uint32_t iy,
-                             const Item* front) {
-        ++leaves;
-        if (!front) return background;
+    // The central ray of a pyray resolved by one Full object in front of
+    // everything else must hit that object ("additional eye rays through
+    // this pixel can only strike this object").
+    auto frontHit = [&](const EyePyray& pyray, const Item& front) {
         const Ray& ray = pyray.centralRay();
         ++c.eyeRays;
         ++c.rayTests;
         std::optional<SurfaceHit> hit =
-            scene_.primitive(front->object).intersect(ray, kPovMinIsectDepth, kInfinity);
-        if (hit) hit->objectIndex = static_cast<int>(front->object);
+            scene_.primitive(front.object).intersect(ray, kPovMinIsectDepth, kInfinity);
+        if (hit) hit->objectIndex = static_cast<int>(front.object);
         else hit = tracer_.nearestHit(ray);  // rounding at the cone's rim: ask the scene
-        return shadeLeaf(pyray.square(), pyray.level(), ix, iy, ray, hit, rng, s, c);
+        return hit;
     };
-    // Classifies a fresh pyray's objects items[first, end): returns the
-    // object that resolves it, or null with `resolved` false when marginal.
-    auto resolve = [](const std::vector<Item>& items, std::uint32_t first, std::uint32_t count,
-                      bool& resolved) -> const Item* {
-        resolved = count == 0 || (count == 1 && items[first].cls.coverage == Coverage::Full);
-        return count == 1 && resolved ? &items[first] : nullptr;
+    // Whether the front object's pigment pattern may change inside the
+    // pyray's footprint (an edge of the texture rather than of the object).
+    auto patternEdge = [&](const EyePyray& pyray, const Item& front,
+                           const std::optional<SurfaceHit>& hit) {
+        if (!patternEdges_ || !patterned_[front.object] || !hit ||
+            hit->objectIndex != static_cast<int>(front.object))
+            return PatternChange{};
+        const Footprint footprint(camera_, pyray.square(), hit->position, hit->normal, hit->t);
+        return pigmentMayChange(textureOf(scene_.object(front.object)).pigment, footprint);
+    };
+    // How a fresh pyray's objects items[first, first + count) decide it:
+    // resolved with no object (background) or one in front, or marginal.
+    struct Resolution {
+        bool resolved;
+        const Item* front;
+    };
+    auto resolve = [](const std::vector<Item>& items, std::uint32_t first, std::uint32_t count) {
+        if (count == 0) return Resolution{true, nullptr};
+        if (count == 1 && items[first].cls.coverage == Coverage::Full)
+            return Resolution{true, &items[first]};
+        return Resolution{false, nullptr};
     };
 
     // Detection phase: the pixel's list.
@@ -219,23 +240,35 @@ PixelResult AsosTracer::trace(int px, int py, AsosScratch& s, RenderCounters& c,
     else s.eyeCandidates.visit(scene_, root.cone(), detect);
     sortByObject(rootItems.data(), rootItems.data() + rootItems.size());
     const std::uint32_t rootCount = pruneHidden(rootItems, 0);
-    bool resolved = false;
-    const Item* front = resolve(rootItems, 0, rootCount, resolved);
+    const auto [resolved, front] = resolve(rootItems, 0, rootCount);
 
     auto finish = [&]() {
         if (report) report->leaves = leaves;
         return PixelResult{color, pyrays, static_cast<std::uint32_t>(deepest)};
     };
-    if (resolved) {
-        color = shadeResolved(root, 0, 0, front);
-        return finish();
-    }
-
     s.hits[0].assign(rootCount, 0);
     s.nodes[0].clear();
-    s.nodes[0].push_back({root, 0, 0, 0, rootCount, std::nullopt});
-    ++c.eyeRays;
-    s.nodes[0][0].hit = nearestInList(root.centralRay(), rootItems, 0, rootCount, s.hits[0].data(), c);
+    if (resolved && !front) {
+        ++leaves;
+        color = background;
+        return finish();
+    }
+    if (resolved) {
+        std::optional<SurfaceHit> hit = frontHit(root, *front);
+        const PatternChange pattern = patternEdge(root, *front, hit);
+        if (!pattern.mayChange) {
+            ++leaves;
+            color = shadeLeaf(root.square(), 0, 0, 0, root.centralRay(), hit, rng, s, c);
+            return finish();
+        }
+        s.hits[0][0] = 1;
+        s.nodes[0].push_back({root, 0, 0, 0, rootCount, std::move(hit), pattern});
+    } else {
+        s.nodes[0].push_back({root, 0, 0, 0, rootCount, std::nullopt, {}});
+        ++c.eyeRays;
+        s.nodes[0][0].hit =
+            nearestInList(root.centralRay(), rootItems, 0, rootCount, s.hits[0].data(), c);
+    }
 
     // Subdivision phase, all marginal pyrays of a level together.
     int cur = 0;
@@ -260,6 +293,12 @@ PixelResult AsosTracer::trace(int px, int py, AsosScratch& s, RenderCounters& c,
                 } else if (overlapsAnother(items, n.first, n.count, i)) {
                     s.tally.add(object, n.hit && n.hit->objectIndex == static_cast<int>(object),
                                 false);
+                } else if (n.pattern.mayChange) {
+                    // in: the K-ray sees the pattern's second colour.
+                    s.tally.add(object,
+                                n.hit && pigmentIndex(textureOf(scene_.object(object)).pigment,
+                                                      n.hit->position) == 1,
+                                n.pattern.singleEdge);
                 } else {
                     continue;
                 }
@@ -353,17 +392,30 @@ PixelResult AsosTracer::trace(int px, int py, AsosScratch& s, RenderCounters& c,
                     if (k.coverage != Coverage::Miss) childItems.push_back({items[i].object, k});
                 }
                 const std::uint32_t count = pruneHidden(childItems, first);
-                bool childResolved = false;
-                const Item* childFront = resolve(childItems, first, count, childResolved);
-                if (childResolved) {
-                    color += childWeight * shadeResolved(child, ix, iy, childFront);
+                const auto [childResolved, childFront] = resolve(childItems, first, count);
+                if (childResolved && !childFront) {
+                    ++leaves;
+                    color += childWeight * background;
                     continue;
                 }
                 childHits.resize(childItems.size(), 0);
+                if (childResolved) {
+                    std::optional<SurfaceHit> hit = frontHit(child, *childFront);
+                    const PatternChange pattern = patternEdge(child, *childFront, hit);
+                    if (!pattern.mayChange) {
+                        ++leaves;
+                        color += childWeight * shadeLeaf(child.square(), childLevel, ix, iy,
+                                                         child.centralRay(), hit, rng, s, c);
+                        continue;
+                    }
+                    childHits[first] = 1;
+                    childNodes.push_back({child, ix, iy, first, count, std::move(hit), pattern});
+                    continue;
+                }
                 ++c.eyeRays;
                 std::optional<SurfaceHit> hit =
                     nearestInList(child.centralRay(), childItems, first, count, childHits.data(), c);
-                childNodes.push_back({child, ix, iy, first, count, std::move(hit)});
+                childNodes.push_back({child, ix, iy, first, count, std::move(hit), {}});
             }
         }
         if (childNodes.empty()) break;

@@ -25,6 +25,7 @@ struct ShadowPyray {
     double centralDistance;
     // No footprint point of the square is nearer the light than this.
     double nearestFootprint;
+    double diameter;  // of the footprint
     bool valid;
 };
 
@@ -54,6 +55,7 @@ ShadowPyray makeShadowPyray(const Vec3& light, const Footprint& footprint,
     double halfAngle = std::atan(widestTangent);
     // Every footprint point lies within `diameter` of a corner.
     p.nearestFootprint = nearestCorner - diameter;
+    p.diameter = diameter;
     if (!footprint.onTangentPlane() && p.nearestFootprint > 0.0) {
         // A cross-section is curved (a cap of the sphere of the hit's depth
         // about the eye): widen by its sagitta as seen from the light.
@@ -139,6 +141,9 @@ double pointLightLitFraction(const Scene& scene, const Footprint& footprint,
     };
     // Whether the shadow ray from the light toward `target` meets one of the
     // occluders items[first, first + count); marks each one it meets.
+    // How far before its footprint point a ray ignores the shaded object
+    // (set below to the footprint's diameter: see selfCone).
+    double selfMargin = 0.0;
     auto rayBlocked = [&](const Vec3& target, const std::vector<ShadowScratch::Item>& items,
                           std::uint32_t first, std::uint32_t count, std::uint8_t* marks) {
         const Vec3 d = target - light;
@@ -151,9 +156,10 @@ double pointLightLitFraction(const Scene& scene, const Footprint& footprint,
             // Without marks to keep, the first occluder decides.
             if (blocked && !marks) break;
             ++counters.rayTests;
-            const bool hit = scene.primitive(items[i].object)
-                                 .intersectAny(ray, kPovShadowTolerance,
-                                               distance - kPovShadowTolerance);
+            const double end = distance - kPovShadowTolerance -
+                               (items[i].object == q.shadedObject ? selfMargin : 0.0);
+            const bool hit = end > kPovShadowTolerance &&
+                             scene.primitive(items[i].object).intersectAny(ray, kPovShadowTolerance, end);
             if (marks) marks[i] = hit;
             blocked = blocked || hit;
         }
@@ -193,12 +199,26 @@ double pointLightLitFraction(const Scene& scene, const Footprint& footprint,
     std::vector<ShadowScratch::Item>& rootItems = s.items[0];
     rootItems.clear();
     const PreparedCone rootCone(root.cone);
+    // The shaded object, where it may shadow itself, meets every ray at the
+    // footprint, and a curved surface does so a little before the
+    // footprint's tangent plane: it is asked only about the part of the cone
+    // that ends a footprint's diameter before the nearest footprint point.
+    // It shadows the footprint from farther away (the rim of an open tube),
+    // and blocking nearer than that is the surface curving at the footprint.
+    auto selfCone = [&](const ShadowPyray& p) {
+        Cone cone = p.cone;
+        cone.tMax = p.nearestFootprint - p.diameter - kPovShadowTolerance;
+        return PreparedCone(cone);
+    };
+    const PreparedCone rootSelfCone = selfCone(root);
+    selfMargin = root.diameter;
     if (s.candidates.size() <= q.lightIndex) s.candidates.resize(q.lightIndex + 1);
     s.candidates[q.lightIndex].visit(scene, root.cone, [&](std::uint32_t object) {
         if (scene.object(object).noShadow) return;
         if (object == q.shadedObject && !q.shadedCanSelfShadow) return;
         ++counters.coneTests;
-        const ConeClass k = scene.primitive(object).classify(rootCone);
+        const ConeClass k =
+            scene.primitive(object).classify(object == q.shadedObject ? rootSelfCone : rootCone);
         if (k.coverage != Coverage::Miss) rootItems.push_back({object, k});
     });
     sortByObject(rootItems.data(), rootItems.data() + rootItems.size());
@@ -282,9 +302,12 @@ double pointLightLitFraction(const Scene& scene, const Footprint& footprint,
                 }
                 const auto first = static_cast<std::uint32_t>(childItems.size());
                 const PreparedCone cone(child.cone);
+                const PreparedCone childSelfCone = selfCone(child);
                 for (std::uint32_t i = n.first; i < n.first + n.count; ++i) {
                     ++counters.coneTests;
-                    const ConeClass k = scene.primitive(items[i].object).classify(cone);
+                    const ConeClass k = scene.primitive(items[i].object)
+                                            .classify(items[i].object == q.shadedObject ? childSelfCone
+                                                                                        : cone);
                     if (k.coverage != Coverage::Miss) childItems.push_back({items[i].object, k});
                 }
                 const auto count = static_cast<std::uint32_t>(childItems.size()) - first;

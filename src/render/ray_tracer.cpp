@@ -35,7 +35,10 @@ std::span<const LightSample> RayTracer::areaLightSamples(const ShadingPoint& poi
     q.point = point.position;
     q.normal = point.normal;
     q.shadedObject = static_cast<std::uint32_t>(point.hit->objectIndex);
-    q.shadedCanSelfShadow = canShadowItself(scene_.object(q.shadedObject).shape);
+    // As for point lights: only the inner side of an open tube (its normal
+    // turned toward the viewer points inward) can be in its own shadow.
+    q.shadedCanSelfShadow = canShadowItself(scene_.object(q.shadedObject).shape) &&
+                            glm::dot(point.normal, point.hit->normal) < 0.0;
     q.rng = context.rng;
     q.key = context.key;
     q.footprint = context.footprint;

@@ -175,7 +175,7 @@ RenderOutput render(const Scene& scene, const RenderSettings& settings) {
     if (settings.method == RenderMethod::Asos) {
         const AsosTracer asos(tracer, camera,
                               sceneAsosSettings(scene.description().globals, settings.asos),
-                              settings.seed);
+                              settings.seed, settings.patternEdges);
         // Per-thread buffers: no pixel allocates once they have grown.
         tbb::enumerable_thread_specific<AsosScratch> scratch;
         r = renderTiles(settings.width, settings.height, options,

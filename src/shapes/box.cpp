@@ -86,18 +86,80 @@ bool Box::intersectAny(const Ray& ray, double tMin, double tMax) const {
 }
 
 ConeClass Box::classify(const LocalCone& cone) const {
-    const BoundingSphere ball = boundingSphere();
-    if (ballOutside(cone, ball.center, ball.radius)) return missClass();
     const Vec3& p = cone.apex;
+    const Vec3& a = cone.axis;
+    const double c = cone.cosHalf, s = cone.sinHalf;
     // Positional tolerance: within it the apex counts as on the surface.
-    const double tol = 1e-14 * (std::abs(p.x) + std::abs(p.y) + std::abs(p.z) +
-                                glm::length(ball.center) + ball.radius) +
+    const double tol = 1e-14 * (std::abs(p.x) + std::abs(p.y) + std::abs(p.z) + std::abs(lo_.x) +
+                                std::abs(lo_.y) + std::abs(lo_.z) + std::abs(hi_.x) +
+                                std::abs(hi_.y) + std::abs(hi_.z)) +
                        cone.absTol;
     bool outside = false, inside = true;
+    double far2 = 0.0;
     for (int i = 0; i < 3; ++i) {
         if (p[i] < lo_[i] - tol || p[i] > hi_[i] + tol) outside = true;
         if (!(p[i] > lo_[i] + tol && p[i] < hi_[i] - tol)) inside = false;
+        far2 += std::max(sq(p[i] - lo_[i]), sq(p[i] - hi_[i]));
     }
+    if (outside && c > 0.0) {
+        // Fast path. Up to the farthest corner, dFar, the cone lies within
+        // r = dFar sin(theta) of its axis: if the axis misses the box grown
+        // by r, so does the cone, and no hit is nearer than the grown box.
+        // If the footprint on the face the axis enters through lies inside
+        // that face, every ray enters there.
+        const double dFar = std::sqrt(far2);
+        const double r = dFar * s + tol;
+        double enter = -kInfinity, exit = kInfinity, grownEnter = -kInfinity, grownExit = kInfinity;
+        int enterAxis = -1;
+        bool hits = true;
+        for (int i = 0; i < 3; ++i) {
+            if (a[i] == 0.0) {
+                if (p[i] < lo_[i] - r || p[i] > hi_[i] + r) return missClass();
+                hits = hits && p[i] >= lo_[i] && p[i] <= hi_[i];
+                continue;
+            }
+            const double inv = 1.0 / a[i];
+            double t0 = (lo_[i] - p[i]) * inv, t1 = (hi_[i] - p[i]) * inv;
+            if (t0 > t1) std::swap(t0, t1);
+            const double spread = r * std::abs(inv);
+            grownEnter = std::max(grownEnter, t0 - spread);
+            grownExit = std::min(grownExit, t1 + spread);
+            if (t0 > enter) {
+                enter = t0;
+                enterAxis = i;
+            }
+            exit = std::min(exit, t1);
+        }
+        if (grownEnter > grownExit || grownExit < 0.0 || grownEnter > dFar) return missClass();
+        if (cone.surelyAfter(std::max(0.0, grownEnter)) || cone.surelyBefore(dFar))
+            return missClass();
+        if (hits && enterAxis >= 0 && enter <= exit && enter >= 0.0) {
+            const int e = enterAxis, j = (e + 1) % 3, k = (e + 2) % 3;
+            const double an = std::abs(a[e]);
+            const double g2 = a[j] * a[j] + a[k] * a[k];
+            const double kk = c * c - g2;
+            const double face = p[e] > hi_[e] ? hi_[e] : lo_[e];
+            if (kk > 1e-6 && (p[e] > hi_[e] || p[e] < lo_[e])) {
+                // The footprint ellipse lies within `radius` of the axis'
+                // entry point (see Polygon::classify).
+                const double g = std::sqrt(g2), depth = std::abs(face - p[e]);
+                const double radius = depth * s / kk * (c + g * s / an) * (1.0 + 1e-12) + tol;
+                const double qj = p[j] + enter * a[j], qk = p[k] + enter * a[k];
+                if (qj - radius > lo_[j] && qj + radius < hi_[j] && qk - radius > lo_[k] &&
+                    qk + radius < hi_[k]) {
+                    const double lo = an * c - g * s;
+                    const double hi = angleWithin(an, g, c, s) ? 1.0 : an * c + g * s;
+                    const double tNear = depth / hi, tFar = depth / lo;
+                    if (cone.surelyWithin(tNear, tFar)) return fullClass(tNear, tFar);
+                    if (cone.surelyAfter(tNear)) return missClass();
+                    return marginalClass(cone, tNear, tNear >= cone.tMinInner ? tFar : dFar);
+                }
+            }
+        }
+        return classifyOutside(cone);
+    }
+    const BoundingSphere ball = boundingSphere();
+    if (ballOutside(cone, ball.center, ball.radius)) return missClass();
     if (outside) return classifyOutside(cone);
     if (inside) return classifyInside(cone);
     return classifyOnSurface(cone, tol);
@@ -124,38 +186,24 @@ ConeClass Box::classifyOutside(const LocalCone& cone) const {
     const double frontFar = std::sqrt(frontFar2);
     const double firstFar = dNear >= cone.tMinInner ? frontFar : dFar;
 
-    // Quick Full: the footprint on the face the axis enters through lies
-    // inside that face, so every ray enters there.
     const Slab axisSlab = slab(lo_, hi_, p, cone.axis);
     const bool axisHits = axisSlab.hit && axisSlab.tExit >= 0.0;
-    if (axisHits && axisSlab.enterAxis >= 0 && axisSlab.tEnter >= 0.0) {
-        const int a = axisSlab.enterAxis;
-        const double face = front[a] > 0 ? hi_[a] : lo_[a];
-        const Footprint f = footprintOnPlane(cone, a, face);
-        if (f.bounded) {
-            const int i = (a + 1) % 3, j = (a + 2) % 3;
-            const Vec2 half = footprintHalfWidths(f);
-            const double slack =
-                1e-12 * (f.a + std::abs(f.center.x) + std::abs(f.center.y)) + cone.absTol;
-            if (f.center.x - half.x > lo_[i] + slack && f.center.x + half.x < hi_[i] - slack &&
-                f.center.y - half.y > lo_[j] + slack && f.center.y + half.y < hi_[j] - slack &&
-                front[a] != 0) {
-                if (cone.surelyWithin(f.tNear, f.tFar)) return fullClass(f.tNear, f.tFar);
-                return marginalClass(cone, f.tNear, f.tNear >= cone.tMinInner ? f.tFar : dFar);
-            }
-        }
-    }
 
     // The silhouette: edges between a face turned to the apex and one turned
     // away (paper: "Detection Phase"; the boundary seen from the apex).
     ConePoint corner[8];
-    for (int c = 0; c < 8; ++c) {
-        const Vec3 x((c & 1) ? hi_.x : lo_.x, (c & 2) ? hi_.y : lo_.y, (c & 4) ? hi_.z : lo_.z);
-        corner[c] = conePoint(cone, x - p);
-    }
+    unsigned known = 0;  // corners computed so far (only silhouette ends are needed)
+    auto cornerAt = [&](int c) -> const ConePoint& {
+        if (!(known & (1u << c))) {
+            const Vec3 x((c & 1) ? hi_.x : lo_.x, (c & 2) ? hi_.y : lo_.y, (c & 4) ? hi_.z : lo_.z);
+            corner[c] = conePoint(cone, x - p);
+            known |= 1u << c;
+        }
+        return corner[c];
+    };
     int meeting = 0;
     bool endpointInside = false;
-    for (int k = 0; k < 3; ++k) {  // edges along axis k
+    for (int k = 0; k < 3 && meeting < 2; ++k) {  // edges along axis k; two meeting settle it
         const int i = (k + 1) % 3, j = (k + 2) % 3;
         for (int si = 0; si < 2; ++si) {
             for (int sj = 0; sj < 2; ++sj) {
@@ -163,8 +211,8 @@ ConeClass Box::classifyOutside(const LocalCone& cone) const {
                 const bool frontJ = front[j] == (sj ? 1 : -1);
                 if (frontI == frontJ) continue;
                 const int base = (si << i) | (sj << j);
-                const ConePoint& a = corner[base];
-                const ConePoint& b = corner[base | (1 << k)];
+                const ConePoint& a = cornerAt(base);
+                const ConePoint& b = cornerAt(base | (1 << k));
                 if (segmentMeetsCone(cone, a, b)) {
                     ++meeting;
                     endpointInside = endpointInside || a.inside || b.inside;

@@ -37,11 +37,11 @@ double ellipseMinDistance(double a, double b, double y0, double y1) {
     const EllipseRoot r = newtonEllipse(a, b, y0, y1, start);
     if (!r.converged) return 0.0;  // unsure: report the point as close
     const double x0 = a * a * y0 / (r.t + a * a), x1 = b * b * y1 / (r.t + b * b);
-    return std::hypot(y0 - x0, y1 - x1);
+    return length2d(y0 - x0, y1 - x1);
 }
 
 double ellipseMaxDistance(double a, double b, double y0, double y1) {
-    if (a == b) return std::hypot(y0, y1) + a;
+    if (a == b) return length2d(y0, y1) + a;
     if (y0 == 0.0) {
         // Farthest from (0, y1): maximise a^2 + y1^2 + 2 b y1 u - (a^2 - b^2) u^2
         // over u = -sin(phi) in [-1, 1].
@@ -52,9 +52,9 @@ double ellipseMaxDistance(double a, double b, double y0, double y1) {
     }
     // The root below -a^2, approached from the right where F >= 0.
     const EllipseRoot r = newtonEllipse(a, b, y0, y1, -a * a - a * y0);
-    if (!r.converged) return std::hypot(y0, y1) + a;  // a bound
+    if (!r.converged) return length2d(y0, y1) + a;  // a bound
     const double x0 = a * a * y0 / (r.t + a * a), x1 = b * b * y1 / (r.t + b * b);
-    return std::hypot(y0 - x0, y1 - x1);
+    return length2d(y0 - x0, y1 - x1);
 }
 
 DiscRelation footprintVsDisc(const Footprint& f, const Vec2& center, double rho, double absTol) {
@@ -69,6 +69,17 @@ DiscRelation footprintVsDisc(const Footprint& f, const Vec2& center, double rho,
     // |y - q|^2 <= |q|^2 + 2 S + a^2 over the ellipse (S its support along q).
     const double maxBound = std::sqrt(qq + 2.0 * support + a * a);
     if (maxBound + tol < rho) return DiscRelation::EllipseInside;
+    // Surely crossing when one of the centre and the four vertices of the
+    // ellipse is inside the disc and another outside.
+    const double r2 = rho * rho, slack2 = 2.0 * rho * tol + tol * tol;
+    const double probes[5] = {qq, (q1 - a) * (q1 - a) + q2 * q2, (q1 + a) * (q1 + a) + q2 * q2,
+                              q1 * q1 + (q2 - b) * (q2 - b), q1 * q1 + (q2 + b) * (q2 + b)};
+    bool in = false, out = false;
+    for (const double d2 : probes) {
+        in = in || d2 < r2 - slack2;
+        out = out || d2 > r2 + slack2;
+    }
+    if (in && out) return DiscRelation::Crossing;
     const double u = q1 / a, v = q2 / b;
     if (u * u + v * v > 1.0) {
         // The disc centre is outside the ellipse: the distance to it is at
@@ -86,6 +97,26 @@ bool circleMayMeetCone(const LocalCone& cone, double zc, double rho, const Arc& 
         // A point: in the cone or not.
         return coneDistance(cone, conePoint(cone, Vec3(0.0, 0.0, zc) - cone.apex)) <= cone.absTol;
     }
+    const Vec3& p = cone.apex;
+    const Vec3& axis = cone.axis;
+    const double c = cone.cosHalf, s = cone.sinHalf;
+    const double h = zc - p.z;
+    if (c > 0.0 && h * axis.z > 0.0) {
+        // Quick: the footprint lies within `radius` of the axis' crossing q
+        // (see Polygon::classify); a circle farther from q, or wholly around
+        // that disc, does not meet it.
+        const double an = std::abs(axis.z);
+        const double g2 = axis.x * axis.x + axis.y * axis.y;
+        const double k = c * c - g2;
+        if (k > 1e-6) {
+            const double tAxis = h / axis.z;
+            const double qx = p.x + tAxis * axis.x, qy = p.y + tAxis * axis.y;
+            const double radius =
+                std::abs(h) * s / k * (c + std::sqrt(g2) * s / an) * (1.0 + 1e-12) + cone.absTol;
+            const double q = length2d(qx, qy);
+            if (q + radius < rho || q - radius > rho) return false;
+        }
+    }
     const Footprint f = footprintOnZPlane(cone, zc);
     if (!f.bounded) return !ballOutsideAngular(cone, Vec3(0.0, 0.0, zc), rho);
     if (footprintVsDisc(f, Vec2(0.0), rho, cone.absTol) != DiscRelation::Crossing) return false;
@@ -95,6 +126,30 @@ bool circleMayMeetCone(const LocalCone& cone, double zc, double rho, const Arc& 
         if (low > arc.kappa + 1e-12 * (std::abs(arc.kappa) + rho + f.a) + cone.absTol) return false;
     }
     return true;
+}
+
+}  // namespace asos::conegeom
+
+namespace asos::conegeom {
+
+bool discMayMeetCone(const LocalCone& cone, double zc, double rho) {
+    const Vec3& p = cone.apex;
+    const Vec3& axis = cone.axis;
+    const double c = cone.cosHalf, s = cone.sinHalf;
+    const double h = zc - p.z;
+    if (c > 0.0 && h * axis.z > 0.0) {
+        const double an = std::abs(axis.z);
+        const double g2 = axis.x * axis.x + axis.y * axis.y;
+        const double k = c * c - g2;
+        if (k > 1e-6) {
+            // The footprint within `radius` of the axis' crossing q.
+            const double tAxis = h / axis.z;
+            const double radius =
+                std::abs(h) * s / k * (c + std::sqrt(g2) * s / an) * (1.0 + 1e-12) + cone.absTol;
+            return length2d(p.x + tAxis * axis.x, p.y + tAxis * axis.y) - radius <= rho;
+        }
+    }
+    return !ballOutsideAngular(cone, Vec3(0.0, 0.0, zc), rho);
 }
 
 }  // namespace asos::conegeom

@@ -13,13 +13,6 @@ namespace {
 
 double sq(double x) { return x * x; }
 
-double segmentDistance(Vec2 p, Vec2 a, Vec2 b) {
-    const Vec2 e = b - a;
-    const double ee = glm::dot(e, e);
-    const double t = ee > 0.0 ? std::clamp(glm::dot(p - a, e) / ee, 0.0, 1.0) : 0.0;
-    return glm::length(p - (a + t * e));
-}
-
 // The real roots of A t^2 + 2 B t + C (A may be 0); returns how many.
 int quadraticRoots(double a, double b, double c, double roots[2]) {
     if (a == 0.0) {
@@ -42,18 +35,22 @@ int quadraticRoots(double a, double b, double c, double roots[2]) {
 // nearest a centre on the axis: the tip of the side's cone when that is near
 // (rays grazing a tip would otherwise lose half their digits to the double
 // root there), else the middle of the axis (rays from far away).
-Frustum::SideQuadratic Frustum::sideQuadratic(const Vec3& origin, const Vec3& d) const {
+Frustum::SideQuadratic Frustum::sideQuadratic(const Profile& f, const Vec3& origin,
+                                               const Vec3& d) {
     SideQuadratic q;
-    q.centerZ = 0.5 * length_;
-    if (slope_ != 0.0) {
-        const double tipZ = -r0_ / slope_;
-        if (std::abs(tipZ - 0.5 * length_) <= 2.0 * length_) q.centerZ = tipZ;
+    const double mid = 0.5 * (f.zLo + f.zHi);
+    q.centerZ = mid;
+    if (f.slope != 0.0) {
+        const double tipZ = -f.r0 / f.slope;
+        if (std::abs(tipZ - mid) <= 2.0 * (f.zHi - f.zLo)) q.centerZ = tipZ;
     }
     const Vec3 center(0.0, 0.0, q.centerZ);
-    q.shift = glm::dot(center - origin, d) / glm::dot(d, d);
+    const double dd = glm::dot(d, d);
+    q.shift = glm::dot(center - origin, d);
+    if (dd != 1.0) q.shift /= dd;
     q.o = origin + q.shift * d - center;
-    const double k = slope_;
-    const double rz = radiusAt(q.centerZ) + k * q.o.z;
+    const double k = f.slope;
+    const double rz = f.r0 + k * (q.centerZ + q.o.z);
     q.a = d.x * d.x + d.y * d.y - k * k * d.z * d.z;
     q.b = q.o.x * d.x + q.o.y * d.y - k * d.z * rz;
     q.c = q.o.x * q.o.x + q.o.y * q.o.y - rz * rz;
@@ -63,7 +60,8 @@ Frustum::SideQuadratic Frustum::sideQuadratic(const Vec3& origin, const Vec3& d)
 
 Frustum::Frustum(double r0, double r1, double length, bool capped)
     : r0_(r0), r1_(r1), length_(length), slope_((r1 - r0) / length),
-      slant_(std::sqrt(1.0 + sq((r1 - r0) / length))), capped_(capped) {
+      slant_(std::sqrt(1.0 + sq((r1 - r0) / length))), invSlant_(1.0 / slant_),
+      invSide2_(1.0 / (sq(r1 - r0) + length * length)), capped_(capped) {
     // The smallest sphere centred on the axis holding both rims.
     const double zc = std::clamp((r1 * r1 - r0 * r0 + length * length) / (2.0 * length), 0.0, length);
     ball_ = {Vec3(0.0, 0.0, zc), std::sqrt(std::max(r0 * r0 + zc * zc, r1 * r1 + sq(length - zc)))};
@@ -75,7 +73,7 @@ Bounds3 Frustum::worldBounds(const Mat3& m, const Vec3& offset) const {
     for (int end = 0; end < 2; ++end) {
         const Vec3 c = m * Vec3(0.0, 0.0, end ? length_ : 0.0) + offset;
         Vec3 half;
-        for (int i = 0; i < 3; ++i) half[i] = radii[end] * std::hypot(m[0][i], m[1][i]);
+        for (int i = 0; i < 3; ++i) half[i] = radii[end] * length2d(m[0][i], m[1][i]);
         b.extend(Bounds3{c - half, c + half});
     }
     return b;
@@ -99,7 +97,7 @@ std::optional<LocalHit> Frustum::intersect(const Ray& ray, double tMin, double t
         }
     } else {
         // Open: the side alone, between the rims.
-        const SideQuadratic q = sideQuadratic(ray.origin, ray.dir);
+        const SideQuadratic q = sideQuadratic(profile(), ray.origin, ray.dir);
         t = kInfinity;
         for (int i = 0; i < q.count; ++i) {
             const double z = q.centerZ + q.o.z + q.roots[i] * ray.dir.z;
@@ -120,16 +118,17 @@ std::optional<LocalHit> Frustum::intersect(const Ray& ray, double tMin, double t
     return LocalHit{t, point, normal};
 }
 
-Frustum::Interval Frustum::solidInterval(const Vec3& origin, const Vec3& d) const {
-    const SideQuadratic side = sideQuadratic(origin, d);
+Frustum::Interval Frustum::solidInterval(const Profile& f, const Vec3& origin, const Vec3& d) {
+    const SideQuadratic side = sideQuadratic(f, origin, d);
     const double shift = side.shift;
     const double oz = side.centerZ + side.o.z;  // the line's z at the shifted origin
     double lo = -kInfinity, hi = kInfinity;
     int loPart = 0, hiPart = 0;
     if (d.z == 0.0) {
-        if (oz < 0.0 || oz > length_) return {};
+        if (oz < f.zLo || oz > f.zHi) return {};
     } else {
-        const double a = -oz / d.z, b = (length_ - oz) / d.z;
+        const double inv = 1.0 / d.z;
+        const double a = (f.zLo - oz) * inv, b = (f.zHi - oz) * inv;
         lo = std::min(a, b);
         hi = std::max(a, b);
         loPart = d.z > 0.0 ? 1 : 2;
@@ -173,7 +172,7 @@ Frustum::Interval Frustum::solidInterval(const Vec3& origin, const Vec3& d) cons
 }
 
 bool Frustum::sideHitAhead(const Vec3& origin, const Vec3& d) const {
-    const SideQuadratic q = sideQuadratic(origin, d);
+    const SideQuadratic q = sideQuadratic(profile(), origin, d);
     for (int i = 0; i < q.count; ++i) {
         const double z = q.centerZ + q.o.z + q.roots[i] * d.z;
         if (z >= 0.0 && z <= length_ && q.shift + q.roots[i] >= 0.0) return true;
@@ -182,40 +181,45 @@ bool Frustum::sideHitAhead(const Vec3& origin, const Vec3& d) const {
 }
 
 double Frustum::distanceTo(double rho, double z) const {
-    const Vec2 p(rho, z);
-    const double side = segmentDistance(p, {r0_, 0.0}, {r1_, length_});
-    if (!capped_) return side;
-    if (z >= 0.0 && z <= length_ && rho <= radiusAt(z)) return 0.0;
-    return std::min({side, segmentDistance(p, {0.0, 0.0}, {r0_, 0.0}),
-                     segmentDistance(p, {0.0, length_}, {r1_, length_})});
+    // The nearest of the side segment (r0, 0)-(r1, length) and, when capped,
+    // the two cap segments from the axis, in the meridian half-plane.
+    const double dr = r1_ - r0_;
+    const double u = std::clamp(((rho - r0_) * dr + z * length_) * invSide2_, 0.0, 1.0);
+    double best = sq(rho - (r0_ + u * dr)) + sq(z - u * length_);
+    if (capped_) {
+        if (z >= 0.0 && z <= length_ && rho <= radiusAt(z)) return 0.0;
+        best = std::min({best, sq(std::max(rho - r0_, 0.0)) + sq(z),
+                         sq(std::max(rho - r1_, 0.0)) + sq(z - length_)});
+    }
+    return std::sqrt(best);
 }
 
 double Frustum::depthInside(double rho, double z) const {
     // The boundary lies on the planes z = 0, z = length and the side's cone.
-    return std::min({z, length_ - z, (radiusAt(z) - rho) / slant_});
+    return std::min({z, length_ - z, (radiusAt(z) - rho) * invSlant_});
 }
 
 ConeClass Frustum::classify(const LocalCone& cone) const {
     if (empty()) return missClass();
     if (ballOutside(cone, ball_.center, ball_.radius)) return missClass();
     const Vec3& p = cone.apex;
-    const double rho = std::hypot(p.x, p.y);
+    const double rho = length2d(p.x, p.y);
     // Every point of the object is within dFar: the farthest point is on a rim.
-    const double dFar =
-        std::sqrt(std::max(sq(rho + r0_) + sq(p.z), sq(rho + r1_) + sq(p.z - length_)));
+    const double far2 = std::max(sq(rho + r0_) + sq(p.z), sq(rho + r1_) + sq(p.z - length_));
     const double tol =
         1e-14 * (std::abs(p.x) + std::abs(p.y) + std::abs(p.z) + ball_.radius + ball_.center.z) +
         cone.absTol;
-    const double sideGap = (rho - radiusAt(p.z)) / slant_;
+    const double rp = radiusAt(p.z);
+    const double sideGap = (rho - rp) * invSlant_;
     const bool nearSide = p.z >= -tol && p.z <= length_ + tol && std::abs(sideGap) <= tol;
     const bool nearBottom = capped_ && std::abs(p.z) <= tol && rho <= r0_ + tol;
     const bool nearTop = capped_ && std::abs(p.z - length_) <= tol && rho <= r1_ + tol;
     if (nearSide || nearBottom || nearTop)
-        return classifyOnSurface(cone, rho, tol, dFar, nearSide, nearBottom, nearTop);
-    const double dNear = distanceTo(rho, p.z);
-    if (capped_ && dNear == 0.0) return classifyInside(cone, rho, dFar);
-    if (cone.surelyAfter(dNear) || cone.surelyBefore(dFar)) return missClass();
-    return classifyOff(cone, rho, tol, dNear, dFar);
+        return classifyOnSurface(cone, rho, tol, std::sqrt(far2), nearSide, nearBottom, nearTop);
+    if (capped_ && p.z > 0.0 && p.z < length_ && rho < rp)
+        return classifyInside(cone, rho, std::sqrt(far2));
+    if (cone.tMinOuter > 0.0 && far2 < cone.tMinOuter * cone.tMinOuter) return missClass();
+    return classifyOff(cone, rho, tol, far2);
 }
 
 ConeClass Frustum::classifyInside(const LocalCone& cone, double rho, double dFar) const {
@@ -246,47 +250,60 @@ ConeClass Frustum::classifyOnSurface(const LocalCone& cone, double rho, double t
     return marginalClass(cone, cone.tMin, dFar + tol);
 }
 
-ConeClass Frustum::classifyOff(const LocalCone& cone, double rho, double tol, double dNear,
-                               double dFar) const {
+ConeClass Frustum::classifyOff(const LocalCone& cone, double rho, double tol, double far2) const {
     const Vec3& p = cone.apex;
     const double c = cone.cosHalf, s = cone.sinHalf;
     const double rp = radiusAt(p.z);  // the side's radius at the apex's height (signed)
-    const bool facesBottom = capped_ && r0_ > 0.0 && p.z < 0.0;
-    const bool facesTop = capped_ && r1_ > 0.0 && p.z > length_;
-    // How deep a first hit can be: rays enter through a face turned to the
-    // apex. On a side generator turned to it (P.u > rp), the squared
-    // distance at height z is at most rho^2 - 2 r(z) rp + r(z)^2 + (z - p.z)^2,
-    // largest at an end; a cap is within its far rim point.
-    double frontFar = dFar;
-    if (capped_) {
-        double far2 = 0.0;
-        for (const double z : {0.0, length_})
-            far2 = std::max(far2, rho * rho - 2.0 * radiusAt(z) * rp + sq(radiusAt(z)) + sq(z - p.z));
-        if (facesBottom) far2 = std::max(far2, sq(rho + r0_) + sq(p.z));
-        if (facesTop) far2 = std::max(far2, sq(rho + r1_) + sq(p.z - length_));
-        frontFar = std::min(dFar, std::sqrt(far2));
-    }
-    const double firstFar = dNear >= cone.tMinInner ? frontFar : dFar;
+    const bool facesBottom = r0_ > 0.0 && p.z < 0.0;  // the cap's side of its plane
+    const bool facesTop = r1_ > 0.0 && p.z > length_;
+    // No hit is nearer than the solid.
+    const double dNear = distanceTo(rho, p.z);
+    if (cone.surelyAfter(dNear)) return missClass();
 
-    // Quick Full: a ball inside the solid around the axis' chord that every
-    // ray of the cone passes through.
+    // Fast path: a capped solid is hit by every ray that passes through a
+    // ball inside it. One around the middle of the axis' chord, as deep as
+    // that point, holds every ray when tm sin(theta) is smaller, and each
+    // ray enters the solid no later than the ball, by tm - sqrt(depth^2 -
+    // (tm sin(theta))^2).
     Interval axisChord;
     if (capped_) {
         axisChord = solidInterval(p, cone.axis);
-        if (axisChord.hit && axisChord.exit >= 0.0 && c > 0.0) {
+        if (c > 0.0 && axisChord.hit && axisChord.exit >= 0.0) {
             const double tm = 0.5 * (std::max(axisChord.enter, 0.0) + axisChord.exit);
             const Vec3 q = p + tm * cone.axis;
-            const double depth = depthInside(std::hypot(q.x, q.y), q.z);
-            if (tm * s < depth - tol) {
-                const double tFar = std::min(frontFar, tm + depth);
+            const double depth = depthInside(length2d(q.x, q.y), q.z);
+            const double spread = tm * s;
+            if (spread < depth - tol) {
+                const double tFar = tm - std::sqrt((depth - spread) * (depth + spread));
                 if (cone.surelyWithin(dNear, tFar)) return fullClass(dNear, tFar);
             }
         }
     }
+    const double dFar = std::sqrt(far2);
+    // Depths of first hits: rays enter a capped solid through a face turned
+    // to the apex: on a side generator turned to it (P.u > rp) the squared
+    // distance at height z is at most rho^2 - 2 r(z) rp + r(z)^2 + (z - p.z)^2,
+    // largest at an end; a cap is within its far rim point.
+    double frontFar = dFar;
+    if (capped_) {
+        double front2 = 0.0;
+        for (const double z : {0.0, length_})
+            front2 = std::max(front2, rho * rho - 2.0 * radiusAt(z) * rp + sq(radiusAt(z)) + sq(z - p.z));
+        if (facesBottom) front2 = std::max(front2, sq(rho + r0_) + sq(p.z));
+        if (facesTop) front2 = std::max(front2, sq(rho + r1_) + sq(p.z - length_));
+        frontFar = std::sqrt(front2);
+    }
+    const double firstFar = dNear >= cone.tMinInner ? frontFar : dFar;
+    // Up to dFar the cone lies within r = dFar sin(theta) of its axis: if the
+    // axis misses the solid grown by r, so does the cone.
+    if (c > 0.0 && !(capped_ && axisChord.hit && axisChord.exit >= 0.0)) {
+        const Interval grownChord = solidInterval(grown(dFar * s + tol), p, cone.axis);
+        if (!grownChord.hit || grownChord.exit < 0.0 || grownChord.enter > dFar) return missClass();
+    }
 
     // The boundary as seen from the apex.
     int meeting = 0;
-    bool straight = true, endpointInside = false;
+    bool endpointInside = false;
     Vec2 er(1.0, 0.0);
     if (rho > 0.0) er = Vec2(p.x, p.y) / rho;
     const double tangency = rho * rho - rp * rp;
@@ -294,6 +311,38 @@ ConeClass Frustum::classifyOff(const LocalCone& cone, double rho, double tol, do
         // The apex is (nearly) on the side's cone extended: the contour
         // generators are ill-conditioned. Be safe.
         return marginalClass(cone, dNear, firstFar);
+    }
+    // The rims. Of a capped solid only the silhouette arcs count: where
+    // exactly one of the cap and the side (turned to the apex where
+    // P.y > rc rp) faces the apex. An open surface keeps those and adds the
+    // edge of what is seen through both openings: a rim counts whole when
+    // the cone also meets the other opening (or whenever the apex is inside
+    // the tube).
+    const bool insideTube = !capped_ && p.z > 0.0 && p.z < length_ && rho < rp;
+    const double rims[2][2] = {{0.0, r0_}, {length_, r1_}};
+    for (int end = 0; end < 2; ++end) {
+        const double zc = rims[end][0], rc = rims[end][1];
+        if (!(rc > 0.0)) continue;
+        bool silhouette = true;
+        Arc arc;  // the whole circle
+        if (!insideTube) {
+            const bool faces = end ? facesTop : facesBottom;
+            if (rho > 0.0) {
+                arc.nu = faces ? er : -er;
+                arc.kappa = (faces ? 1.0 : -1.0) * rc * rp / rho;
+            } else {
+                silhouette = faces != (0.0 > rc * rp);
+            }
+        }
+        // A curved boundary in the cone: Marginal, and not a single edge.
+        if (silhouette && circleMayMeetCone(cone, zc, rc, arc))
+            return marginalClass(cone, dNear, firstFar);
+        if (!capped_ && !insideTube) {
+            const double otherZ = rims[1 - end][0], otherR = rims[1 - end][1];
+            if (otherR > 0.0 && discMayMeetCone(cone, otherZ, otherR) &&
+                circleMayMeetCone(cone, zc, rc))
+                return marginalClass(cone, dNear, firstFar);
+        }
     }
     if (tangency > 0.0) {
         // The two contour generators: where the tangent plane holds the apex.
@@ -309,31 +358,8 @@ ConeClass Frustum::classifyOff(const LocalCone& cone, double rho, double tol, do
             }
         }
     }
-    const double rims[2][2] = {{0.0, r0_}, {length_, r1_}};
-    for (int end = 0; end < 2; ++end) {
-        const double zc = rims[end][0], rc = rims[end][1];
-        if (!(rc > 0.0)) continue;
-        Arc arc;  // the whole circle
-        if (capped_) {
-            // The silhouette arc: where exactly one of the cap and the side
-            // (turned to the apex where P.y > rc rp) faces the apex.
-            const bool faces = end ? facesTop : facesBottom;
-            if (rho > 0.0) {
-                arc.nu = faces ? er : -er;
-                arc.kappa = (faces ? 1.0 : -1.0) * rc * rp / rho;
-            } else {
-                const bool sideFaces = 0.0 > rc * rp;
-                if (faces == sideFaces) continue;  // no silhouette on this rim
-            }
-        }
-        if (circleMayMeetCone(cone, zc, rc, arc)) {
-            ++meeting;
-            straight = false;
-        }
-    }
     if (meeting > 0) {
-        const bool single =
-            straight && meeting == 1 && !endpointInside && cone.surelyWithin(dNear, dFar);
+        const bool single = meeting == 1 && !endpointInside && cone.surelyWithin(dNear, dFar);
         return marginalClass(cone, dNear, firstFar, single);
     }
     // No boundary in the cone: every ray hits or none does, as the axis.

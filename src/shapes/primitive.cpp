@@ -85,8 +85,10 @@ ConeClass Primitive::classify(const PreparedCone& cone) const {
         local.axis = cone.axis;
     } else {
         local.apex = frame_.localFromWorld * cone.apex + frame_.localOffset;
-        local.axis = glm::normalize(frame_.localFromWorld * cone.axis);
+        // localFromWorld is a rotation over worldPerLocal: the image of a unit
+        // axis is unit after the scale.
         worldPerLocal = frame_.worldPerLocal;
+        local.axis = (frame_.localFromWorld * cone.axis) * worldPerLocal;
     }
     local.cosHalf = cone.cosHalf;
     local.sinHalf = cone.sinHalf;

@@ -84,27 +84,26 @@ ConeClass Sphere::classify(const LocalCone& cone) const {
             if (s * sigma < c * dp && (sigma * c + dp * s < 0.0 || dp * c - sigma * s > r))
                 return missClass();
         }
-        const double dist = std::sqrt(d2);
-        const double t2 = d2 - r2, tangent = std::sqrt(t2);
-        const double nearest = t2 / (dist + r);  // dist - r
-        if (cone.surelyAfter(nearest) || cone.surelyBefore(dist + r)) return missClass();
-        const double dp = std::sqrt(p2);
+        const double t2 = d2 - r2;
         // Full: angle(axis, w) + theta <= alpha (the tangent half-angle), i.e.
-        // sin(alpha - beta) = (r sigma - T |perp|) / d2 >= sin(theta).
-        if (c > 0.0 && r * sigma - tangent * dp >= s * d2) {
+        // sin(alpha - beta) = (r sigma - T |perp|) / d2 >= sin(theta), squared.
+        const double lead = r * sigma - s * d2;
+        if (c > 0.0 && lead >= 0.0 && lead * lead >= t2 * p2) {
             // Front hits t(x) = T^2 / (x + sqrt(x^2 - T^2)) decrease in
             // x = w.d, which ranges over [D cos(beta + theta), D cos(beta - theta)].
+            const double dp = std::sqrt(p2);
             const double xLo = sigma * c - dp * s;
-            const double xHi = s * sigma >= c * dp ? dist : sigma * c + dp * s;
+            const double xHi = s * sigma >= c * dp ? std::sqrt(d2) : sigma * c + dp * s;
             auto front = [&](double x) { return t2 / (x + std::sqrt(std::max(0.0, x * x - t2))); };
             const double tNear = front(xHi), tFar = front(xLo);
             if (cone.surelyWithin(tNear, tFar)) return fullClass(tNear, tFar);
-            return marginalClass(cone, tNear,
-                                 tNear >= cone.tMinInner ? tFar : dist + r);
         }
-        // The silhouette is inside the cone. Every front hit lies in
-        // [D - r, T]; a ray whose front hit is before the range may still
-        // hit the back, up to D + r.
+        // The silhouette is inside the cone (or the range cuts the hits).
+        // Every front hit lies in [D - r, T]; a ray whose front hit is before
+        // the range may still hit the back, up to D + r.
+        const double dist = std::sqrt(d2), tangent = std::sqrt(t2);
+        const double nearest = t2 / (dist + r);  // dist - r
+        if (cone.surelyAfter(nearest) || cone.surelyBefore(dist + r)) return missClass();
         return marginalClass(cone, nearest, nearest >= cone.tMinInner ? tangent : dist + r);
     }
 

@@ -7,6 +7,7 @@
 
 #include "asos/accel/cone_box.hpp"
 #include "asos/geometry/beam_eye.hpp"
+#include "asos/geometry/beam_quad.hpp"
 #include "asos/geometry/beam_rect.hpp"
 #include "asos/geometry/beam_segment.hpp"
 #include "asos/geometry/beam_sphere.hpp"
@@ -328,4 +329,55 @@ TEST_CASE("Sphere shadow cone: the tangent cone, equal-area pieces, rays inside 
     }
     CHECK_FALSE(SphereShadowCone::make(Vec3(0.5, 0, 0), Vec3(0.0), 1.0).has_value());
     CHECK_THROWS_AS(SphereShadowCone::make(Vec3(5, 0, 0), Vec3(0.0), 0.0), std::invalid_argument);
+}
+
+TEST_CASE("Point-light footprint pyray: bilinear quarters tile the quadrilateral", "[beam]") {
+    std::mt19937_64 rng(27);
+    std::uniform_real_distribution<double> u01(0.0, 1.0);
+    for (int trial = 0; trial < 200; ++trial) {
+        // A convex planar quadrilateral (a perspective footprint on a plane)
+        // and a light above it.
+        const Vec3 normal = randomUnit(rng);
+        const Frame f = Frame::around(normal);
+        const Vec3 origin(u01(rng), u01(rng), u01(rng));
+        const double size = std::pow(10.0, -3.0 + 3.0 * u01(rng));
+        std::array<Vec3, 4> corners;
+        const double jitter = 0.3;
+        const double xs[4] = {0, 1, 1, 0}, ys[4] = {0, 0, 1, 1};
+        for (int i = 0; i < 4; ++i) {
+            corners[i] = origin + size * (xs[i] + jitter * (u01(rng) - 0.5)) * f.u +
+                         size * (ys[i] + jitter * (u01(rng) - 0.5)) * f.v;
+        }
+        const Vec3 light = origin + normal * (0.5 + 5 * u01(rng)) + randomUnit(rng) * 2.0 * u01(rng);
+        const int startLevel = static_cast<int>(rng() % 3);
+        QuadPyray p = QuadPyray::make(light, corners, startLevel, 0.0);
+        const QuadPyray top = p;
+        for (int level = startLevel; level < startLevel + 4; ++level) {
+            CHECK(p.weight() == std::ldexp(1.0, -2 * level));
+            const auto quarters = p.split();
+            double weights = 0.0;
+            for (int q = 0; q < 4; ++q) {
+                weights += quarters[q].weight();
+                CHECK(quarters[q].corners()[q] == p.corners()[q]);
+                // A quarter's rays are the parent's rays at the mapped parameters.
+                const double xi1 = u01(rng), xi2 = u01(rng);
+                const BeamRay child = quarters[q].sample(xi1, xi2);
+                const BeamRay parent = p.sample(0.5 * (xi1 + (q == 1 || q == 2)), 0.5 * (xi2 + (q >= 2)));
+                CHECK(glm::length(child.ray.at(child.distance) - parent.ray.at(parent.distance)) <= 1e-12 * (1 + parent.distance));
+                for (int k = 0; k < 20; ++k) {
+                    const BeamRay r = k < 4 ? quarters[q].sample(k & 1, k >> 1 & 1) : quarters[q].sample(u01(rng), u01(rng));
+                    CHECK(directionInCone(quarters[q].cone(), r.ray.dir));
+                    CHECK(directionInCone(top.cone(), r.ray.dir));
+                    CHECK(r.distance <= quarters[q].cone().tMax);
+                    // It ends on the footprint's plane.
+                    CHECK(std::abs(glm::dot(r.ray.at(r.distance) - origin, normal)) <= 1e-9 * (1 + r.distance));
+                }
+            }
+            CHECK(weights == p.weight());
+            p = quarters[rng() % 4];
+        }
+    }
+    // The apex in the quadrilateral's plane: the cone of all directions.
+    const QuadPyray flat = QuadPyray::make(Vec3(0.5, 0.5, 0), {Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(1, 1, 0), Vec3(0, 1, 0)});
+    CHECK(flat.cone().halfAngle == kPi);
 }

@@ -381,3 +381,47 @@ TEST_CASE("BVH cone traversal stops early and honours a shrinking far limit", "[
     for (std::uint32_t i = 0; i <= 10; ++i) CHECK(seen.count(i) == 1);
     for (std::uint32_t i = 12; i < 64; ++i) CHECK(seen.count(i) == 0);
 }
+
+TEST_CASE("BVH cone prefilter (float) keeps every box the cone touches", "[accel][bvh][cone]") {
+    std::mt19937_64 rng(6);
+    std::uniform_real_distribution<double> u01(0.0, 1.0);
+    int kept = 0, dropped = 0;
+    for (int trial = 0; trial < 6000; ++trial) {
+        Cone c;
+        c.apex = (Vec3(u01(rng), u01(rng), u01(rng)) - 0.5) * 20.0;
+        c.axis = randomDirection(rng);
+        const double angles[] = {0.0, 1e-5, 1e-3, 0.05, 0.5, 1.5, 2.5};
+        c.halfAngle = angles[rng() % 7];
+        c.tMin = rng() % 2 ? 0.0 : 2.0 * u01(rng);
+        c.tMax = rng() % 3 == 0 ? kInfinity : c.tMin + 10.0 * u01(rng);
+        const ConeBoxTest test(c);
+        bvh_detail::Node node;
+        Bounds3 boxes[4];
+        for (int k = 0; k < 4; ++k) {
+            // Near the cone's rim at a random distance, of random size and shape.
+            const Vec3 a = std::abs(c.axis.x) < 0.6 ? Vec3(1, 0, 0) : Vec3(0, 1, 0);
+            const Vec3 u = glm::normalize(glm::cross(c.axis, a)), v = glm::cross(c.axis, u);
+            const double phi = 2 * kPi * u01(rng), t = c.tMin + u01(rng) * (std::isfinite(c.tMax) ? c.tMax - c.tMin : 10.0);
+            const Vec3 rim = c.apex + t * (std::cos(c.halfAngle) * c.axis +
+                                           std::sin(c.halfAngle) * (std::cos(phi) * u + std::sin(phi) * v));
+            const double size = std::pow(10.0, -3.0 + 3.0 * u01(rng));
+            Vec3 half(size * u01(rng), size * u01(rng), size * u01(rng));
+            if (rng() % 4 == 0) half[rng() % 3] = 0.0;
+            const Vec3 centre = rim + (Vec3(u01(rng), u01(rng), u01(rng)) - 0.5) * (3.0 * size);
+            boxes[k] = {glm::floor((centre - half) * 4096.0) / 4096.0, glm::ceil((centre + half) * 4096.0) / 4096.0};
+            for (int axis = 0; axis < 3; ++axis) {
+                node.box[0][axis][k] = static_cast<float>(boxes[k].lo[axis]);
+                node.box[1][axis][k] = static_cast<float>(boxes[k].hi[axis]);
+            }
+        }
+        const unsigned mask = bvh_detail::ConePrefilter(test.cone()).keep(node);
+        for (int k = 0; k < 4; ++k) {
+            const bool keep = (mask >> k) & 1u;
+            kept += keep;
+            dropped += !keep;
+            if (!keep && coneTouchesBox(test, boxes[k])) FAIL("prefilter dropped a touching box, trial " << trial);
+        }
+    }
+    CHECK(dropped > 2000);
+    CHECK(kept > 2000);
+}

@@ -83,7 +83,8 @@ TEST_CASE("directives", "[lang][grammar]") {
          "#warning \"w\"", "#error \"e\"", "#if (1) #end", "#if (A) sphere {0,1} #else box {0,1} #end",
          "#if (A) #elseif (B) #elseif (C) #else #end", "#ifdef (A) #end", "#ifndef (A) #else #end",
          "#while (I < 3) #declare I = I + 1; #end", "#for (I, 1, 10) #end", "#for (I, 10, 1, -1) #end",
-         "# declare A = 1;", "#if (1) #if (2) #end #end"},
+         "# declare A = 1;", "#if (1) #if (2) #end #end", "#declare S = \"no ';' after a string\"",
+         "#declare S = concat(\"a\", \"b\") #declare T = str(1, 0, 0)", "sphere { 0, 1 # }", "#"},
         {"#declare A = 1", "#declare = 1;", "#declare sphere = 1;", "#if 1 #end", "#if (1)",
          "#while (1)", "#for (I, 1) #end", "#undef", "#include", "#end", "#else"});
 }

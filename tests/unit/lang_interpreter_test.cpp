@@ -180,6 +180,17 @@ TEST_CASE("#include searches beside the file, then -L; #local stays in its file"
     CHECK_THAT(missing.all()[0].message, Contains("cannot find include file 'shapes.inc'"));
 }
 
+TEST_CASE("a file included in a loop runs each time", "[lang][interpreter]") {
+    const auto dir = scratchDir("include-loop");
+    writeFile(dir / "one.inc", "sphere { <I, 0, 0>, 0.5 }\n");
+    writeFile(dir / "scene.pov", "#for (I, 1, 3) #include \"one.inc\" #end\n");
+    Diagnostics diagnostics;
+    auto scene = interpretFile(dir / "scene.pov", {}, diagnostics);
+    REQUIRE(scene);
+    REQUIRE(scene->objects.size() == 3);
+    CHECK(std::get<SphereShape>(scene->objects[2].shape).center == Vec3(3, 0, 0));
+}
+
 TEST_CASE("#include cycles and runaway depth are errors", "[lang][interpreter]") {
     const auto dir = scratchDir("cycle");
     writeFile(dir / "a.pov", "#include \"b.inc\"\n");

@@ -116,11 +116,16 @@ TEST_CASE("the entries of a file are handed over one by one", "[lang][parse]") {
                                       [&](const Ast&, const Node& n) { words.push_back(n.word); });
     CHECK(ok);
     CHECK(words == std::vector<Word>{Word::Sphere, Word::Declare, Word::Box});
+
+    words.clear();  // a lone '#' is no entry
+    CHECK(parseSceneEntries("sphere { 0, 1 } # // nothing after it", std::make_shared<const std::string>("t.pov"), names,
+                            diagnostics, [&](const Ast&, const Node& n) { words.push_back(n.word); }));
+    CHECK(words == std::vector<Word>{Word::Sphere});
 }
 
 TEST_CASE("syntax errors name the place and what was found there", "[lang][parse]") {
     CHECK(errorOf("sphere { 0 }") == "1:12: expected the radius of the sphere, found '}'");
-    CHECK(errorOf("sphere { 0, 1\n") == "2:1: expected an object modifier or '}', found the end of the file");
+    CHECK(errorOf("sphere { 0, 1\n") == "1:14: expected an object modifier or '}', found the end of the file");
     CHECK(errorOf("sphere { 0, 1 foo }") == "1:15: expected an object modifier or '}', found 'foo'");
     CHECK(errorOf("#declare X = 1\nsphere { X, 1 }") == "2:1: expected ';' after the declared value, found 'sphere'");
     CHECK(errorOf("spheres { 0, 1 }") ==
@@ -128,8 +133,8 @@ TEST_CASE("syntax errors name the place and what was found there", "[lang][parse
           "directive, found 'spheres'");
     CHECK(errorOf("#declare V = <1, 2, 3, 4, 5, 6>;") == "1:14: a vector has 2 to 5 components, this one has 6");
     CHECK(errorOf("#declare V = vrotate(x);") == "1:14: 'vrotate' takes 2 arguments, not 1");
-    CHECK(errorOf("#declare S = \"abc\n\";") ==
-          "1:18: unterminated string: expected '\"' before the end of the line, found the end of the line");
+    CHECK(errorOf("#declare S = \"abc\n\";") == "1:18: unterminated string: expected '\"' before the end of the line");
+    CHECK(errorOf("sphere { 0, 1 }\n/* a /* b */\nbox { 0, 1 }") == "2:1: unterminated comment: no '*/' closes this '/*'");
 }
 
 TEST_CASE("unsupported POV-Ray constructs are named at their keyword", "[lang][parse]") {

@@ -122,6 +122,11 @@ TEST_CASE("Golden ASOS renders of every primitive", "[golden]") {
             renderScene(dir / (std::string(name) + ".pov"), settingsFor(RenderMethod::Asos, 96, 72)),
             dir / (std::string(name) + ".png"), true);
     }
+    // The checkered plane with pattern edges subdivided too.
+    RenderSettings patterns = settingsFor(RenderMethod::Asos, 96, 72);
+    patterns.patternEdges = true;
+    compareWithReference(renderScene(sourceDir("render") / "plane.pov", patterns),
+                         sourceDir("render") / "plane_pattern_edges.png", true);
 }
 
 TEST_CASE("Golden renders of the six primitives by every method", "[golden]") {

@@ -84,13 +84,21 @@ TEST_CASE("Cylinder cone classification: known answers", "[shapes][cylinder]") {
     a = c.classify(k);
     CHECK(a.coverage == Coverage::Marginal);
     CHECK_FALSE(a.singleEdge);
-    // The near rim seen from above is a crease between two visible faces.
+    // The near rim seen from above is a crease between two visible faces;
+    // open, rays just over it meet the inside of the far wall.
+    const Primitive open = cylinder({0, 0, 0}, {0, 2, 0}, 1.0, true);
     k.apex = {0, 10, -10};
     k.axis = glm::normalize(Vec3(0, 2, -1) - k.apex);
     k.halfAngle = 0.01;
     CHECK(c.classify(k).coverage == Coverage::Full);
-    // ... while an open cylinder's rim there is an edge of the surface.
-    CHECK(cylinder({0, 0, 0}, {0, 2, 0}, 1.0, true).classify(k).coverage == Coverage::Marginal);
+    CHECK(open.classify(k).coverage == Coverage::Full);
+    // Looking down an open tube, the bottom rim bounds what is seen through
+    // both openings; capped, the top cap covers it.
+    k.apex = {0, 10, 0};
+    k.axis = glm::normalize(Vec3(1, -10, 0));
+    k.halfAngle = 0.005;
+    CHECK(open.classify(k).coverage == Coverage::Marginal);
+    CHECK(c.classify(k).coverage == Coverage::Full);
     // From inside: every ray leaves.
     k.apex = {0.2, 1, 0};
     k.halfAngle = 1.0;

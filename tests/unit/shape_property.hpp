@@ -214,6 +214,32 @@ inline PropertyStats runConeProperty(const char* name, std::uint64_t baseSeed, i
         const ConeClass answer = prim.classify(cone);
         ProbeResult probe = probeCone(prim, cone, answer, density);
         const bool nan = std::isnan(answer.tNear) || std::isnan(answer.tFar);
+        // The ray hits themselves: any-hit agrees, the point is on the ray,
+        // in the bounds and back at objectPoint, the normal is unit.
+        for (int r = 0; r < 4; ++r) {
+            const Vec3 dir = r == 0 ? cone.axis : rng.unitVector();
+            const Ray ray{cone.apex, glm::normalize(dir)};
+            const auto hit = prim.intersect(ray, 0.0, kInfinity);
+            std::string wrong;
+            if (hit.has_value() != prim.intersectAny(ray, 0.0, kInfinity))
+                wrong = "intersect and intersectAny disagree";
+            if (hit) {
+                const double scale = glm::length(ray.origin) + glm::length(hit->position) + shape.size;
+                const Vec3 pad(1e-9 * scale);
+                const Vec3 back = transform.worldFromObject.point(hit->objectPoint);
+                if (std::abs(glm::length(hit->normal) - 1.0) > 1e-9) wrong = "normal not unit";
+                if (glm::length(hit->position - ray.at(hit->t)) > 1e-9 * scale)
+                    wrong = "position off the ray";
+                if (prim.bounded() &&
+                    !Bounds3{bounds.lo - pad, bounds.hi + pad}.contains(hit->position))
+                    wrong = "hit outside worldBounds";
+                if (glm::length(back - hit->position) > 1e-7 * scale) wrong = "objectPoint does not map back";
+            }
+            if (!wrong.empty() && stats.failures++ < 5)
+                FAIL_CHECK(name << " case " << i << " (replay: ASOS_SHAPE_REPLAY=" << name << ":"
+                                << seed << "): " << wrong << " for the ray from " << fmt(ray.origin)
+                                << " along " << fmt(ray.dir));
+        }
         ++stats.cases;
         if (answer.coverage == Coverage::Miss) ++stats.miss;
         else if (answer.coverage == Coverage::Full) ++stats.full;

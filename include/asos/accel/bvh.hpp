@@ -8,11 +8,11 @@
 //
 // The tree knows items only by index and bounds; the caller supplies the
 // per-item tests as callables, which the traversals (templates here) inline.
+#include <algorithm>
 #include <array>
 #include <bit>
 #include <cmath>
 #include <cstdint>
-#include <cstring>
 #include <limits>
 #include <optional>
 #include <span>
@@ -56,7 +56,7 @@ inline bool isLeaf(std::uint32_t ref) { return (ref & kLeafBit) != 0; }
 inline std::uint32_t leafFirst(std::uint32_t ref) { return ref & kFirstMask; }
 inline std::uint32_t leafCount(std::uint32_t ref) { return (ref >> kCountShift) & 15u; }
 
-// The smallest float >= x and the largest float <= x.
+// The float after and before f; x rounded up and down to a float.
 inline float nextFloatUp(float f) {
     if (std::isnan(f) || f == std::numeric_limits<float>::infinity()) return f;
     if (f == 0.0f) return std::numeric_limits<float>::denorm_min();
@@ -105,6 +105,8 @@ struct RayPrep {
                 // 0 * inf (NaN) can only occur for a plane strictly outside,
                 // where either answer is right.
                 nearInv = farInv = side ? -inf : inf;
+                oN = side ? below : above;
+                oF = side ? above : below;
             } else if (std::abs(d) < 1e-30) {
                 // 1/d overflows a float: drop this axis's constraint
                 // (conservative; a unit direction has another, larger
@@ -113,18 +115,12 @@ struct RayPrep {
                 nearInv = farInv = inf;
                 oN = inf;
                 oF = -inf;
-                nearSide[i] = side;
-                oNear[i] = Float4{oN, oN, oN, oN};
-                oFar[i] = Float4{oF, oF, oF, oF};
-                invNear[i] = Float4{nearInv, nearInv, nearInv, nearInv};
-                invFar[i] = Float4{farInv, farInv, farInv, farInv};
-                continue;
             } else {
                 nearInv = static_cast<float>(1.0 / d);
                 farInv = static_cast<float>(kFarScale / d);
+                oN = side ? below : above;
+                oF = side ? above : below;
             }
-            oN = side ? below : above;
-            oF = side ? above : below;
             nearSide[i] = side;
             oNear[i] = Float4{oN, oN, oN, oN};
             oFar[i] = Float4{oF, oF, oF, oF};
@@ -150,6 +146,82 @@ inline unsigned moveMask(Int4 m) {
     return (m[0] & 1u) | (m[1] & 2u) | (m[2] & 4u) | (m[3] & 8u);
 #endif
 }
+
+inline Float4 sqrt4(Float4 x) {
+#if defined(__SSE__)
+    return __builtin_ia32_sqrtps(x);
+#else
+    return Float4{std::sqrt(x[0]), std::sqrt(x[1]), std::sqrt(x[2]), std::sqrt(x[3])};
+#endif
+}
+
+// A float prefilter of the cone traversal: the bounding sphere of each of a
+// node's four child boxes against the cone, with ConeBoxTest's exact distance
+// (test 4 in src/accel/cone_box.cpp) computed in float for the four at once,
+// and a slack of 2^-12 times the magnitude of the coordinates involved, far
+// above float rounding (a few dozen roundings of relative size 2^-24 in
+// values bounded by that magnitude). A box it drops has no point in the cone;
+// the boxes it keeps go on to the exact double test. Used only where the
+// coordinates are below 1e15 (no float overflow in the squares).
+struct ConePrefilter {
+    Float4 apex[3], axis[3];
+    Float4 cosHalf, sinHalf, tMin, tMax, apexScale;
+
+    explicit ConePrefilter(const Cone& c) {
+        const Vec3 w = glm::normalize(c.axis);
+        for (int i = 0; i < 3; ++i) {
+            const float a = static_cast<float>(c.apex[i]), d = static_cast<float>(w[i]);
+            apex[i] = Float4{a, a, a, a};
+            axis[i] = Float4{d, d, d, d};
+        }
+        const auto splat = [](double x) {
+            const float f = static_cast<float>(x);
+            return Float4{f, f, f, f};
+        };
+        cosHalf = splat(std::cos(c.halfAngle));
+        sinHalf = splat(std::sin(c.halfAngle));
+        tMin = splat(std::max(c.tMin, 0.0));
+        tMax = splat(c.tMax);
+        apexScale = splat(std::max({std::abs(c.apex.x), std::abs(c.apex.y), std::abs(c.apex.z)}));
+    }
+    void setTMax(double t) {
+        const float f = static_cast<float>(t);
+        tMax = Float4{f, f, f, f};
+    }
+
+    // Bit k set unless child k's bounding sphere is certainly outside the cone.
+    unsigned keep(const Node& node) const {
+        const Float4 zero = {0, 0, 0, 0};
+        const auto abs4 = [&](Float4 x) { return x < zero ? -x : x; };
+        const auto max4 = [](Float4 x, Float4 y) { return x > y ? x : y; };
+        Float4 v[3], e[3];
+        Float4 centreScale = zero;
+        for (int i = 0; i < 3; ++i) {
+            const Float4 c = 0.5f * (node.box[0][i] + node.box[1][i]);
+            e[i] = 0.5f * (node.box[1][i] - node.box[0][i]);
+            v[i] = c - apex[i];
+            centreScale = max4(centreScale, abs4(c));
+        }
+        const Float4 radius = sqrt4(e[0] * e[0] + e[1] * e[1] + e[2] * e[2]);
+        const Float4 p = v[0] * axis[0] + v[1] * axis[1] + v[2] * axis[2];
+        const Float4 x = v[1] * axis[2] - v[2] * axis[1];
+        const Float4 y = v[2] * axis[0] - v[0] * axis[2];
+        const Float4 z = v[0] * axis[1] - v[1] * axis[0];
+        const Float4 q = sqrt4(x * x + y * y + z * z);
+        const Float4 d = sqrt4(p * p + q * q);
+        // Within the angular range: the radial distance to [tMin, tMax].
+        const Float4 radial = max4(zero, max4(tMin - d, d - tMax));
+        // Outside it: the distance to the boundary ray's segment.
+        const Float4 s = p * cosHalf + q * sinHalf;
+        const Float4 h = q * cosHalf - p * sinHalf;
+        const Float4 clamped = s < tMin ? tMin : (s > tMax ? tMax : s);
+        const Float4 along = s - clamped;
+        const Float4 outside = sqrt4(h * h + along * along);
+        const Float4 distance = p >= d * cosHalf ? radial : outside;
+        const Float4 slack = (apexScale + centreScale + radius) * 0x1p-12f;
+        return moveMask(distance <= radius + slack);
+    }
+};
 
 struct StackEntry {
     std::uint32_t ref;
@@ -361,6 +433,12 @@ void Bvh::cone(const Cone& cone, Visit&& f) const {
     if (nodes_.empty()) return;
     ConeBoxTest test(cone);
     double far = test.cone().tMax;
+    ConePrefilter prefilter(test.cone());
+    const double magnitude =
+        std::max({std::abs(bounds_.lo.x), std::abs(bounds_.lo.y), std::abs(bounds_.lo.z),
+                  std::abs(bounds_.hi.x), std::abs(bounds_.hi.y), std::abs(bounds_.hi.z),
+                  std::abs(cone.apex.x), std::abs(cone.apex.y), std::abs(cone.apex.z)});
+    const bool usePrefilter = magnitude < 1e15;
     struct Entry {
         std::uint32_t ref;
         double distance;
@@ -387,6 +465,7 @@ void Bvh::cone(const Cone& cone, Visit&& f) const {
                     if (limit < far) {
                         far = limit;
                         test.setTMax(far);
+                        prefilter.setTMax(far * (1.0 + 1e-6));
                     }
                 }
             }
@@ -395,7 +474,10 @@ void Bvh::cone(const Cone& cone, Visit&& f) const {
         const Node& node = nodes_[e.ref];
         Entry hits[4];
         int count = 0;
-        for (int k = 0; k < 4; ++k) {
+        unsigned kept = usePrefilter ? prefilter.keep(node) : 15u;
+        while (kept != 0) {
+            const int k = std::countr_zero(kept);
+            kept &= kept - 1;
             Bounds3 box;
             for (int axis = 0; axis < 3; ++axis) {
                 box.lo[axis] = node.box[0][axis][k];

@@ -18,6 +18,7 @@
 #include "asos/render/asos_settings.hpp"
 #include "asos/render/camera.hpp"
 #include "asos/render/cone_candidates.hpp"
+#include "asos/render/pattern_edges.hpp"
 #include "asos/render/point_light_shadow.hpp"
 #include "asos/render/ray_tracer.hpp"
 #include "asos/render/subdivision_criterion.hpp"
@@ -37,6 +38,9 @@ struct AsosScratch {
         std::uint32_t ix, iy;        // position among the 2^K x 2^K squares of the pixel
         std::uint32_t first, count;  // its objects in items[]
         std::optional<SurfaceHit> hit;  // its K-ray's nearest hit among them
+        // Resolved by one Full object whose pigment pattern may change in
+        // the pyray: marginal on the pattern, not on the object's outline.
+        PatternChange pattern;
     };
     std::vector<Item> items[2];
     std::vector<std::uint8_t> hits[2];  // per item: the node's K-ray hits the object
@@ -65,9 +69,12 @@ struct AsosPixelReport {
 class AsosTracer {
 public:
     // `sceneSettings`: the command line over global_settings over the
-    // defaults; each object's own asos block refines it.
+    // defaults; each object's own asos block refines it. `patternEdges`:
+    // also subdivide where a pigment pattern's edge crosses a pyray that
+    // one object covers (docs/algorithm.md, "Pattern edges"); false is the
+    // paper's method alone.
     AsosTracer(const RayTracer& tracer, const CameraModel& camera, const AsosSettings& sceneSettings,
-               std::uint64_t seed);
+               std::uint64_t seed, bool patternEdges = false);
 
     // One pixel: its colour, the pyrays it took (result.rays) and the
     // deepest level reached.
@@ -95,7 +102,9 @@ private:
     std::uint64_t seed_;
     std::vector<AsosSettings> objectSettings_;
     std::vector<AsosSettings> lightSettings_;
+    bool patternEdges_;
     std::vector<std::uint8_t> selfShadowing_;
+    std::vector<std::uint8_t> patterned_;
     double eyeTMax_ = kInfinity;  // where eye pyrays end: beyond every object, or never
 };
 

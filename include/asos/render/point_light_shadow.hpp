@@ -93,8 +93,9 @@ struct PointShadowQuery {
     AsosSettings settings;  // the light's eps, max and jitter
     // The object the footprint lies on. Convex closed shapes (and flat ones)
     // cannot shadow themselves where they face the light, so they are left
-    // out of the occluders; `shadedCanSelfShadow` (open cylinders and cones)
-    // keeps it in.
+    // out of the occluders; `shadedCanSelfShadow` (the inner side of open
+    // cylinders and cones) keeps it in, asked only about the part of the
+    // cone before the footprint.
     std::uint32_t shadedObject = 0;
     bool shadedCanSelfShadow = false;
     int level = 0;             // the eye pyray's level: the shadow pyray starts there

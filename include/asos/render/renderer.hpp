@@ -34,6 +34,9 @@ struct RenderSettings {
     // ASOS: the command line's eps/max/jitter, which override global_settings'
     // asos block; objects' and lights' own blocks refine both.
     AsosOptions asos;
+    // ASOS: also subdivide where a pigment pattern's edge crosses a pyray
+    // (docs/algorithm.md, "Pattern edges"); off: the paper's method alone.
+    bool patternEdges = false;
     int samples = 4;            // grid and jitter: samples x samples rays per pixel
     AdaptiveSettings adaptive;  // adaptive: threshold, depth, jitter (gamma from the scene)
     // Area lights (docs/lights.md): ASOS shadow beams or the classic grid of

@@ -15,6 +15,10 @@
 
 namespace asos::conegeom {
 
+// sqrt(x^2 + y^2) without std::hypot's (slow) overflow guard: the
+// coordinates here are far from overflow.
+inline double length2d(double x, double y) { return std::sqrt(x * x + y * y); }
+
 inline ConeClass missClass() { return {}; }
 inline ConeClass fullClass(double tNear, double tFar) {
     return {Coverage::Full, tNear, tFar, false};
@@ -246,13 +250,6 @@ inline Footprint footprintOnZPlane(const LocalCone& cone, double zc) {
     return footprintOnPlane(cone, 2, zc);
 }
 
-// Half-widths of the footprint ellipse's bounding box along its two coordinates.
-inline Vec2 footprintHalfWidths(const Footprint& f) {
-    const double u = f.major.x, v = f.major.y;
-    return {std::sqrt(f.a * f.a * u * u + f.b * f.b * v * v),
-            std::sqrt(f.a * f.a * v * v + f.b * f.b * u * u)};
-}
-
 // Support of the footprint ellipse in the unit direction nu: max over the
 // ellipse of nu.(y - center).
 inline double footprintSupport(const Footprint& f, const Vec2& nu) {
@@ -282,5 +279,8 @@ struct Arc {
     double kappa = kInfinity;
 };
 bool circleMayMeetCone(const LocalCone& cone, double zc, double rho, const Arc& arc = {});
+
+// Whether the filled disc {z = zc, x^2 + y^2 <= rho^2} may meet the cone.
+bool discMayMeetCone(const LocalCone& cone, double zc, double rho);
 
 }  // namespace asos::conegeom

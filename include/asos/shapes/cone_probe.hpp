@@ -12,7 +12,7 @@
 namespace asos {
 
 struct ProbeDensity {
-    int rings = 6;        // rings at k/rings of the half-angle, k = 1..rings
+    int rings = 5;        // rings at k/rings of the half-angle, k = 1..rings
     int raysPerRing = 6;  // ring k carries raysPerRing * k rays
     int rimRays = 48;     // extra rays on the rim
 };

@@ -47,9 +47,21 @@ public:
         double enter = 0.0, exit = 0.0;
         int enterPart = 0, exitPart = 0;
     };
-    Interval solidInterval(const Vec3& o, const Vec3& d) const;
+    Interval solidInterval(const Vec3& o, const Vec3& d) const {
+        return solidInterval(profile(), o, d);
+    }
 
 private:
+    // A solid of this family: radius r0 + slope z over z in [zLo, zHi].
+    struct Profile {
+        double r0, slope, zLo, zHi;
+    };
+    Profile profile() const { return {r0_, slope_, 0.0, length_}; }
+    // The profile holding every point within `grow` of the solid: the side
+    // pushed out by grow * slant (grow along its normal), the ends by grow.
+    Profile grown(double grow) const {
+        return {r0_ + grow * slant_, slope_, -grow, length_ + grow};
+    }
     struct SideQuadratic {
         double centerZ;  // the centre on the axis the line is expanded about
         double shift;    // t of the line's point nearest it
@@ -58,7 +70,8 @@ private:
         double roots[2];
         int count;
     };
-    SideQuadratic sideQuadratic(const Vec3& origin, const Vec3& d) const;
+    static SideQuadratic sideQuadratic(const Profile& f, const Vec3& origin, const Vec3& d);
+    static Interval solidInterval(const Profile& f, const Vec3& origin, const Vec3& d);
     // Whether the ray o + t d, t >= 0, meets the side surface.
     bool sideHitAhead(const Vec3& o, const Vec3& d) const;
     // Distance from a point (rho, z) of a meridian half-plane to the solid
@@ -70,12 +83,14 @@ private:
     ConeClass classifyInside(const LocalCone& cone, double rho, double dFar) const;
     ConeClass classifyOnSurface(const LocalCone& cone, double rho, double tol, double dFar,
                                 bool nearSide, bool nearBottom, bool nearTop) const;
-    ConeClass classifyOff(const LocalCone& cone, double rho, double tol, double dNear,
-                          double dFar) const;
+    // far2: the squared distance to the farthest point of the object.
+    ConeClass classifyOff(const LocalCone& cone, double rho, double tol, double far2) const;
 
     double r0_, r1_, length_;
     double slope_;  // dr/dz
     double slant_;  // sqrt(1 + slope^2)
+    double invSlant_;
+    double invSide2_;  // 1 / |(r1 - r0, length)|^2
     bool capped_;
     BoundingSphere ball_;
 };

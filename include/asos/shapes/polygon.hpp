@@ -41,6 +41,9 @@ public:
     ConeClass classify(const LocalCone& cone) const;
 
 private:
+    // Every edge against the cone (the fast path's fallback near an edge).
+    ConeClass classifyExactly(const LocalCone& cone) const;
+
     std::vector<Vec2> vertices_;
     std::vector<std::uint32_t> loopEnds_;  // exclusive end of each loop in vertices_
     Vec2 lo_{0.0}, hi_{0.0};               // 2D bounding box

@@ -42,7 +42,6 @@ public:
 
     // The POV-Ray keyword of the shape ("sphere", "cone", ...).
     const char* kindName() const;
-    const LocalFrame& frame() const { return frame_; }
 
 private:
     using LocalShape =

@@ -1,0 +1,1 @@
+#include "diag_cycle_a.inc"

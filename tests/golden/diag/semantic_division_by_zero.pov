@@ -1,0 +1,2 @@
+#declare Zero = 0;
+sphere { 0, 1 / Zero }

@@ -1,0 +1,1 @@
+sphere { Centre, 1 }

@@ -1,0 +1,2 @@
+// Comparisons need parentheses, as in POV-Ray.
+#declare Big = 2 > 1;

@@ -1,0 +1,2 @@
+// vrotate takes two arguments.
+#declare V = vrotate(<1, 0, 0>);

@@ -1,0 +1,2 @@
+// A keyword cannot be declared.
+#declare sphere = 1;

@@ -1,0 +1,2 @@
+#declare V = <1, 2, 3>;
+#declare W = V.w;

@@ -1,0 +1,1 @@
+#inlcude "colors.inc"

@@ -1,0 +1,2 @@
+/* a comment /* nested */ that never ends
+sphere { 0, 1 }

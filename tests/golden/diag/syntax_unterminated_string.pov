@@ -1,0 +1,2 @@
+#declare Name = "no end
+sphere { 0, 1 }

@@ -1,0 +1,1 @@
+#declare R = rand(seed(42));

@@ -1,0 +1,4 @@
+// Macros are not part of the asos language.
+#macro Thing(R)
+  sphere { 0, R }
+#end

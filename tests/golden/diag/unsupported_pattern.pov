@@ -1,0 +1,1 @@
+plane { y, 0 pigment { granite scale 2 } }

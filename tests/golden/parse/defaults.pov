@@ -1,0 +1,1 @@
+// An empty scene: every default (camera, global settings, background).

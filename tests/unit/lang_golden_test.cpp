@@ -1,0 +1,148 @@
+// Golden files of the language: the dump of every example and of the focused
+// scenes in tests/golden/parse/ (NAME.pov → NAME.dump), and the diagnostics
+// of the mistakes in tests/golden/diag/ (NAME.pov → NAME.err, exact text).
+// Goldens are rewritten only by scripts/update-goldens.sh
+// (ASOS_UPDATE_GOLDENS=1); a failing comparison writes what it got into the
+// build tree and leaves the golden alone.
+//
+// Also here: parse → dump → parse → dump is a fixed point for all of them.
+#include <catch2/catch.hpp>
+
+#include <algorithm>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+#include "asos/lang/interpreter.hpp"
+#include "asos/scene/dump.hpp"
+
+using namespace asos;
+namespace fs = std::filesystem;
+
+namespace {
+
+const fs::path kSource = ASOS_SOURCE_DIR;
+
+bool updating() {
+    const char* v = std::getenv("ASOS_UPDATE_GOLDENS");
+    return v && std::string(v) == "1";
+}
+
+std::string readText(const fs::path& p) {
+    std::ifstream in(p, std::ios::binary);
+    std::ostringstream s;
+    s << in.rdbuf();
+    return s.str();
+}
+
+// Paths in the text relative to the source tree, so goldens do not depend on
+// where the tree lives.
+std::string relative(std::string text) {
+    const std::string prefix = fs::weakly_canonical(kSource).string() + "/";
+    for (std::size_t at; (at = text.find(prefix)) != std::string::npos;) text.erase(at, prefix.size());
+    return text;
+}
+
+std::vector<fs::path> scenesIn(const fs::path& dir) {
+    std::vector<fs::path> files;
+    for (const auto& entry : fs::directory_iterator(dir))
+        if (entry.path().extension() == ".pov") files.push_back(entry.path());
+    std::sort(files.begin(), files.end());
+    return files;
+}
+
+std::vector<fs::path> parseScenes() {
+    auto files = scenesIn(kSource / "examples");
+    auto focused = scenesIn(kSource / "tests" / "golden" / "parse");
+    files.insert(files.end(), focused.begin(), focused.end());
+    return files;
+}
+
+void compareGolden(const fs::path& golden, const std::string& actual) {
+    const std::string name = fs::relative(golden, kSource).string();
+    if (updating()) {
+        std::ofstream(golden, std::ios::binary) << actual;
+        WARN("rewrote " << name);
+        return;
+    }
+    INFO("golden " << name);
+    CHECK(fs::exists(golden));
+    const std::string expected = readText(golden);
+    if (expected != actual) {
+        const fs::path out = fs::path(ASOS_BINARY_DIR) / "golden-out" / fs::relative(golden, kSource);
+        fs::create_directories(out.parent_path());
+        std::ofstream(out, std::ios::binary) << actual;
+        FAIL_CHECK("differs from the golden; got " << out.string() << " (diff them; if the change is "
+                                                  << "right, run scripts/update-goldens.sh)");
+    }
+}
+
+lang::InterpreterOptions optionsFor(const fs::path&) {
+    lang::InterpreterOptions options;
+    options.includePaths = {kSource / "tests" / "golden" / "include"};
+    return options;
+}
+
+std::string formatAll(const Diagnostics& diagnostics) {
+    std::string out;
+    for (const auto& d : diagnostics.all()) out += formatDiagnostic(d);
+    return relative(out);
+}
+
+}  // namespace
+
+TEST_CASE("golden dumps of the examples and the focused scenes", "[lang][golden]") {
+    const auto files = parseScenes();
+    REQUIRE(files.size() >= 20);
+    for (const auto& file : files) {
+        INFO("scene " << fs::relative(file, kSource).string());
+        Diagnostics diagnostics;
+        auto scene = lang::interpretFile(file, optionsFor(file), diagnostics);
+        INFO(formatAll(diagnostics));
+        CHECK(scene);
+        if (!scene) continue;
+        fs::path golden = file;
+        golden.replace_extension(".dump");
+        if (file.parent_path().filename() == "examples")
+            golden = kSource / "tests" / "golden" / "examples" / golden.filename();
+        compareGolden(golden, relative(dumpScene(*scene)));
+    }
+}
+
+TEST_CASE("golden diagnostics of mistakes", "[lang][golden]") {
+    const auto files = scenesIn(kSource / "tests" / "golden" / "diag");
+    REQUIRE(files.size() >= 30);
+    for (const auto& file : files) {
+        INFO("scene " << fs::relative(file, kSource).string());
+        Diagnostics diagnostics;
+        auto scene = lang::interpretFile(file, optionsFor(file), diagnostics);
+        CHECK_FALSE(scene);
+        CHECK(diagnostics.hasErrors());
+        fs::path golden = file;
+        golden.replace_extension(".err");
+        compareGolden(golden, formatAll(diagnostics));
+    }
+}
+
+TEST_CASE("parse, dump, parse, dump is a fixed point", "[lang][dump]") {
+    DumpOptions noLocations;
+    noLocations.locations = false;
+    for (const auto& file : parseScenes()) {
+        INFO("scene " << fs::relative(file, kSource).string());
+        Diagnostics first;
+        auto scene = lang::interpretFile(file, optionsFor(file), first);
+        CHECK(scene);
+        if (!scene) continue;
+        const std::string dump1 = dumpScene(*scene);
+        Diagnostics second;
+        auto again = lang::interpretText(dump1, "dump.pov", {}, second);
+        INFO(formatAll(second));
+        CHECK(again);
+        if (!again) continue;
+        const std::string dump2 = dumpScene(*again, noLocations);
+        CHECK(dump2 == dumpScene(*scene, noLocations));
+        // The records of the second dump point into the first one.
+        if (!again->objects.empty()) CHECK(*again->objects.front().loc.file == "dump.pov");
+    }
+}
