@@ -4,8 +4,9 @@
 // with the ASOS eye method throughout, so that images differ only by how
 // the light is sampled:
 //   - a converged reference: the grid at R x R points (R = --reference, 64;
-//     R^2 along a linear light), jittered (stratified, unbiased), with the rays a whole-light cone test
-//     decides skipped (same image, less time);
+//     R^2, at most 1024, along a linear light), jittered (stratified,
+//     unbiased), with the rays that a whole-light cone test decides skipped
+//     (same image, less time);
 //   - ASOS shadow beams at each --eps (the light's EPS, MAX = --max, twice
 //     that for a linear light, which is halved where the others are
 //     quartered), and with --behind also with the beams' apex behind the
@@ -188,7 +189,13 @@ int runBenchLights(const BenchLightsArgs& args) {
         std::optional<Run> best;
         for (int pass = 0; pass < passes; ++pass) {
             Diagnostics diagnostics;
-            std::optional<RenderOutput> out = asos::render(d, s, diagnostics);
+            std::optional<RenderOutput> out;
+            try {
+                out = asos::render(d, s, diagnostics);
+            } catch (const std::exception& e) {
+                std::cerr << "asos bench lights: error: " << e.what() << '\n';
+                return std::nullopt;
+            }
             for (const Diagnostic& diag : diagnostics.all()) std::cerr << formatDiagnostic(diag);
             if (!out) return std::nullopt;
             if (best && best->seconds <= out->stats.times.renderSeconds) continue;
@@ -199,9 +206,12 @@ int runBenchLights(const BenchLightsArgs& args) {
     };
 
     // A reference image, from the cache when it is there: the grid at R x R
-    // jittered points (R^2 along a linear light), seen by the ASOS eye
+    // jittered points (R^2, at most 1024, along a linear light), seen by the ASOS eye
     // method (eyeSamples 0) or by eyeSamples x eyeSamples jittered eye rays
     // per pixel (converged in the image as well).
+    // Along a linear light, as many points as the others' R x R, up to the
+    // largest count.
+    const int linearReference = std::min(args.reference * args.reference, kMaxLightSamplesPerSide);
     auto referenceFor = [&](const Kind& kind, int eyeSamples) -> std::optional<Image> {
         const bool linear = kind.light == 2;
         const std::string name = std::string("reference_") + kind.name + "_" + std::to_string(args.width) + "x" +
@@ -216,7 +226,7 @@ int runBenchLights(const BenchLightsArgs& args) {
         if (!d) return std::nullopt;
         RenderSettings s;
         s.lightMethod = LightMethod::Grid;
-        s.lightSamples = linear ? args.reference * args.reference : args.reference;
+        s.lightSamples = linear ? linearReference : args.reference;
         s.gridLightCulling = true;
         if (eyeSamples > 0) {
             s.method = RenderMethod::Jitter;
@@ -238,7 +248,7 @@ int runBenchLights(const BenchLightsArgs& args) {
     std::printf("asos bench lights: %s at %dx%d, %d threads, ASOS eye method; error against the grid at "
                 "%dx%d jittered points (%d along a linear light), linear RGB",
                 args.scene.c_str(), args.width, args.height, args.threads, args.reference, args.reference,
-                args.reference * args.reference);
+                linearReference);
     if (args.behind)
         std::printf("; '*': against the same seen by %dx%d jittered eye rays per pixel, over the pixels "
                     "one surface covers (eye pyray resolved at level 0)",
@@ -294,8 +304,8 @@ int runBenchLights(const BenchLightsArgs& args) {
         for (int n : grids) {
             RenderSettings s;
             s.lightMethod = LightMethod::Grid;
-            s.lightSamples = linear ? n * n : n;
-            const std::string what = linear ? "grid " + std::to_string(n * n) + " points"
+            s.lightSamples = linear ? std::min(n * n, kMaxLightSamplesPerSide) : n;
+            const std::string what = linear ? "grid " + std::to_string(*s.lightSamples) + " points"
                                             : "grid " + std::to_string(n) + "x" + std::to_string(n);
             if (!row(what, *d, s)) return 1;
         }
