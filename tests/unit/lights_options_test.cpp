@@ -124,3 +124,47 @@ TEST_CASE("asos render: area light options, and their errors", "[lights][cli]") 
     CHECK_FALSE(fs::exists(scratchDir() / "bad_apex.png"));
     CHECK(renderWith("bad_samples", "--light-samples 0").first == 1);
 }
+
+TEST_CASE("Area light renders are deterministic over threads and regions", "[lights]") {
+    SceneDescription d;
+    d.camera = lookAtCamera({0, 3, -6}, {0, 0.5, 0}, 50);
+    d.objects.push_back(makeObject(PlaneShape{{0, 1, 0}, 0.0}, litTexture(Vec3(1.0))));
+    d.objects.push_back(makeObject(SphereShape{{0, 1, 0}, 0.8}, litTexture(Vec3(1.0))));
+    Light light = pointLight({0.5, 5, -0.5});
+    AreaLight area;
+    area.axis1 = {2, 0, 0};
+    area.axis2 = {0, 0, 2};
+    area.size1 = area.size2 = 4;
+    area.jitter = true;
+    light.area = area;
+    light.asos.jitter = true;
+    light.asos.maxLevel = 3;
+    d.lights.push_back(light);
+    for (LightMethod method : {LightMethod::Asos, LightMethod::Grid}) {
+        auto rendered = [&](int threads, std::optional<PixelRegion> region) {
+            RenderSettings s;
+            s.width = 32;
+            s.height = 24;
+            s.threads = threads;
+            s.seed = 11;
+            s.lightMethod = method;
+            s.region = region;
+            Diagnostics diagnostics;
+            std::optional<RenderOutput> out = render(d, s, diagnostics);
+            REQUIRE(out);
+            return std::move(out->color);
+        };
+        const Image one = rendered(1, std::nullopt), two = rendered(2, std::nullopt);
+        const Image part = rendered(2, PixelRegion{5, 3, 27, 20});
+        bool same = true, partSame = true;
+        for (int y = 0; y < 24; ++y)
+            for (int x = 0; x < 32; ++x)
+                for (int c = 0; c < 3; ++c) {
+                    same = same && one.at(x, y, c) == two.at(x, y, c);
+                    if (x >= 5 && x < 27 && y >= 3 && y < 20) partSame = partSame && one.at(x, y, c) == part.at(x, y, c);
+                }
+        INFO(lightMethodName(method));
+        CHECK(same);
+        CHECK(partSame);
+    }
+}
