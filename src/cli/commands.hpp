@@ -11,6 +11,9 @@ struct CommandResult {
     int exitCode = 0;
 };
 
+// `asos render SCENE -o OUT …`: renders a scene to an image (cmd_render.cpp).
+void addRenderCommand(CLI::App& app, CommandResult& result);
+
 // `asos bench …`: programs that print figures. Each benchmark registers under
 // the `bench` subcommand returned by addBenchCommand.
 CLI::App* addBenchCommand(CLI::App& app);
@@ -20,6 +23,9 @@ void addParseCommand(CLI::App& app, CommandResult& result);
 
 // `asos bench parse`: parse time and peak memory for 10^3 … 10^6 spheres.
 void addBenchParseCommand(CLI::App& bench, CommandResult& result);
+
+// `asos bench render`: time and rays of every method (bench_render.cpp).
+void addBenchRenderCommand(CLI::App& bench, CommandResult& result);
 
 // `asos bench bvh` (bench_bvh.cpp).
 void addBenchBvhCommand(CLI::App& bench, CommandResult& result);

@@ -1,0 +1,53 @@
+#pragma once
+// ASOS's three knobs (paper: EPS, MAX and jittering of MAX-rays) as they
+// apply to one object or light. Sources, strongest first: the object's or
+// light's own `asos { … }` block, the command line, global_settings' block,
+// the built-in defaults (EPS 1/64, MAX 4, jitter off). Where a pyray involves
+// several objects, the finest setting among them wins (docs/algorithm.md,
+// "Per-object settings").
+#include <algorithm>
+#include <string>
+
+#include "asos/scene/description.hpp"
+
+namespace asos {
+
+// The deepest MAX accepted: 4^10 leaves per pixel is already a million rays.
+inline constexpr int kMaxAsosLevel = 10;
+
+struct AsosSettings {
+    double eps = 1.0 / 64.0;
+    int maxLevel = 4;
+    bool jitter = false;
+
+    bool operator==(const AsosSettings&) const = default;
+
+    // Fields set in `options` replace these.
+    AsosSettings refinedBy(const AsosOptions& options) const {
+        AsosSettings s = *this;
+        if (options.eps) s.eps = *options.eps;
+        if (options.maxLevel) s.maxLevel = *options.maxLevel;
+        if (options.jitter) s.jitter = *options.jitter;
+        return s;
+    }
+    // The finer of two settings, field by field: the smaller EPS, the deeper
+    // MAX, jitter if either asks for it.
+    AsosSettings finest(const AsosSettings& o) const {
+        return {std::min(eps, o.eps), std::max(maxLevel, o.maxLevel), jitter || o.jitter};
+    }
+    // The identity of finest(): coarser than any valid setting.
+    static AsosSettings coarsest() { return {kInfinity, 0, false}; }
+};
+
+// The scene-wide setting: built-in defaults, refined by global_settings'
+// asos block, then by the command line's options.
+inline AsosSettings sceneAsosSettings(const GlobalSettings& globals, const AsosOptions& commandLine) {
+    return AsosSettings{}.refinedBy(globals.asos).refinedBy(commandLine);
+}
+
+// Empty when the options are usable; otherwise what is wrong (EPS negative or
+// not finite, MAX outside 0..kMaxAsosLevel). `what` names their source in the
+// message ("--eps", "global_settings asos", ...).
+std::string checkAsosOptions(const AsosOptions& options, const std::string& what);
+
+}  // namespace asos

@@ -1,0 +1,110 @@
+#pragma once
+// Adaptive supersampling in object space (Genetti & Gordon 1993, "Adaptive
+// Supersampling in Object-Space"): a pixel's 0-pyray and its bounding cone
+// are tested against the objects the BVH offers ("Detection Phase"); a pixel
+// whose nearest object covers it wholly costs one ray; otherwise its marginal
+// pyrays are split into four, level by level, against the pixel's own list
+// of objects, until the paper's bound on the change that another level could
+// make falls within EPS or the level reaches MAX ("Subdivision Phase",
+// "Proximity to One Edge", "Jittering of MAX-rays"). Leaves are shaded with
+// their central rays weighted by their area; point lights are shadowed by
+// shadow pyrays through the leaves' footprints (render/point_light_shadow.hpp);
+// reflections use plain rays. docs/algorithm.md gives the rules in full.
+#include <cstdint>
+#include <optional>
+#include <vector>
+
+#include "asos/geometry/beam_eye.hpp"
+#include "asos/render/asos_settings.hpp"
+#include "asos/render/camera.hpp"
+#include "asos/render/cone_candidates.hpp"
+#include "asos/render/pattern_edges.hpp"
+#include "asos/render/point_light_shadow.hpp"
+#include "asos/render/ray_tracer.hpp"
+#include "asos/render/subdivision_criterion.hpp"
+#include "asos/render/tile_renderer.hpp"
+
+namespace asos {
+
+// Per-thread buffers: a pixel allocates nothing once they have grown.
+struct AsosScratch {
+    struct Item {
+        std::uint32_t object;
+        ConeClass cls;
+    };
+    // A marginal pyray awaiting the stopping decision of its level.
+    struct Node {
+        EyePyray pyray;
+        std::uint32_t ix, iy;        // position among the 2^K x 2^K squares of the pixel
+        std::uint32_t first, count;  // its objects in items[]
+        std::optional<SurfaceHit> hit;  // its K-ray's nearest hit among them
+        // Resolved by one Full object whose pigment pattern may change in
+        // the pyray: marginal on the pattern, not on the object's outline.
+        PatternChange pattern;
+    };
+    std::vector<Item> items[2];
+    std::vector<std::uint8_t> hits[2];  // per item: the node's K-ray hits the object
+    std::vector<Node> nodes[2];
+    SubdivisionTally tally;
+    ShadowScratch shadow;
+    ConeCandidateCache eyeCandidates;
+};
+
+// One level of a pixel's subdivision, as the paper's Tables 1 and 2 show it.
+struct AsosLevelReport {
+    int level = 0;
+    int marginal = 0;   // M: marginal pyrays at this level
+    int in = 0, out = 0;  // summed over the objects of the tally
+    double bound = 0.0;   // the change bound of the tally
+    AsosSettings settings;  // the finest among the objects involved
+};
+
+struct AsosPixelReport {
+    PixelResult result;
+    int leaves = 0;  // pyrays shaded (each with one ray), or that saw nothing
+    std::vector<AsosLevelReport> levels;  // levels that reached the stopping decision
+};
+
+class AsosTracer {
+public:
+    // `sceneSettings`: the command line over global_settings over the
+    // defaults; each object's own asos block refines it. `patternEdges`:
+    // also subdivide where a pigment pattern's edge crosses a pyray that
+    // one object covers (docs/algorithm.md, "Pattern edges"); false is the
+    // paper's method alone.
+    AsosTracer(const RayTracer& tracer, const CameraModel& camera, const AsosSettings& sceneSettings,
+               std::uint64_t seed, bool patternEdges = false);
+
+    // One pixel: its colour, the pyrays it took (result.rays) and the
+    // deepest level reached.
+    PixelResult tracePixel(int x, int y, AsosScratch& scratch, RenderCounters& counters) const;
+    // The same, with what happened at each level.
+    AsosPixelReport tracePixelReport(int x, int y, AsosScratch& scratch,
+                                     RenderCounters& counters) const;
+
+    const AsosSettings& objectSettings(std::uint32_t object) const { return objectSettings_[object]; }
+    const AsosSettings& lightSettings(std::size_t light) const { return lightSettings_[light]; }
+
+private:
+    PixelResult trace(int x, int y, AsosScratch& scratch, RenderCounters& counters,
+                      AsosPixelReport* report) const;
+    Vec3 shadeLeaf(const ImageSquare& square, int level, std::uint32_t ix, std::uint32_t iy,
+                   const Ray& ray, const std::optional<SurfaceHit>& hit, const PixelRandom& rng,
+                   AsosScratch& scratch, RenderCounters& counters) const;
+    std::optional<SurfaceHit> nearestInList(const Ray& ray, const std::vector<AsosScratch::Item>& items,
+                                            std::uint32_t first, std::uint32_t count,
+                                            std::uint8_t* marks, RenderCounters& counters) const;
+
+    const RayTracer& tracer_;
+    const Scene& scene_;
+    const CameraModel& camera_;
+    std::uint64_t seed_;
+    std::vector<AsosSettings> objectSettings_;
+    std::vector<AsosSettings> lightSettings_;
+    bool patternEdges_;
+    std::vector<std::uint8_t> selfShadowing_;
+    std::vector<std::uint8_t> patterned_;
+    double eyeTMax_ = kInfinity;  // where eye pyrays end: beyond every object, or never
+};
+
+}  // namespace asos

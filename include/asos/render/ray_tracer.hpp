@@ -1,0 +1,85 @@
+#pragma once
+// Plain rays through a built Scene, shaded with POV-Ray 3.7's model
+// (render/shading.hpp): the radiance of eye rays for the classic methods, and
+// of reflected rays for every method. The paper traces reflections with plain
+// rays too ("Future Work": a reflected pyramid off a curved surface is left
+// for further research), and such rays use plain shadow rays.
+//
+// Tolerances are POV-Ray's, so that images match its renders: hits nearer
+// than MIN_ISECT_DEPTH along a ray are ignored, and a shadow ray ignores hits
+// within SHADOW_TOLERANCE of the shaded point and of the light.
+#include <optional>
+#include <span>
+
+#include "asos/render/shading.hpp"
+#include "asos/render/stats.hpp"
+#include "asos/scene/scene.hpp"
+
+namespace asos {
+
+// The texture of an object (shared between objects, never null).
+inline const Texture& textureOf(const Object& object) { return *object.texture; }
+
+class RayTracer {
+public:
+    explicit RayTracer(const Scene& scene)
+        : scene_(scene), shading_(ShadingSettings::from(scene.description().globals)) {}
+
+    const Scene& scene() const { return scene_; }
+    const SceneDescription& description() const { return scene_.description(); }
+    const ShadingSettings& shadingSettings() const { return shading_; }
+    std::span<const Light> lights() const { return scene_.description().lights; }
+
+    // The nearest hit of an eye or reflected ray.
+    std::optional<SurfaceHit> nearestHit(const Ray& ray) const {
+        return scene_.intersect(ray, kPovMinIsectDepth, kInfinity);
+    }
+
+    // The colour seen along a ray (unit direction) of trace level `depth`
+    // (eye rays 1) and ADC weight `weight` (eye rays 1). Does not count the
+    // ray itself; counts the reflected and shadow rays it spawns.
+    Vec3 radiance(const Ray& ray, int depth, double weight, RenderCounters& counters) const;
+
+    // A known hit of `ray`, shaded with plain shadow rays.
+    Vec3 shade(const SurfaceHit& hit, const Ray& ray, int depth, double weight,
+               RenderCounters& counters) const;
+
+    // A known hit of `ray`, shaded with the caller's light function (as
+    // shadeSurface takes it); reflections are traced with plain rays.
+    template <class LightFn>
+    Vec3 shadeWith(const SurfaceHit& hit, const Ray& ray, int depth, double weight,
+                   LightFn&& lightArriving, RenderCounters& counters) const {
+        const Texture& texture = textureOf(scene_.object(static_cast<std::uint32_t>(hit.objectIndex)));
+        return shadeSurface({hit, texture, ray, depth, weight}, lights(), shading_, lightArriving,
+                            [&](const Ray& mirror, int d, double w) {
+                                ++counters.reflectedRays;
+                                return radiance(mirror, d, w, counters);
+                            });
+    }
+
+    // Whether a plain shadow ray from `point` toward the point light at
+    // `lightPosition` is blocked by an object that casts shadows.
+    bool shadowRayBlocked(const Vec3& point, const Vec3& lightPosition,
+                          RenderCounters& counters) const;
+
+    // The sample of point light `light` at a shading point, through a plain
+    // shadow ray: none when the light is behind the surface (it would light
+    // nothing) or blocked. `storage` holds the sample the span refers to.
+    std::span<const LightSample> plainLightSample(const ShadingPoint& point, LightSample& storage,
+                                                  RenderCounters& counters) const;
+
+private:
+    const Scene& scene_;
+    ShadingSettings shading_;
+};
+
+// Whether the light at `lightPosition` can light a surface point with
+// `normal` (turned toward the viewer) at all: POV-Ray's test on the cosine of
+// incidence, below which a light contributes nothing and no shadow ray is traced.
+inline bool facesLight(const Vec3& point, const Vec3& normal, const Vec3& lightPosition) {
+    const Vec3 d = lightPosition - point;
+    const double len = glm::length(d);
+    return len > 0.0 && glm::dot(normal, d) >= kPovEpsilon * len;
+}
+
+}  // namespace asos

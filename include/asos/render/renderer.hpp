@@ -1,0 +1,72 @@
+#pragma once
+// The render pipeline as a library function: a scene description in, an
+// image with its samples AOV and statistics out, by ASOS or one of the
+// classic methods. All methods share the camera (render/camera.hpp), the
+// scene and its BVH, and the shading (render/ray_tracer.hpp), so differences
+// between their images are differences of method only. The command line
+// (`asos render`) is a thin layer over this.
+#include <cstdint>
+#include <functional>
+#include <optional>
+#include <string>
+#include <string_view>
+
+#include "asos/diag/diagnostics.hpp"
+#include "asos/render/classic_methods.hpp"
+#include "asos/render/image.hpp"
+#include "asos/render/stats.hpp"
+#include "asos/render/tile_renderer.hpp"
+#include "asos/scene/description.hpp"
+#include "asos/scene/scene.hpp"
+
+namespace asos {
+
+enum class RenderMethod { Asos, Single, Grid, Jitter, Adaptive };
+
+// "asos", "single", "grid", "jitter", "adaptive".
+const char* methodName(RenderMethod method);
+std::optional<RenderMethod> parseMethod(std::string_view name);
+
+struct RenderSettings {
+    RenderMethod method = RenderMethod::Asos;
+    int width = 640, height = 480;
+    // ASOS: the command line's eps/max/jitter, which override global_settings'
+    // asos block; objects' and lights' own blocks refine both.
+    AsosOptions asos;
+    // ASOS: also subdivide where a pigment pattern's edge crosses a pyray
+    // (docs/algorithm.md, "Pattern edges"); off: the paper's method alone.
+    bool patternEdges = false;
+    int samples = 4;            // grid and jitter: samples x samples rays per pixel
+    AdaptiveSettings adaptive;  // adaptive: threshold, depth, jitter (gamma from the scene)
+    int threads = 0;            // 0: all cores
+    std::uint64_t seed = 0;
+    std::optional<PixelRegion> region;  // default: the whole image
+    int tileSize = 16;
+    std::function<void(const TileProgress&)> progress;  // after each tile
+};
+
+struct RenderOutput {
+    Image color;    // linear RGB in the scene's working space, full size (outside the region: 0)
+    Image samples;  // channels "rays" (rays, or pyrays for ASOS) and "level", per pixel
+    RenderStats stats;
+};
+
+// Empty when the settings can be used for `scene`; otherwise every problem
+// found, one per line (bad sizes, counts, asos options, region).
+std::string checkRenderSettings(const RenderSettings& settings);
+
+// Checks what the renderer needs of a description beyond what Scene::build
+// checks: asos blocks in range, lights it can render. Reports each problem
+// with its source location; returns false when there was one.
+bool checkRenderable(const SceneDescription& description, Diagnostics& diagnostics);
+
+// Renders a built scene. Throws std::invalid_argument for settings that
+// checkRenderSettings rejects. stats.times.buildSeconds is left 0.
+RenderOutput render(const Scene& scene, const RenderSettings& settings);
+
+// Builds the scene (timed) and renders it. Problems with the description go
+// to `diagnostics` and give nothing; bad settings throw std::invalid_argument.
+std::optional<RenderOutput> render(const SceneDescription& description,
+                                   const RenderSettings& settings, Diagnostics& diagnostics);
+
+}  // namespace asos

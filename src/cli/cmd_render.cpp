@@ -1,0 +1,275 @@
+// asos render SCENE -o OUT.png|.exr|.tif|… [-W 640 -H 480] [--method asos|single|grid|jitter|adaptive]
+//   [--eps E|A/B --max M --jitter on|off --pattern-edges on|off] [--samples N] [--threshold T --depth D] [--threads N]
+//   [--seed S] [--region x0,y0,x1,y1] [--clock C] [-D NAME=VALUE]... [-L DIR]...
+//   [--stats] [--stats-json FILE] [--aov samples=FILE] [--quiet]
+// Parses the scene, renders it (asos/render/renderer.hpp) and writes the
+// image through OpenImageIO, by extension, never leaving a half-written file.
+// Every option is checked before any work: a bad option or scene prints an
+// error and exits with status 1, writing nothing. docs/cli.md has the details.
+#include <unistd.h>
+
+#include <algorithm>
+#include <charconv>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <fstream>
+#include <iostream>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "asos/diag/diagnostics.hpp"
+#include "asos/image/image_io.hpp"
+#include "asos/lang/interpreter.hpp"
+#include "asos/lang/words.hpp"
+#include "asos/render/aov.hpp"
+#include "asos/render/renderer.hpp"
+#include "cli/commands.hpp"
+
+namespace asos::cli {
+
+namespace {
+
+struct RenderArgs {
+    std::string scene;
+    std::string output;
+    int width = 640, height = 480;
+    std::string method = "asos";
+    std::optional<std::string> eps;
+    std::optional<int> maxLevel;
+    std::optional<std::string> jitter;
+    std::string patternEdges = "off";
+    int samples = 4;
+    double threshold = 0.3;
+    int depth = 2;
+    int threads = 0;
+    std::uint64_t seed = 0;
+    std::optional<std::string> region;
+    double clock = 0.0;
+    std::vector<std::string> defines;
+    std::vector<std::string> includePaths;
+    bool stats = false;
+    std::optional<std::string> statsJson;
+    std::vector<std::string> aovs;
+    bool quiet = false;
+};
+
+void fail(const std::string& message) { std::cerr << "asos render: error: " << message << '\n'; }
+
+bool isIdentifier(const std::string& s) {
+    if (s.empty() || !(std::isalpha(static_cast<unsigned char>(s[0])) || s[0] == '_')) return false;
+    for (char c : s)
+        if (!(std::isalnum(static_cast<unsigned char>(c)) || c == '_')) return false;
+    return !lang::isReservedWord(s);
+}
+
+std::optional<double> parseNumber(std::string_view text) {
+    double v = 0.0;
+    const auto r = std::from_chars(text.data(), text.data() + text.size(), v);
+    if (r.ec != std::errc() || r.ptr != text.data() + text.size()) return std::nullopt;
+    return v;
+}
+
+// "0.015", "1/64".
+std::optional<double> parseEps(const std::string& text) {
+    const auto slash = text.find('/');
+    if (slash == std::string::npos) return parseNumber(text);
+    const auto a = parseNumber(std::string_view(text).substr(0, slash));
+    const auto b = parseNumber(std::string_view(text).substr(slash + 1));
+    if (!a || !b || *b == 0.0) return std::nullopt;
+    return *a / *b;
+}
+
+// A progress bar on stderr, redrawn at most ten times a second.
+class ProgressBar {
+public:
+    void update(const TileProgress& p) {
+        const auto now = std::chrono::steady_clock::now();
+        const bool done = p.tilesDone == p.tilesTotal;
+        if (!done && now - lastDraw_ < std::chrono::milliseconds(100)) return;
+        lastDraw_ = now;
+        const double fraction = p.pixelsTotal > 0 ? double(p.pixelsDone) / double(p.pixelsTotal) : 1.0;
+        const int filled = static_cast<int>(fraction * kWidth);
+        const double seconds = std::chrono::duration<double>(now - start_).count();
+        std::string bar(static_cast<std::size_t>(filled), '#');
+        bar.resize(kWidth, ' ');
+        std::fprintf(stderr, "\r[%s] %3d%%  %.1f s", bar.c_str(), static_cast<int>(fraction * 100.0),
+                     seconds);
+        if (done) std::fputc('\n', stderr);
+        std::fflush(stderr);
+    }
+
+private:
+    static constexpr int kWidth = 40;
+    std::chrono::steady_clock::time_point start_ = std::chrono::steady_clock::now();
+    std::chrono::steady_clock::time_point lastDraw_{};
+};
+
+int runRender(const RenderArgs& args) {
+    // Options first: nothing is parsed or rendered before they all make sense.
+    RenderSettings settings;
+    std::vector<std::string> problems;
+    const std::optional<RenderMethod> method = parseMethod(args.method);
+    if (!method)
+        problems.push_back("--method must be asos, single, grid, jitter or adaptive, not '" +
+                           args.method + "'");
+    else
+        settings.method = *method;
+    settings.width = args.width;
+    settings.height = args.height;
+    if (args.eps) {
+        const std::optional<double> eps = parseEps(*args.eps);
+        if (!eps) problems.push_back("--eps wants a number or a fraction A/B, not '" + *args.eps + "'");
+        else settings.asos.eps = *eps;
+    }
+    settings.asos.maxLevel = args.maxLevel;
+    if (args.jitter) {
+        if (*args.jitter == "on") settings.asos.jitter = true;
+        else if (*args.jitter == "off") settings.asos.jitter = false;
+        else problems.push_back("--jitter wants on or off, not '" + *args.jitter + "'");
+        settings.adaptive.jitter = settings.asos.jitter.value_or(false);
+    }
+    if (args.patternEdges == "on" || args.patternEdges == "off")
+        settings.patternEdges = args.patternEdges == "on";
+    else
+        problems.push_back("--pattern-edges wants on or off, not '" + args.patternEdges + "'");
+    settings.samples = args.samples;
+    settings.adaptive.threshold = args.threshold;
+    settings.adaptive.depth = args.depth;
+    settings.threads = args.threads;
+    settings.seed = args.seed;
+    if (std::string e = checkRenderSettings(settings); !e.empty()) problems.push_back(e);
+    if (args.region && settings.width >= 1 && settings.height >= 1) {
+        const RegionParse r = parseRegion(*args.region, settings.width, settings.height);
+        if (!r.region) problems.push_back("--region: " + r.error);
+        else settings.region = r.region;
+    }
+    if (IoStatus s = checkOutputPath(args.output); !s.ok()) problems.push_back("-o: " + s.error);
+    std::optional<std::string> samplesAov;
+    for (const std::string& aov : args.aovs) {
+        const auto eq = aov.find('=');
+        if (eq == std::string::npos || aov.substr(0, eq) != "samples" || eq + 1 == aov.size()) {
+            problems.push_back("--aov wants samples=FILE, not '" + aov + "'");
+            continue;
+        }
+        samplesAov = aov.substr(eq + 1);
+        if (IoStatus s = checkOutputPath(*samplesAov); !s.ok()) problems.push_back("--aov: " + s.error);
+    }
+    lang::InterpreterOptions options;
+    for (const auto& dir : args.includePaths) options.includePaths.emplace_back(dir);
+    for (const auto& define : args.defines) {
+        const auto eq = define.find('=');
+        const std::string name = define.substr(0, eq);
+        if (eq == std::string::npos || !isIdentifier(name))
+            problems.push_back("-D wants NAME=VALUE with NAME an identifier that is not a keyword, not '" +
+                               define + "'");
+        else
+            options.defines.push_back({name, define.substr(eq + 1)});
+    }
+    options.clock = args.clock;
+    options.imageWidth = settings.width;
+    options.imageHeight = settings.height;
+    if (!problems.empty()) {
+        for (const std::string& p : problems) fail(p);
+        return 1;
+    }
+
+    // The scene.
+    Diagnostics diagnostics;
+    const auto parseStart = std::chrono::steady_clock::now();
+    std::optional<SceneDescription> scene = lang::interpretFile(args.scene, options, diagnostics);
+    const double parseSeconds =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - parseStart).count();
+    for (const Diagnostic& d : diagnostics.all()) std::cerr << formatDiagnostic(d);
+    if (!scene) return 1;
+    diagnostics.clear();
+
+    // The render.
+    ProgressBar bar;
+    if (!args.quiet && isatty(STDERR_FILENO))
+        settings.progress = [&bar](const TileProgress& p) { bar.update(p); };
+    std::optional<RenderOutput> out;
+    try {
+        out = render(*scene, settings, diagnostics);
+    } catch (const std::exception& e) {
+        fail(e.what());
+        return 1;
+    }
+    for (const Diagnostic& d : diagnostics.all()) std::cerr << formatDiagnostic(d);
+    if (!out) return 1;
+    out->stats.times.parseSeconds = parseSeconds;
+
+    // The files.
+    const PixelRegion region = settings.region.value_or(PixelRegion::whole(settings.width, settings.height));
+    const bool cropped = region != PixelRegion::whole(settings.width, settings.height);
+    const Image& color = out->color;
+    WriteOptions writeOptions;
+    writeOptions.assumedGamma = scene->globals.assumedGamma;
+    const IoStatus written = writeImage(
+        cropped ? color.cropped(region.x0, region.y0, region.x1, region.y1) : color, args.output,
+        writeOptions);
+    if (!written.ok()) {
+        fail(written.error);
+        return 1;
+    }
+    if (samplesAov) {
+        const Image& samples = out->samples;
+        const IoStatus s = writeSamplesAov(
+            cropped ? samples.cropped(region.x0, region.y0, region.x1, region.y1) : samples, *samplesAov);
+        if (!s.ok()) {
+            fail(s.error);
+            return 1;
+        }
+    }
+    if (args.statsJson) {
+        std::ofstream file(*args.statsJson);
+        file << statsToJson(out->stats);
+        if (!file.flush()) {
+            fail("cannot write '" + *args.statsJson + "'");
+            return 1;
+        }
+    }
+    if (args.stats) std::cout << formatStatsTable(out->stats);
+    return 0;
+}
+
+}  // namespace
+
+void addRenderCommand(CLI::App& app, CommandResult& result) {
+    auto args = std::make_shared<RenderArgs>();
+    CLI::App* cmd = app.add_subcommand("render", "Render a scene to an image file");
+    cmd->add_option("scene", args->scene, "Scene file (.pov)")->required();
+    cmd->add_option("-o,--output", args->output,
+                    "Image file; the format follows the extension (.png, .exr, .tif, ...)")
+        ->required();
+    cmd->add_option("-W,--width", args->width, "Image width in pixels (default 640)");
+    cmd->add_option("-H,--height", args->height, "Image height in pixels (default 480)");
+    cmd->add_option("--method", args->method, "asos (default), single, grid, jitter or adaptive");
+    cmd->add_option("--eps", args->eps, "ASOS: EPS, a number or a fraction such as 1/64 (default 1/64)");
+    cmd->add_option("--max", args->maxLevel, "ASOS: MAX, the deepest subdivision level (default 4)");
+    cmd->add_option("--jitter", args->jitter,
+                    "on|off: ASOS jitters its MAX-rays, adaptive its sub-samples (default off)");
+    cmd->add_option("--pattern-edges", args->patternEdges,
+                    "on|off: ASOS also subdivides where a pigment pattern's edge crosses a pixel (default off)");
+    cmd->add_option("--samples", args->samples, "grid and jitter: N x N rays per pixel (default 4)");
+    cmd->add_option("--threshold", args->threshold, "adaptive: colour difference that subdivides (default 0.3)");
+    cmd->add_option("--depth", args->depth, "adaptive: subdivision levels (default 2, POV-Ray's +R3)");
+    cmd->add_option("--threads", args->threads, "Worker threads (default 0: all cores)");
+    cmd->add_option("--seed", args->seed, "Seed of the random numbers (default 0)");
+    cmd->add_option("--region", args->region,
+                    "x0,y0,x1,y1: render columns x0..x1-1 and rows y0..y1-1 only, and write that part");
+    cmd->add_option("--clock", args->clock, "Value of `clock`");
+    cmd->add_option("-D,--define", args->defines, "NAME=VALUE declared before the scene runs");
+    cmd->add_option("-L,--library-path", args->includePaths,
+                    "Folder searched by #include after the including file's own");
+    cmd->add_flag("--stats", args->stats, "Print the render statistics");
+    cmd->add_option("--stats-json", args->statsJson, "Write the render statistics as JSON");
+    cmd->add_option("--aov", args->aovs,
+                    "samples=FILE: rays per pixel and deepest level (.exr channels, else a heat map)");
+    cmd->add_flag("--quiet", args->quiet, "No progress bar");
+    cmd->callback([args, &result] { result.exitCode = runRender(*args); });
+}
+
+}  // namespace asos::cli

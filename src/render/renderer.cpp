@@ -1,0 +1,191 @@
+#include "asos/render/renderer.hpp"
+
+#include <chrono>
+#include <stdexcept>
+
+#include <tbb/enumerable_thread_specific.h>
+
+#include "asos/render/asos_settings.hpp"
+#include "asos/render/asos_tracer.hpp"
+#include "asos/render/camera.hpp"
+#include "asos/render/ray_tracer.hpp"
+#include "asos/render/sampling.hpp"
+
+namespace asos {
+
+namespace {
+
+constexpr RenderMethod kMethods[] = {RenderMethod::Asos, RenderMethod::Single, RenderMethod::Grid,
+                                     RenderMethod::Jitter, RenderMethod::Adaptive};
+
+// The largest image side accepted: beyond it pixel counts overflow the
+// counters' consumers and no one means it.
+constexpr int kMaxImageSide = 1 << 16;
+
+TileRenderOptions tileOptions(const RenderSettings& s) {
+    TileRenderOptions o;
+    o.tileSize = s.tileSize;
+    o.threads = s.threads;
+    o.region = s.region;
+    o.progress = s.progress;
+    return o;
+}
+
+// The classic methods: every primary ray is an eye ray traced with plain
+// shadow rays (docs/rendering.md, "Classic anti-aliasing methods").
+TileRenderResult renderClassic(const RayTracer& tracer, const CameraModel& camera,
+                               const RenderSettings& s, const TileRenderOptions& options) {
+    auto eyeRadiance = [&](RenderCounters& counters) {
+        return [&tracer, &counters](const Ray& ray) {
+            ++counters.eyeRays;
+            return tracer.radiance(ray, 1, 1.0, counters);
+        };
+    };
+    switch (s.method) {
+        case RenderMethod::Single:
+            return renderTiles(s.width, s.height, options, [&](int x, int y, RenderCounters& c) {
+                return estimateSingle(camera, x, y, eyeRadiance(c));
+            });
+        case RenderMethod::Grid:
+            return renderTiles(s.width, s.height, options, [&](int x, int y, RenderCounters& c) {
+                return estimateGrid(camera, x, y, s.samples, eyeRadiance(c));
+            });
+        case RenderMethod::Jitter:
+            return renderTiles(s.width, s.height, options, [&](int x, int y, RenderCounters& c) {
+                return estimateJitter(camera, x, y, s.samples, PixelRandom(s.seed, x, y),
+                                      eyeRadiance(c));
+            });
+        case RenderMethod::Adaptive: {
+            AdaptiveSettings adaptive = s.adaptive;
+            adaptive.assumedGamma = tracer.description().globals.assumedGamma;
+            const PixelRegion region = s.region.value_or(PixelRegion::whole(s.width, s.height));
+            const CornerGrid corners =
+                sampleCorners(camera, region, options, [&](const Ray& ray, RenderCounters& c) {
+                    ++c.eyeRays;
+                    return tracer.radiance(ray, 1, 1.0, c);
+                });
+            TileRenderResult r =
+                renderTiles(s.width, s.height, options, [&](int x, int y, RenderCounters& c) {
+                    return estimateAdaptive(camera, x, y, corners.ofPixel(x, y), adaptive,
+                                            PixelRandom(s.seed, x, y), eyeRadiance(c));
+                });
+            r.counters += corners.counters;
+            r.seconds += corners.seconds;
+            return r;
+        }
+        case RenderMethod::Asos: break;
+    }
+    throw std::logic_error("renderClassic called for ASOS");
+}
+
+}  // namespace
+
+const char* methodName(RenderMethod method) {
+    switch (method) {
+        case RenderMethod::Asos: return "asos";
+        case RenderMethod::Single: return "single";
+        case RenderMethod::Grid: return "grid";
+        case RenderMethod::Jitter: return "jitter";
+        case RenderMethod::Adaptive: return "adaptive";
+    }
+    return "?";
+}
+
+std::optional<RenderMethod> parseMethod(std::string_view name) {
+    for (RenderMethod m : kMethods)
+        if (name == methodName(m)) return m;
+    return std::nullopt;
+}
+
+std::string checkRenderSettings(const RenderSettings& s) {
+    std::string problems;
+    auto add = [&](const std::string& p) {
+        if (!p.empty()) problems += (problems.empty() ? "" : "\n") + p;
+    };
+    if (s.width < 1 || s.height < 1 || s.width > kMaxImageSide || s.height > kMaxImageSide)
+        add("image size must be between 1x1 and " + std::to_string(kMaxImageSide) + "x" +
+            std::to_string(kMaxImageSide) + ", not " + std::to_string(s.width) + "x" +
+            std::to_string(s.height));
+    if (s.samples < 1 || s.samples > kMaxSamplesPerSide)
+        add("samples must be between 1 and " + std::to_string(kMaxSamplesPerSide) + ", not " +
+            std::to_string(s.samples));
+    add(checkAdaptiveSettings(s.adaptive));
+    add(checkAsosOptions(s.asos, "asos options"));
+    if (s.threads < 0) add("threads must not be negative");
+    if (s.tileSize < 1) add("tile size must be at least 1");
+    if (s.region && s.width >= 1 && s.height >= 1 && !s.region->within(s.width, s.height))
+        add("the region is empty or not inside the " + std::to_string(s.width) + "x" +
+            std::to_string(s.height) + " image");
+    return problems;
+}
+
+bool checkRenderable(const SceneDescription& d, Diagnostics& diagnostics) {
+    bool ok = true;
+    auto check = [&](const AsosOptions& options, const SourceLoc& loc, const char* what) {
+        if (std::string e = checkAsosOptions(options, what); !e.empty()) {
+            diagnostics.error(loc, e);
+            ok = false;
+        }
+    };
+    check(d.globals.asos, SourceLoc{}, "global_settings asos");
+    for (const Object& o : d.objects) check(o.asos, o.loc, "asos");
+    for (const Light& l : d.lights) {
+        check(l.asos, l.loc, "asos");
+        if (l.area) {
+            diagnostics.error(l.loc, "area_light is not rendered yet: only point lights are");
+            ok = false;
+        }
+    }
+    return ok;
+}
+
+RenderOutput render(const Scene& scene, const RenderSettings& settings) {
+    if (std::string problems = checkRenderSettings(settings); !problems.empty())
+        throw std::invalid_argument(problems);
+    const CameraModel camera(scene.description().camera, settings.width, settings.height);
+    const RayTracer tracer(scene);
+    const TileRenderOptions options = tileOptions(settings);
+
+    TileRenderResult r;
+    if (settings.method == RenderMethod::Asos) {
+        const AsosTracer asos(tracer, camera,
+                              sceneAsosSettings(scene.description().globals, settings.asos),
+                              settings.seed, settings.patternEdges);
+        // Per-thread buffers: no pixel allocates once they have grown.
+        tbb::enumerable_thread_specific<AsosScratch> scratch;
+        r = renderTiles(settings.width, settings.height, options,
+                        [&](int x, int y, RenderCounters& c) {
+                            return asos.tracePixel(x, y, scratch.local(), c);
+                        });
+    } else {
+        r = renderClassic(tracer, camera, settings, options);
+    }
+
+    RenderOutput out;
+    out.color = std::move(r.color);
+    out.samples = std::move(r.samples);
+    out.stats.method = methodName(settings.method);
+    out.stats.width = settings.width;
+    out.stats.height = settings.height;
+    out.stats.threads = r.threads;
+    out.stats.counters = r.counters;
+    out.stats.times.renderSeconds = r.seconds;
+    return out;
+}
+
+std::optional<RenderOutput> render(const SceneDescription& description,
+                                   const RenderSettings& settings, Diagnostics& diagnostics) {
+    if (std::string problems = checkRenderSettings(settings); !problems.empty())
+        throw std::invalid_argument(problems);
+    if (!checkRenderable(description, diagnostics)) return std::nullopt;
+    const auto start = std::chrono::steady_clock::now();
+    std::unique_ptr<Scene> scene = Scene::build(description, diagnostics);
+    const double buildSeconds =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    if (!scene) return std::nullopt;
+    RenderOutput out = render(*scene, settings);
+    out.stats.times.buildSeconds = buildSeconds;
+    return out;
+}
+
+}  // namespace asos

@@ -1,0 +1,350 @@
+// Known answers for the ASOS eye tracer (paper: "Adaptive Supersampling in
+// Object-Space"): coverage of an edge within EPS of the exact area, one ray
+// for a covered pixel, thin objects found, the leaf count bounded by 4^MAX,
+// and the pathological in/out construction stopped by MAX.
+#include <catch2/catch.hpp>
+
+#include <cmath>
+#include <random>
+
+#include "asos/render/asos_tracer.hpp"
+#include "render_scenes.hpp"
+
+using namespace asos;
+using namespace asos::testing;
+
+namespace {
+
+// A scene seen by an orthographic camera with one world unit per pixel:
+// image point (u, v) sees world (u, -v).
+struct Setup {
+    SceneDescription description;
+    std::unique_ptr<Scene> scene;
+    std::unique_ptr<RayTracer> tracer;
+    std::unique_ptr<CameraModel> camera;
+    std::unique_ptr<AsosTracer> asos;
+    AsosScratch scratch;
+
+    Setup(SceneDescription d, int width, int height, AsosSettings settings, std::uint64_t seed = 0,
+          bool patternEdges = false)
+        : description(std::move(d)) {
+        description.camera = orthoCamera(width, height);
+        scene = buildScene(description);
+        tracer = std::make_unique<RayTracer>(*scene);
+        camera = std::make_unique<CameraModel>(description.camera, width, height);
+        asos = std::make_unique<AsosTracer>(*tracer, *camera, settings, seed, patternEdges);
+    }
+    AsosPixelReport pixel(int x, int y) {
+        RenderCounters counters;
+        return asos->tracePixelReport(x, y, scratch, counters);
+    }
+};
+
+// The in-plane normal of a half-plane's edge, for the exact areas.
+Vec2 edgeNormal(double degrees) {
+    const Vec3 n = Transform::rotateDegrees({0.0, 0.0, degrees}).vector({1.0, 0.0, 0.0});
+    return glm::normalize(Vec2(n.x, n.y));
+}
+
+// A half-plane box: object space x <= 0, placed by rotating about z and
+// moving its edge through `through`. Its side face x = 0 is turned 10 degrees
+// away from the camera about its front edge, so that that edge alone
+// outlines it (seen edge on, the back edge would lie on the outline too).
+Object halfPlane(double degrees, const Vec2& through) {
+    auto tiltBy = [](double beta) {
+        return Transform::translate({0.0, 0.0, -1.0}) * Transform::rotateDegrees({0.0, beta, 0.0}) *
+               Transform::translate({0.0, 0.0, 1.0});
+    };
+    Transform tilt = tiltBy(10.0);
+    if (tilt.point({0.0, 0.0, 1.0}).x > 0.0) tilt = tiltBy(-10.0);
+    const Transform t = Transform::translate({through.x, through.y, 0.0}) *
+                        Transform::rotateDegrees({0.0, 0.0, degrees}) * tilt;
+    return makeObject(BoxShape{{-1000.0, -1000.0, -1.0}, {0.0, 1000.0, 1.0}}, coverageTexture(), t);
+}
+
+}  // namespace
+
+TEST_CASE("ASOS measures a straight edge through a pixel within EPS of its exact area", "[asos]") {
+    std::mt19937 rng(11);
+    std::uniform_real_distribution<double> angle(0.0, 360.0), offset(0.05, 0.95);
+    // MAX high enough that EPS ends the subdivision: the cones around the
+    // pyrays also call pyrays within half a diagonal of the edge marginal,
+    // so the bound may reach 1/64 up to two levels later than the paper's
+    // log2(1/EPS) - 1 = 5.
+    const AsosSettings settings{1.0 / 64.0, 8, false};
+    for (int i = 0; i < 150; ++i) {
+        const double degrees = angle(rng);
+        // The edge passes through a point of pixel (3, 3), whose image square
+        // [3, 4] x [3, 4] is world [3, 4] x [-4, -3].
+        const Vec2 through{3.0 + offset(rng), -3.0 - offset(rng)};
+        SceneDescription d;
+        d.objects.push_back(halfPlane(degrees, through));
+        Setup s(d, 8, 8, settings);
+        // Covered: world points q with (q - through) . n <= 0, n the box's
+        // local x axis; in image coordinates q = (u, -v).
+        const Vec2 n = edgeNormal(degrees);
+        const double exact = halfPlaneArea(3, 3, 4, 4, n.x, -n.y, glm::dot(n, through));
+        const AsosPixelReport r = s.pixel(3, 3);
+        INFO("angle " << degrees << ", through " << through.x << ", " << through.y);
+        CHECK(std::abs(r.result.color.x - exact) <= settings.eps + 1e-9);
+        REQUIRE_FALSE(r.levels.empty());
+        // It stopped on EPS, not on MAX.
+        CHECK(r.levels.back().bound <= settings.eps);
+    }
+}
+
+TEST_CASE("ASOS spends one ray on a pixel inside a sphere", "[asos]") {
+    SceneDescription d;
+    d.objects.push_back(makeObject(SphereShape{{4.0, -4.0, 0.0}, 50.0}, coverageTexture(0.5)));
+    Setup s(d, 8, 8, AsosSettings{});
+    for (int y = 0; y < 8; ++y)
+        for (int x = 0; x < 8; ++x) {
+            RenderCounters counters;
+            const PixelResult r = s.asos->tracePixel(x, y, s.scratch, counters);
+            CHECK(r.rays == 1);
+            CHECK(r.level == 0);
+            CHECK(counters.eyeRays == 1);
+            CHECK(r.color.x == Approx(0.5));
+        }
+
+    // The same through a perspective camera, and behind a second sphere's
+    // silhouette elsewhere in the image.
+    SceneDescription p;
+    p.camera = lookAtCamera({0, 0, -10}, {0, 0, 0}, 40);
+    p.objects.push_back(makeObject(SphereShape{{0, 0, 0}, 3.0}, coverageTexture()));
+    p.objects.push_back(makeObject(SphereShape{{0, 0, 20}, 1.0}, coverageTexture()));
+    const auto scene = buildScene(p);
+    const RayTracer tracer(*scene);
+    const CameraModel camera(p.camera, 64, 48);
+    const AsosTracer asos(tracer, camera, AsosSettings{}, 0);
+    AsosScratch scratch;
+    RenderCounters counters;
+    const PixelResult r = asos.tracePixel(32, 24, scratch, counters);
+    CHECK(r.rays == 1);
+    CHECK(counters.eyeRays == 1);
+    CHECK(counters.rayTests == 1);  // only the sphere in front is intersected
+}
+
+TEST_CASE("ASOS finds a 0.2-pixel-wide object in every pixel it crosses", "[asos]") {
+    // A strip 0.2 pixels wide at 23 degrees across a 16 x 16 image.
+    const double degrees = 23.0, width = 0.2;
+    const Vec2 through{8.0, -8.0};
+    const Transform t = Transform::translate({through.x, through.y, 0.0}) *
+                        Transform::rotateDegrees({0.0, 0.0, degrees});
+    SceneDescription d;
+    d.objects.push_back(makeObject(BoxShape{{-width / 2, -1000.0, -1.0}, {width / 2, 1000.0, 1.0}},
+                                   coverageTexture(), t));
+    const Vec3 n = glm::normalize(t.vector({1.0, 0.0, 0.0}));
+    const double c = n.x * through.x + n.y * through.y;
+    Setup s(d, 16, 16, AsosSettings{});
+
+    int crossed = 0, missedBySingle = 0;
+    double total = 0.0, exactTotal = 0.0;
+    for (int y = 0; y < 16; ++y)
+        for (int x = 0; x < 16; ++x) {
+            const double exact = halfPlaneArea(x, y, x + 1, y + 1, n.x, -n.y, c + width / 2) -
+                                 halfPlaneArea(x, y, x + 1, y + 1, n.x, -n.y, c - width / 2);
+            const AsosPixelReport r = s.pixel(x, y);
+            total += r.result.color.x;
+            exactTotal += exact;
+            if (exact <= 0.0) continue;
+            ++crossed;
+            INFO("pixel " << x << ", " << y << ": exact " << exact);
+            CHECK(r.result.level >= 1);  // detected and subdivided
+            if (exact > 0.02) CHECK(r.result.color.x > 0.0);
+            CHECK(std::abs(r.result.color.x - exact) < 0.05);
+            // One ray through the pixel centre misses most of these pixels.
+            const Ray centre = s.camera->pixelCenterRay(x, y);
+            if (!s.scene->intersect(centre, 0.0, kInfinity)) ++missedBySingle;
+        }
+    CHECK(crossed > 16);
+    CHECK(missedBySingle > crossed / 2);
+    CHECK(total == Approx(exactTotal).epsilon(0.01));
+}
+
+TEST_CASE("ASOS never shades more than 4^MAX leaves in a pixel", "[asos]") {
+    std::mt19937 rng(5);
+    std::uniform_real_distribution<double> u(0.0, 8.0), r(0.02, 0.6);
+    SceneDescription d;
+    for (int i = 0; i < 60; ++i)
+        d.objects.push_back(
+            makeObject(SphereShape{{u(rng), -u(rng), u(rng)}, r(rng)}, coverageTexture()));
+    for (int maxLevel = 0; maxLevel <= 4; ++maxLevel) {
+        for (bool jitter : {false, true}) {
+            Setup s(d, 8, 8, AsosSettings{0.0, maxLevel, jitter});
+            int deepest = 0;
+            for (int y = 0; y < 8; ++y)
+                for (int x = 0; x < 8; ++x) {
+                    const AsosPixelReport rep = s.pixel(x, y);
+                    CHECK(rep.leaves >= 1);
+                    CHECK(rep.leaves <= (1 << (2 * maxLevel)));
+                    CHECK(static_cast<int>(rep.result.level) <= maxLevel);
+                    deepest = std::max(deepest, static_cast<int>(rep.result.level));
+                }
+            // EPS 0 subdivides every marginal pixel down to MAX.
+            CHECK(deepest == maxLevel);
+        }
+    }
+}
+
+TEST_CASE("The paper's pathological pixel (K-rays alternately in and out) stops at MAX", "[asos]") {
+    // Tiny spheres at the centres of the K-squares of pixel (0, 0) for K = 0,
+    // 2 and 4: every K-ray hits for even K and misses for odd K, so the bound
+    // never falls and only MAX ends the subdivision ("Upper Bound on Number
+    // of Subdivisions").
+    SceneDescription d;
+    for (int level : {0, 2, 4}) {
+        const int n = 1 << level;
+        for (int j = 0; j < n; ++j)
+            for (int i = 0; i < n; ++i)
+                d.objects.push_back(makeObject(
+                    SphereShape{{(i + 0.5) / n, -(j + 0.5) / n, 0.0}, 0.02}, coverageTexture()));
+    }
+    const AsosSettings settings{1.0 / 1024.0, 4, false};
+    Setup s(d, 1, 1, settings);
+    const AsosPixelReport r = s.pixel(0, 0);
+    CHECK(r.result.level == 4);
+    CHECK(r.leaves == 256);
+    REQUIRE(r.levels.size() == 4);
+    for (const AsosLevelReport& level : r.levels) {
+        INFO("level " << level.level);
+        CHECK(level.marginal == (1 << (2 * level.level)));
+        CHECK(level.bound > settings.eps);
+        // Even levels: every K-ray in; odd levels: none.
+        CHECK(level.in == (level.level % 2 == 0 ? level.marginal : 0));
+    }
+    // The MAX-rays all hit their spheres.
+    CHECK(r.result.color.x == Approx(1.0));
+}
+
+TEST_CASE("ASOS settings: EPS, MAX and jitter, per object the finest", "[asos]") {
+    SceneDescription d;
+    d.objects.push_back(halfPlane(31.0, {3.37, -3.61}));
+    // A coarse EPS stops early, a fine one goes deeper.
+    Setup coarse(d, 8, 8, AsosSettings{0.25, 4, false});
+    Setup fine(d, 8, 8, AsosSettings{1.0 / 256.0, 8, false});
+    const AsosPixelReport a = coarse.pixel(3, 3), b = fine.pixel(3, 3);
+    CHECK(a.result.level < b.result.level);
+    CHECK(a.result.rays < b.result.rays);
+
+    // An object's own block refines the scene's setting.
+    d.objects[0].asos.maxLevel = 1;
+    Setup own(d, 8, 8, AsosSettings{0.0, 4, false});
+    CHECK(own.pixel(3, 3).result.level == 1);
+    // Two objects in a pixel: the finest of them rules.
+    d.objects.push_back(halfPlane(-50.0, {3.5, -3.5}));
+    d.objects.back().asos.maxLevel = 3;
+    Setup both(d, 8, 8, AsosSettings{0.0, 4, false});
+    CHECK(both.pixel(3, 3).result.level == 3);
+
+    // Jitter moves MAX-rays inside their squares: the coverage changes but
+    // stays within the leaves' resolution, and it depends on the seed only.
+    d.objects.resize(1);
+    d.objects[0].asos = {};
+    Setup j1(d, 8, 8, AsosSettings{0.0, 3, true}, 1), j1again(d, 8, 8, AsosSettings{0.0, 3, true}, 1);
+    Setup j2(d, 8, 8, AsosSettings{0.0, 3, true}, 2), plain(d, 8, 8, AsosSettings{0.0, 3, false}, 1);
+    const double c1 = j1.pixel(3, 3).result.color.x, c2 = j2.pixel(3, 3).result.color.x;
+    const double c0 = plain.pixel(3, 3).result.color.x;
+    CHECK(c1 == j1again.pixel(3, 3).result.color.x);
+    CHECK(c1 != c2);
+    CHECK(std::abs(c1 - c0) < 0.1);
+}
+
+TEST_CASE("ASOS tallies interpenetrating Full objects", "[asos]") {
+    // A sphere sunk into a slab seen from the front: inside the sphere's
+    // silhouette both are Full, and the circle where the sphere leaves the
+    // slab is a visible edge that no silhouette shows.
+    SceneDescription d;
+    d.objects.push_back(makeObject(BoxShape{{-100, -100, 0}, {100, 100, 100}}, coverageTexture(0.0)));
+    d.objects.push_back(makeObject(SphereShape{{8, -8, 0}, 6.0}, coverageTexture(1.0)));
+    // The sphere bulges out of the slab's face z = 0 toward the camera; where
+    // it does, it is seen (value 1) and elsewhere the slab (0). Seen along z,
+    // the visible disc is the whole sphere silhouette, radius 6, so the pixels
+    // on the circle of radius 6 are edge pixels; those on the circle
+    // x^2 + y^2 = 36 - z^2 at z = 3 lie inside it, with nothing marginal.
+    d.objects[1].shape = SphereShape{{8, -8, 3}, 6.0};  // the slab cuts it at z = 0: radius sqrt(27)
+    Setup s(d, 16, 16, AsosSettings{1.0 / 64.0, 4, false});
+    const double radius = std::sqrt(27.0);
+    int edgePixels = 0;
+    for (int y = 0; y < 16; ++y)
+        for (int x = 0; x < 16; ++x) {
+            // Pixels that the circle of radius sqrt(27) about (8, 8) crosses.
+            double nearest = kInfinity, farthest = 0.0;
+            for (double cy : {double(y), y + 1.0})
+                for (double cx : {double(x), x + 1.0})
+                    farthest = std::max(farthest, std::hypot(cx - 8.0, cy - 8.0));
+            nearest = std::hypot(std::max({x - 8.0, 0.0, 8.0 - (x + 1.0)}),
+                                 std::max({y - 8.0, 0.0, 8.0 - (y + 1.0)}));
+            if (!(nearest < radius - 0.05 && farthest > radius + 0.05)) continue;
+            ++edgePixels;
+            const AsosPixelReport r = s.pixel(x, y);
+            INFO("pixel " << x << ", " << y);
+            CHECK(r.result.level >= 1);
+            CHECK(r.result.color.x > 0.0);
+            CHECK(r.result.color.x < 1.0);
+        }
+    CHECK(edgePixels > 20);
+}
+
+TEST_CASE("With pattern edges, ASOS measures a checker edge within EPS", "[asos]") {
+    // A checker plane facing the camera, the pattern turned about z so that
+    // its cell edges cross the pixels at an angle: pixel values are the
+    // fraction of the pixel in the colour-1 cells.
+    std::mt19937 rng(21);
+    std::uniform_real_distribution<double> angle(5.0, 40.0), offset(0.0, 1.0);
+    const AsosSettings settings{1.0 / 64.0, 8, false};
+    int pixels = 0, onePixelRays = 0;
+    for (int i = 0; i < 24; ++i) {
+        const double degrees = angle(rng);
+        const Vec2 shift{offset(rng), offset(rng)};
+        Texture checker = coverageTexture(0.0);
+        checker.pigment.kind = Pigment::Kind::Checker;
+        checker.pigment.color2.rgb = Vec3(1.0);
+        // Cells 5 pixels wide, so that a pixel meets at most one edge.
+        checker.pigment.worldFromPattern = Transform::translate({shift.x, shift.y, 0.0}) *
+                                           Transform::rotateDegrees({0.0, 0.0, degrees}) *
+                                           Transform::scale(Vec3(5.0));
+        SceneDescription d;
+        d.objects.push_back(makeObject(PlaneShape{{0, 0, -1}, 0.0}, checker));
+        Setup s(d, 16, 16, settings, 0, true);
+        // Pixel values against a 128 x 128 point count of the pattern.
+        const Pigment& pigment = d.objects[0].texture->pigment;
+        for (int y = 0; y < 16; y += 5)
+            for (int x = 0; x < 16; x += 3) {
+                int ones = 0;
+                for (int j = 0; j < 128; ++j)
+                    for (int k = 0; k < 128; ++k)
+                        ones += pigmentIndex(pigment, {x + (k + 0.5) / 128, -(y + (j + 0.5) / 128), 0.0});
+                const double exact = ones / 16384.0;
+                const AsosPixelReport r = s.pixel(x, y);
+                INFO("case " << i << ", pixel " << x << ", " << y << ": exact " << exact);
+                // The point count is itself within about 1/128 of the area.
+                CHECK(std::abs(r.result.color.x - exact) <= settings.eps + 0.008);
+                if (exact > 0.02 && exact < 0.98) CHECK(r.result.level >= 1);
+                ++pixels;
+                if (exact == 0.0 || exact == 1.0) onePixelRays += r.result.rays == 1;
+            }
+    }
+    // Pixels inside one cell cost one ray, but for the few an edge barely
+    // touches (too little for the point count to see).
+    CHECK(onePixelRays > pixels / 2);
+}
+
+TEST_CASE("Without pattern edges a pixel on one object costs one ray, as in the paper", "[asos]") {
+    Texture checker = coverageTexture(0.0);
+    checker.pigment.kind = Pigment::Kind::Checker;
+    checker.pigment.color2.rgb = Vec3(1.0);
+    checker.pigment.worldFromPattern = Transform::scale(Vec3(0.3));
+    SceneDescription d;
+    d.objects.push_back(makeObject(PlaneShape{{0, 0, -1}, 0.0}, checker));
+    d.camera = orthoCamera(8, 8);
+    const auto scene = buildScene(d);
+    const RayTracer tracer(*scene);
+    const CameraModel camera(d.camera, 8, 8);
+    const AsosTracer paperOnly(tracer, camera, AsosSettings{}, 0, false);
+    const AsosTracer withEdges(tracer, camera, AsosSettings{}, 0, true);
+    AsosScratch scratch;
+    RenderCounters counters;
+    CHECK(paperOnly.tracePixel(3, 3, scratch, counters).rays == 1);
+    CHECK(withEdges.tracePixel(3, 3, scratch, counters).rays > 1);
+}

@@ -1,0 +1,193 @@
+// `asos render` as a user runs it: images written by extension, statistics,
+// the samples AOV; bad options and scenes give an error, exit status 1 and no
+// file; the same bytes for any thread count, and regions that tile the image.
+#include <catch2/catch.hpp>
+
+#include <fcntl.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "asos/image/image_io.hpp"
+
+namespace fs = std::filesystem;
+using namespace asos;
+
+namespace {
+
+struct Result {
+    int exitCode = -1;
+    std::string out;
+    std::string err;
+};
+
+fs::path scratchDir() {
+    const fs::path dir = fs::path(ASOS_BINARY_DIR) / "test-output" / "cli_render";
+    fs::create_directories(dir);
+    return dir;
+}
+
+std::string slurp(const fs::path& p) {
+    std::ifstream in(p, std::ios::binary);
+    std::ostringstream s;
+    s << in.rdbuf();
+    return s.str();
+}
+
+// Runs the asos program in the scratch folder; stdout and stderr are kept
+// in files of this process's own (ctest runs test cases side by side).
+Result runAsos(std::vector<std::string> args) {
+    const fs::path dir = scratchDir();
+    const std::string tag = std::to_string(getpid());
+    const fs::path out = dir / ("stdout-" + tag + ".txt");
+    const fs::path err = dir / ("stderr-" + tag + ".txt");
+    const pid_t pid = fork();
+    if (pid == 0) {
+        const int o = open(out.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+        const int e = open(err.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+        if (o < 0 || e < 0 || chdir(dir.c_str()) != 0) _exit(126);
+        dup2(o, STDOUT_FILENO);
+        dup2(e, STDERR_FILENO);
+        std::vector<char*> argv{const_cast<char*>(ASOS_EXE)};
+        for (auto& a : args) argv.push_back(a.data());
+        argv.push_back(nullptr);
+        execv(ASOS_EXE, argv.data());
+        _exit(127);
+    }
+    int status = 0;
+    waitpid(pid, &status, 0);
+    Result r;
+    r.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+    r.out = slurp(out);
+    r.err = slurp(err);
+    return r;
+}
+
+// A small scene with every kind of edge and a shadow.
+fs::path sceneFile() {
+    const fs::path p = scratchDir() / "scene.pov";
+    std::ofstream(p) << R"(#version 3.7;
+global_settings { assumed_gamma 1.0 }
+background { color rgb <0.3, 0.4, 0.6> }
+camera { location <0, 3, -7> look_at <0, 0.8, 0> angle 45 }
+light_source { <-5, 9, -6>, color rgb 1 }
+plane { y, 0 pigment { color rgb 0.8 } }
+sphere { <-1, 1, 0>, 1 pigment { color rgb <0.9, 0.2, 0.1> } finish { phong 0.5 } }
+box { <0.4, 0, -0.5>, <1.6, 1.2, 0.7> rotate y*25 pigment { color rgb <0.2, 0.4, 0.9> } }
+cylinder { <0, 0, 2>, <0, 2, 2>, 0.3 pigment { color rgb <0.2, 0.8, 0.3> } }
+)";
+    return p;
+}
+
+}  // namespace
+
+TEST_CASE("asos render writes the image, statistics and the samples AOV", "[cli]") {
+    const std::string scene = sceneFile().string();
+    const fs::path dir = scratchDir();
+    fs::remove(dir / "ok.png");
+    const Result r = runAsos({"render", scene, "-o", "ok.png", "-W", "64", "-H", "48", "--stats",
+                           "--stats-json", "ok.json", "--aov", "samples=ok_samples.exr", "--quiet"});
+    INFO(r.err);
+    REQUIRE(r.exitCode == 0);
+    CHECK(r.err.empty());
+    CHECK_THAT(r.out, Catch::Contains("Render statistics"));
+    CHECK_THAT(r.out, Catch::Contains("pyrays level 0           3072"));
+    CHECK_THAT(slurp(dir / "ok.json"), Catch::Contains("\"method\": \"asos\""));
+    const ReadResult image = readImage(dir / "ok.png");
+    REQUIRE(image.ok());
+    CHECK(image.image.width() == 64);
+    CHECK(image.image.height() == 48);
+    const ReadResult samples = readImage(dir / "ok_samples.exr");
+    REQUIRE(samples.ok());
+    CHECK(samples.image.channelIndex("rays") >= 0);
+    CHECK(samples.image.channelIndex("level") >= 0);
+
+    for (const char* method : {"single", "grid", "jitter", "adaptive"}) {
+        const Result m = runAsos({"render", scene, "-o", std::string(method) + ".exr", "-W", "32", "-H",
+                               "24", "--method", method, "--samples", "2", "--quiet"});
+        INFO(method << ": " << m.err);
+        CHECK(m.exitCode == 0);
+        CHECK(readImage(dir / (std::string(method) + ".exr")).ok());
+    }
+}
+
+TEST_CASE("asos render: bad options and scenes give an error and no file", "[cli]") {
+    const std::string scene = sceneFile().string();
+    const fs::path dir = scratchDir();
+    // Every bad option is reported, in one run, before anything is parsed.
+    fs::remove(dir / "bad.png");
+    const Result r1 = runAsos({"render", scene, "-o", "bad.png", "--method", "stochastic", "--eps",
+                               "abc", "--max", "11", "--jitter", "maybe", "--samples", "0", "--depth",
+                               "9", "-W", "0", "--threads", "-1", "--aov", "normals=x.exr", "-D",
+                               "1x=2"});
+    CHECK(r1.exitCode == 1);
+    for (const char* mention : {"--method", "--eps", "max", "--jitter", "samples", "depth",
+                                "image size", "threads", "--aov", "-D"})
+        CHECK_THAT(r1.err, Catch::Contains(std::string("error: ")) && Catch::Contains(mention));
+    CHECK_FALSE(fs::exists(dir / "bad.png"));
+
+    const Result r2 = runAsos({"render", scene, "-o", "bad.notaformat", "-W", "16", "-H", "12",
+                               "--region", "0,0,100,100", "--eps", "1/0"});
+    CHECK(r2.exitCode == 1);
+    for (const char* mention : {"-o", "--region", "--eps"}) CHECK_THAT(r2.err, Catch::Contains(mention));
+    const Result r3 = runAsos({"render", scene, "-o", "bad.png", "-W", "16", "-H", "12", "--eps", "-0.5"});
+    CHECK(r3.exitCode == 1);
+    CHECK_THAT(r3.err, Catch::Contains("eps must be"));
+    CHECK_FALSE(fs::exists(dir / "bad.png"));
+
+    // A scene error: file:line:col, no image.
+    const fs::path broken = dir / "broken.pov";
+    std::ofstream(broken) << "sphere { <0, 0, 0>, 1\n";
+    fs::remove(dir / "broken.png");
+    const Result r = runAsos({"render", broken.string(), "-o", "broken.png", "-W", "8", "-H", "6"});
+    CHECK(r.exitCode == 1);
+    CHECK_THAT(r.err, Catch::Contains("broken.pov:"));
+    CHECK_FALSE(fs::exists(dir / "broken.png"));
+
+    // A scene the renderer cannot render yet.
+    const fs::path area = dir / "area.pov";
+    std::ofstream(area) << "light_source { <0, 5, 0>, 1 area_light x, z, 2, 2 }\n"
+                           "sphere { 0, 1 }\n";
+    const Result a = runAsos({"render", area.string(), "-o", "area.png", "-W", "8", "-H", "6"});
+    CHECK(a.exitCode == 1);
+    CHECK_THAT(a.err, Catch::Contains("area.pov:1:"));
+    CHECK_FALSE(fs::exists(dir / "area.png"));
+}
+
+TEST_CASE("asos render gives the same bytes for any thread count and region tiling", "[cli]") {
+    const std::string scene = sceneFile().string();
+    const fs::path dir = scratchDir();
+    const std::vector<std::string> common{"render", scene, "-W", "48", "-H", "36", "--jitter", "on",
+                                          "--seed", "9", "--quiet"};
+    auto run = [&](const std::string& out, std::vector<std::string> extra) {
+        std::vector<std::string> args = common;
+        args.push_back("-o");
+        args.push_back(out);
+        args.insert(args.end(), extra.begin(), extra.end());
+        const Result r = runAsos(args);
+        INFO(r.err);
+        REQUIRE(r.exitCode == 0);
+    };
+    run("t1.png", {"--threads", "1"});
+    run("t2.png", {"--threads", "2"});
+    CHECK(slurp(dir / "t1.png") == slurp(dir / "t2.png"));
+
+    // Each region's file holds exactly that part of the whole image.
+    const ReadResult whole = readImage(dir / "t1.png");
+    REQUIRE(whole.ok());
+    const int parts[3][4] = {{0, 0, 48, 20}, {0, 20, 30, 36}, {30, 20, 48, 36}};
+    for (const auto& p : parts) {
+        const std::string region = std::to_string(p[0]) + "," + std::to_string(p[1]) + "," +
+                                   std::to_string(p[2]) + "," + std::to_string(p[3]);
+        run("part.png", {"--region", region, "--threads", "2"});
+        const ReadResult part = readImage(dir / "part.png");
+        REQUIRE(part.ok());
+        INFO("region " << region);
+        CHECK(part.image == whole.image.cropped(p[0], p[1], p[2], p[3]));
+    }
+}
