@@ -53,15 +53,23 @@ Bounds3 Primitive::worldBounds() const { return worldBounds_; }
 
 std::optional<SurfaceHit> Primitive::intersect(const Ray& worldRay, double tMin,
                                                double tMax) const {
-    const Ray ray = frame_.rayToLocal(worldRay);
-    const std::optional<LocalHit> hit =
-        visit([&](const auto& s) { return s.intersect(ray, tMin, tMax); });
+    const std::optional<LocalHit> hit = intersectLocal(worldRay, tMin, tMax);
     if (!hit) return std::nullopt;
+    return surfaceHit(worldRay, *hit);
+}
+
+std::optional<LocalHit> Primitive::intersectLocal(const Ray& worldRay, double tMin,
+                                                  double tMax) const {
+    const Ray ray = frame_.rayToLocal(worldRay);
+    return visit([&](const auto& s) { return s.intersect(ray, tMin, tMax); });
+}
+
+SurfaceHit Primitive::surfaceHit(const Ray& worldRay, const LocalHit& hit) const {
     SurfaceHit out;
-    out.t = hit->t;
-    out.position = worldRay.at(hit->t);
-    out.normal = frame_.normalToWorld(hit->normal);
-    out.objectPoint = frame_.pointToObject(hit->point);
+    out.t = hit.t;
+    out.position = worldRay.at(hit.t);
+    out.normal = frame_.normalToWorld(hit.normal);
+    out.objectPoint = frame_.pointToObject(hit.point);
     return out;
 }
 

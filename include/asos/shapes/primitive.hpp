@@ -35,6 +35,12 @@ public:
     Bounds3 worldBounds() const;  // tight-ish, conservative; unspecified when !bounded()
     // The nearest hit with t in [tMin, tMax] of a ray with a unit direction.
     std::optional<SurfaceHit> intersect(const Ray& worldRay, double tMin, double tMax) const;
+    // The same in two phases, for a search over many primitives: the hit in
+    // the local frame (t is the world ray's), cheap to compute and discard,
+    // then the world record for the nearest one only.
+    // surfaceHit(ray, *intersectLocal(ray, lo, hi)) == *intersect(ray, lo, hi).
+    std::optional<LocalHit> intersectLocal(const Ray& worldRay, double tMin, double tMax) const;
+    SurfaceHit surfaceHit(const Ray& worldRay, const LocalHit& hit) const;
     bool intersectAny(const Ray& worldRay, double tMin, double tMax) const;
     ConeClass classify(const Cone& worldCone) const;
     // The same, for a cone whose trigonometry is done once for many objects.
