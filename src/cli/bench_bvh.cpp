@@ -171,7 +171,6 @@ struct Settings {
     std::uint64_t seed = 1;
     std::string scenes = "both";
     int passes = 3;
-    BvhBuildOptions build;
 };
 
 // Build time is Scene::build's: the primitives and the BVH over them.
@@ -242,9 +241,6 @@ void addBenchBvhCommand(CLI::App& bench, CommandResult& result) {
         ->check(CLI::Range(1, 100));
     cmd->add_option("--scenes", settings->scenes, "spheres, triangles or both")
         ->check(CLI::IsMember({"spheres", "triangles", "both"}));
-    cmd->add_option("--leaf", settings->build.maxLeafSize, "max items per leaf")->check(CLI::Range(1, 15));
-    cmd->add_option("--traversal-cost", settings->build.traversalCost, "SAH node cost in item tests")
-        ->check(CLI::NonNegativeNumber);
     cmd->callback([settings, &result] { result.exitCode = run(*settings); });
 }
 
