@@ -1,5 +1,6 @@
 // `asos bench render [SCENE] [-W 640 -H 480] [--threads 1,2] [--repeat 3] [--samples 4]`:
-// renders a scene by every method (asos, single, grid, jitter, adaptive) with
+// renders a scene by every method (asos, asos with pattern edges, single,
+// grid, jitter, adaptive) with
 // each thread count and prints a table of render time (best of --repeat),
 // rays (eye and reflected, shadow, all), pyrays, rays per second, and each method's rays
 // and time relative to ASOS. Without SCENE it renders the built-in scene of
@@ -94,16 +95,22 @@ int runBench(const BenchArgs& args) {
     };
     std::vector<Row> rows;
     const std::string samples = std::to_string(args.samples);
-    const std::pair<RenderMethod, std::string> methods[] = {
-        {RenderMethod::Asos, "asos"},
-        {RenderMethod::Single, "single"},
-        {RenderMethod::Grid, "grid " + samples + "x" + samples},
-        {RenderMethod::Jitter, "jitter " + samples + "x" + samples},
-        {RenderMethod::Adaptive, "adaptive"}};
+    struct Method {
+        RenderMethod method;
+        std::string label;
+        bool patternEdges;
+    };
+    const Method methods[] = {{RenderMethod::Asos, "asos", false},
+                              {RenderMethod::Asos, "asos+patterns", true},
+                              {RenderMethod::Single, "single", false},
+                              {RenderMethod::Grid, "grid " + samples + "x" + samples, false},
+                              {RenderMethod::Jitter, "jitter " + samples + "x" + samples, false},
+                              {RenderMethod::Adaptive, "adaptive", false}};
     for (int threads : args.threads)
-        for (const auto& [method, label] : methods) {
+        for (const auto& [method, label, patternEdges] : methods) {
             RenderSettings s;
             s.method = method;
+            s.patternEdges = patternEdges;
             s.width = args.width;
             s.height = args.height;
             s.samples = args.samples;
