@@ -49,7 +49,9 @@ struct AreaLight {
     Vec3 axis2{0.0};
     int size1 = 1;
     int size2 = 1;
-    int adaptive = 0;
+    // POV-Ray's `adaptive n`; absent, every point of the grid is sampled
+    // (POV-Ray's default Adaptive_Level of 100 subdivides to the full grid).
+    std::optional<int> adaptive;
     bool jitter = false;
     bool circular = false;
     bool orient = false;
