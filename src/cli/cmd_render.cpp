@@ -1,5 +1,6 @@
 // asos render SCENE -o OUT.png|.exr|.tif|… [-W 640 -H 480] [--method asos|single|grid|jitter|adaptive]
-//   [--eps E|A/B --max M --jitter on|off --pattern-edges on|off] [--samples N] [--threshold T --depth D] [--threads N]
+//   [--eps E|A/B --max M --jitter on|off --pattern-edges on|off] [--samples N] [--threshold T --depth D]
+//   [--light-method asos|grid] [--light-samples N] [--shadow-apex surface|behind] [--threads N]
 //   [--seed S] [--region x0,y0,x1,y1] [--clock C] [-D NAME=VALUE]... [-L DIR]...
 //   [--stats] [--stats-json FILE] [--aov samples=FILE] [--quiet]
 // Parses the scene, renders it (asos/render/renderer.hpp) and writes the
@@ -44,6 +45,9 @@ struct RenderArgs {
     int samples = 4;
     double threshold = 0.3;
     int depth = 2;
+    std::optional<std::string> lightMethod;
+    std::optional<int> lightSamples;
+    std::string shadowApex = "surface";
     int threads = 0;
     std::uint64_t seed = 0;
     std::optional<std::string> region;
@@ -138,6 +142,16 @@ int runRender(const RenderArgs& args) {
     settings.samples = args.samples;
     settings.adaptive.threshold = args.threshold;
     settings.adaptive.depth = args.depth;
+    if (args.lightMethod) {
+        settings.lightMethod = parseLightMethod(*args.lightMethod);
+        if (!settings.lightMethod)
+            problems.push_back("--light-method must be asos or grid, not '" + *args.lightMethod + "'");
+    }
+    settings.lightSamples = args.lightSamples;
+    if (const std::optional<ShadowApex> apex = parseShadowApex(args.shadowApex))
+        settings.shadowApex = *apex;
+    else
+        problems.push_back("--shadow-apex must be surface or behind, not '" + args.shadowApex + "'");
     settings.threads = args.threads;
     settings.seed = args.seed;
     if (std::string e = checkRenderSettings(settings); !e.empty()) problems.push_back(e);
@@ -256,6 +270,13 @@ void addRenderCommand(CLI::App& app, CommandResult& result) {
     cmd->add_option("--samples", args->samples, "grid and jitter: N x N rays per pixel (default 4)");
     cmd->add_option("--threshold", args->threshold, "adaptive: colour difference that subdivides (default 0.3)");
     cmd->add_option("--depth", args->depth, "adaptive: subdivision levels (default 2, POV-Ray's +R3)");
+    cmd->add_option("--light-method", args->lightMethod,
+                    "Area lights: asos (shadow beams) or grid (point lights); default asos with "
+                    "--method asos, grid with the classic methods");
+    cmd->add_option("--light-samples", args->lightSamples,
+                    "Area lights: N x N grid points for every light (N along a linear light)");
+    cmd->add_option("--shadow-apex", args->shadowApex,
+                    "ASOS area light shadows start at the surface (default) or behind it");
     cmd->add_option("--threads", args->threads, "Worker threads (default 0: all cores)");
     cmd->add_option("--seed", args->seed, "Seed of the random numbers (default 0)");
     cmd->add_option("--region", args->region,

@@ -33,4 +33,7 @@ void addBenchBvhCommand(CLI::App& bench, CommandResult& result);
 // `asos bench intersect` (bench_intersect.cpp).
 void addBenchIntersectCommand(CLI::App& bench, CommandResult& result);
 
+// `asos bench lights`: area light shadows, ASOS against the grid (bench_lights.cpp).
+void addBenchLightsCommand(CLI::App& bench, CommandResult& result);
+
 }  // namespace asos::cli

@@ -15,6 +15,7 @@ int main(int argc, char** argv) {
     addBenchBvhCommand(*bench, result);
     addBenchIntersectCommand(*bench, result);
     addBenchRenderCommand(*bench, result);
+    addBenchLightsCommand(*bench, result);
 
     try {
         app.parse(argc, argv);

@@ -134,8 +134,17 @@ Vec3 AsosTracer::shadeLeaf(const ImageSquare& square, int level, std::uint32_t i
     if (!hit) return backgroundColor(scene_.description());
     std::optional<Footprint> footprint;  // made when a light first needs it
     LightSample storage;
+    // Area lights: shadow beams from the shaded point (render/area_light.hpp),
+    // with random numbers of this leaf's own.
+    LightContext context{&scratch.area, rng, subPosition(level, ix, iy), nullptr};
     auto lightArriving = [&](const ShadingPoint& p) -> std::span<const LightSample> {
         const Light& light = *p.light;
+        if (tracer_.sceneLights()[static_cast<std::size_t>(p.lightIndex)].isArea()) {
+            if (tracer_.sceneLights().setup().apex == ShadowApex::Behind && !footprint)
+                footprint.emplace(camera_, square, hit->position, hit->normal, hit->t);
+            context.footprint = footprint ? &*footprint : nullptr;
+            return tracer_.areaLightSamples(p, context, counters);
+        }
         if (!facesLight(p.position, p.normal, light.position)) return {};
         double lit = 1.0;
         if (!light.shadowless) {
@@ -163,7 +172,7 @@ Vec3 AsosTracer::shadeLeaf(const ImageSquare& square, int level, std::uint32_t i
         storage = pointLightSample(light.position, light.color, p.position, lit);
         return {&storage, 1};
     };
-    return tracer_.shadeWith(*hit, ray, 1, 1.0, lightArriving, counters);
+    return tracer_.shadeWith(*hit, ray, 1, 1.0, lightArriving, counters, context);
 }
 
 PixelResult AsosTracer::trace(int px, int py, AsosScratch& s, RenderCounters& c,

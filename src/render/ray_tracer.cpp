@@ -2,18 +2,50 @@
 
 namespace asos {
 
-Vec3 RayTracer::radiance(const Ray& ray, int depth, double weight, RenderCounters& counters) const {
+Vec3 RayTracer::radiance(const Ray& ray, int depth, double weight, RenderCounters& counters,
+                         const LightContext& context) const {
     const std::optional<SurfaceHit> hit = nearestHit(ray);
     if (!hit) return backgroundColor(description());
-    return shade(*hit, ray, depth, weight, counters);
+    return shade(*hit, ray, depth, weight, counters, context);
 }
 
 Vec3 RayTracer::shade(const SurfaceHit& hit, const Ray& ray, int depth, double weight,
-                      RenderCounters& counters) const {
+                      RenderCounters& counters, const LightContext& context) const {
+    // Without the caller's buffers, area lights use some of their own here
+    // (and in the reflections below).
+    std::optional<AreaLightScratch> own;
+    LightContext local = context;
     LightSample storage;
     return shadeWith(
         hit, ray, depth, weight,
-        [&](const ShadingPoint& p) { return plainLightSample(p, storage, counters); }, counters);
+        [&](const ShadingPoint& p) -> std::span<const LightSample> {
+            if (!lights_[static_cast<std::size_t>(p.lightIndex)].isArea())
+                return plainLightSample(p, storage, counters);
+            if (!local.scratch) local.scratch = &own.emplace();
+            return areaLightSamples(p, local, counters);
+        },
+        counters, local);
+}
+
+std::span<const LightSample> RayTracer::areaLightSamples(const ShadingPoint& point,
+                                                         const LightContext& context,
+                                                         RenderCounters& counters) const {
+    AreaLightQuery q;
+    q.lightIndex = static_cast<std::size_t>(point.lightIndex);
+    q.point = point.position;
+    q.normal = point.normal;
+    q.shadedObject = static_cast<std::uint32_t>(point.hit->objectIndex);
+    // As for point lights: only the inner side of an open tube (its normal
+    // turned toward the viewer points inward) can be in its own shadow.
+    q.shadedCanSelfShadow = canShadowItself(scene_.object(q.shadedObject).shape) &&
+                            glm::dot(point.normal, point.hit->normal) < 0.0;
+    q.rng = context.rng;
+    q.key = context.key;
+    q.footprint = context.footprint;
+    const Finish& finish = textureOf(scene_.object(q.shadedObject)).finish;
+    q.diffuseOnly = finish.brilliance == 1.0 && !(finish.phong > 0.0) && !(finish.specular > 0.0) &&
+                    !(point.light->fadePower > 0.0);
+    return asos::areaLightSamples(scene_, lights_, q, *context.scratch, counters);
 }
 
 bool RayTracer::shadowRayBlocked(const Vec3& point, const Vec3& lightPosition,

@@ -31,14 +31,23 @@ TileRenderOptions tileOptions(const RenderSettings& s) {
     return o;
 }
 
+// The light context of a primary sample: area lights draw their random
+// numbers from its pixel and index.
+LightContext sampleContext(AreaLightScratch& scratch, std::uint64_t seed, const PrimarySample& sample) {
+    return {&scratch, PixelRandom(seed, sample.pixelX, sample.pixelY), sample.index, nullptr};
+}
+
 // The classic methods: every primary ray is an eye ray traced with plain
-// shadow rays (docs/rendering.md, "Classic anti-aliasing methods").
+// shadow rays toward point lights (docs/rendering.md, "Classic anti-aliasing
+// methods") and the lights' method toward area lights.
 TileRenderResult renderClassic(const RayTracer& tracer, const CameraModel& camera,
                                const RenderSettings& s, const TileRenderOptions& options) {
+    tbb::enumerable_thread_specific<AreaLightScratch> scratch;
     auto eyeRadiance = [&](RenderCounters& counters) {
-        return [&tracer, &counters](const Ray& ray) {
+        return [&tracer, &counters, &area = scratch.local(), seed = s.seed](const Ray& ray,
+                                                                          const PrimarySample& sample) {
             ++counters.eyeRays;
-            return tracer.radiance(ray, 1, 1.0, counters);
+            return tracer.radiance(ray, 1, 1.0, counters, sampleContext(area, seed, sample));
         };
     };
     switch (s.method) {
@@ -60,10 +69,12 @@ TileRenderResult renderClassic(const RayTracer& tracer, const CameraModel& camer
             adaptive.assumedGamma = tracer.description().globals.assumedGamma;
             const PixelRegion region = s.region.value_or(PixelRegion::whole(s.width, s.height));
             const CornerGrid corners =
-                sampleCorners(camera, region, options, [&](const Ray& ray, RenderCounters& c) {
-                    ++c.eyeRays;
-                    return tracer.radiance(ray, 1, 1.0, c);
-                });
+                sampleCorners(camera, region, options,
+                              [&](const Ray& ray, const PrimarySample& sample, RenderCounters& c) {
+                                  ++c.eyeRays;
+                                  return tracer.radiance(ray, 1, 1.0, c,
+                                                         sampleContext(scratch.local(), s.seed, sample));
+                              });
             TileRenderResult r =
                 renderTiles(s.width, s.height, options, [&](int x, int y, RenderCounters& c) {
                     return estimateAdaptive(camera, x, y, corners.ofPixel(x, y), adaptive,
@@ -111,6 +122,13 @@ std::string checkRenderSettings(const RenderSettings& s) {
             std::to_string(s.samples));
     add(checkAdaptiveSettings(s.adaptive));
     add(checkAsosOptions(s.asos, "asos options"));
+    if (s.lightSamples && (*s.lightSamples < 1 || *s.lightSamples > kMaxLightSamplesPerSide))
+        add("light samples must be between 1 and " + std::to_string(kMaxLightSamplesPerSide) +
+            ", not " + std::to_string(*s.lightSamples));
+    if (s.shadowApex == ShadowApex::Behind &&
+        (s.method != RenderMethod::Asos || effectiveLightMethod(s) != LightMethod::Asos))
+        add("the shadow apex behind the surface needs the ASOS eye method and ASOS light method "
+            "(it encloses the eye pyray's footprint)");
     if (s.threads < 0) add("threads must not be negative");
     if (s.tileSize < 1) add("tile size must be at least 1");
     if (s.region && s.width >= 1 && s.height >= 1 && !s.region->within(s.width, s.height))
@@ -131,19 +149,26 @@ bool checkRenderable(const SceneDescription& d, Diagnostics& diagnostics) {
     for (const Object& o : d.objects) check(o.asos, o.loc, "asos");
     for (const Light& l : d.lights) {
         check(l.asos, l.loc, "asos");
-        if (l.area) {
-            diagnostics.error(l.loc, "area_light is not rendered yet: only point lights are");
-            ok = false;
-        }
+        ok = checkLight(l, diagnostics) && ok;
     }
     return ok;
+}
+
+LightMethod effectiveLightMethod(const RenderSettings& s) {
+    return s.lightMethod.value_or(s.method == RenderMethod::Asos ? LightMethod::Asos : LightMethod::Grid);
 }
 
 RenderOutput render(const Scene& scene, const RenderSettings& settings) {
     if (std::string problems = checkRenderSettings(settings); !problems.empty())
         throw std::invalid_argument(problems);
     const CameraModel camera(scene.description().camera, settings.width, settings.height);
-    const RayTracer tracer(scene);
+    LightSetup lights;
+    lights.method = effectiveLightMethod(settings);
+    lights.samples = settings.lightSamples;
+    lights.apex = settings.shadowApex;
+    lights.gridCulling = settings.gridLightCulling;
+    lights.sceneSettings = sceneAsosSettings(scene.description().globals, settings.asos);
+    const RayTracer tracer(scene, lights);
     const TileRenderOptions options = tileOptions(settings);
 
     TileRenderResult r;

@@ -14,7 +14,10 @@ SubdivisionTally::Entry& SubdivisionTally::entry(std::uint32_t object) {
 
 double SubdivisionTally::changeBound(int level) const {
     // Area of one K-pyray: 1 / 2^(2K) of the pixel.
-    const double area = std::ldexp(1.0, -2 * level);
+    return changeBoundForShare(std::ldexp(1.0, -2 * level));
+}
+
+double SubdivisionTally::changeBoundForShare(double area) const {
     double bound = 0.0;
     for (const Entry& e : entries_) {
         const double l = std::max(e.in, e.out);

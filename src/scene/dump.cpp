@@ -202,7 +202,8 @@ void writeDump(std::ostream& out, const SceneDescription& scene, const DumpOptio
             const AreaLight& a = *l.area;
             w << "  area_light ";
             w.vec(a.axis1) << ", ";
-            w.vec(a.axis2) << ", " << a.size1 << ", " << a.size2 << "\n  adaptive " << a.adaptive << '\n';
+            w.vec(a.axis2) << ", " << a.size1 << ", " << a.size2 << '\n';
+            if (a.adaptive) w << "  adaptive " << *a.adaptive << '\n';
             if (a.jitter) w << "  jitter\n";
             if (a.circular) w << "  circular\n";
             if (a.orient) w << "  orient\n";

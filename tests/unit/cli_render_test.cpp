@@ -149,9 +149,9 @@ TEST_CASE("asos render: bad options and scenes give an error and no file", "[cli
     CHECK_THAT(r.err, Catch::Contains("broken.pov:"));
     CHECK_FALSE(fs::exists(dir / "broken.png"));
 
-    // A scene the renderer cannot render yet.
+    // A scene the renderer cannot render: a flat disc light.
     const fs::path area = dir / "area.pov";
-    std::ofstream(area) << "light_source { <0, 5, 0>, 1 area_light x, z, 2, 2 }\n"
+    std::ofstream(area) << "light_source { <0, 5, 0>, 1 area_light x, z, 2, 2 circular }\n"
                            "sphere { 0, 1 }\n";
     const Result a = runAsos({"render", area.string(), "-o", "area.png", "-W", "8", "-H", "6"});
     CHECK(a.exitCode == 1);

@@ -163,6 +163,7 @@ TEST_CASE("Scenes the renderer cannot render are reported with their locations",
     d.objects[1].asos.maxLevel = 40;
     d.objects[1].loc.line = 7;
     d.lights[0].area = AreaLight{};
+    d.lights[0].area->circular = true;  // a flat disc light: not rendered
     d.lights[0].loc.line = 3;
     Diagnostics diagnostics;
     RenderSettings s;
@@ -173,7 +174,7 @@ TEST_CASE("Scenes the renderer cannot render are reported with their locations",
     CHECK(diagnostics.all()[0].loc.line == 7);
     CHECK_THAT(diagnostics.all()[0].message, Catch::Contains("max"));
     CHECK(diagnostics.all()[1].loc.line == 3);
-    CHECK_THAT(diagnostics.all()[1].message, Catch::Contains("area_light"));
+    CHECK_THAT(diagnostics.all()[1].message, Catch::Contains("circular"));
 }
 
 TEST_CASE("Command-line ASOS options override global_settings; objects refine both", "[renderer]") {

@@ -47,6 +47,7 @@ struct AsosScratch {
     std::vector<Node> nodes[2];
     SubdivisionTally tally;
     ShadowScratch shadow;
+    AreaLightScratch area;
     ConeCandidateCache eyeCandidates;
 };
 

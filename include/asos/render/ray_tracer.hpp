@@ -11,6 +11,8 @@
 #include <optional>
 #include <span>
 
+#include "asos/render/area_light.hpp"
+#include "asos/render/light_model.hpp"
 #include "asos/render/shading.hpp"
 #include "asos/render/stats.hpp"
 #include "asos/scene/scene.hpp"
@@ -22,13 +24,17 @@ inline const Texture& textureOf(const Object& object) { return *object.texture; 
 
 class RayTracer {
 public:
-    explicit RayTracer(const Scene& scene)
-        : scene_(scene), shading_(ShadingSettings::from(scene.description().globals)) {}
+    // `lights`: how area lights are shadowed (render/light_model.hpp).
+    explicit RayTracer(const Scene& scene, const LightSetup& lights = {})
+        : scene_(scene),
+          shading_(ShadingSettings::from(scene.description().globals)),
+          lights_(scene.description(), lights) {}
 
     const Scene& scene() const { return scene_; }
     const SceneDescription& description() const { return scene_.description(); }
     const ShadingSettings& shadingSettings() const { return shading_; }
     std::span<const Light> lights() const { return scene_.description().lights; }
+    const SceneLights& sceneLights() const { return lights_; }
 
     // The nearest hit of an eye or reflected ray.
     std::optional<SurfaceHit> nearestHit(const Ray& ray) const {
@@ -37,25 +43,35 @@ public:
 
     // The colour seen along a ray (unit direction) of trace level `depth`
     // (eye rays 1) and ADC weight `weight` (eye rays 1). Does not count the
-    // ray itself; counts the reflected and shadow rays it spawns.
-    Vec3 radiance(const Ray& ray, int depth, double weight, RenderCounters& counters) const;
+    // ray itself; counts the reflected and shadow rays it spawns. `context`:
+    // the area lights' buffers and random numbers for this sample.
+    Vec3 radiance(const Ray& ray, int depth, double weight, RenderCounters& counters,
+                  const LightContext& context = {}) const;
 
-    // A known hit of `ray`, shaded with plain shadow rays.
+    // A known hit of `ray`, shaded with plain shadow rays toward point
+    // lights and the lights' method toward area lights.
     Vec3 shade(const SurfaceHit& hit, const Ray& ray, int depth, double weight,
-               RenderCounters& counters) const;
+               RenderCounters& counters, const LightContext& context = {}) const;
 
     // A known hit of `ray`, shaded with the caller's light function (as
     // shadeSurface takes it); reflections are traced with plain rays.
     template <class LightFn>
     Vec3 shadeWith(const SurfaceHit& hit, const Ray& ray, int depth, double weight,
-                   LightFn&& lightArriving, RenderCounters& counters) const {
+                   LightFn&& lightArriving, RenderCounters& counters,
+                   const LightContext& context = {}) const {
         const Texture& texture = textureOf(scene_.object(static_cast<std::uint32_t>(hit.objectIndex)));
         return shadeSurface({hit, texture, ray, depth, weight}, lights(), shading_, lightArriving,
                             [&](const Ray& mirror, int d, double w) {
                                 ++counters.reflectedRays;
-                                return radiance(mirror, d, w, counters);
+                                return radiance(mirror, d, w, counters, context.reflected(d));
                             });
     }
+
+    // The samples of area light `point.lightIndex` at a shading point, by
+    // the lights' method; they live in context.scratch (which must be set)
+    // until its next use.
+    std::span<const LightSample> areaLightSamples(const ShadingPoint& point, const LightContext& context,
+                                                  RenderCounters& counters) const;
 
     // Whether a plain shadow ray from `point` toward the point light at
     // `lightPosition` is blocked by an object that casts shadows.
@@ -71,6 +87,7 @@ public:
 private:
     const Scene& scene_;
     ShadingSettings shading_;
+    SceneLights lights_;
 };
 
 // Whether the light at `lightPosition` can light a surface point with

@@ -14,6 +14,7 @@
 #include "asos/diag/diagnostics.hpp"
 #include "asos/render/classic_methods.hpp"
 #include "asos/render/image.hpp"
+#include "asos/render/light_model.hpp"
 #include "asos/render/stats.hpp"
 #include "asos/render/tile_renderer.hpp"
 #include "asos/scene/description.hpp"
@@ -38,6 +39,13 @@ struct RenderSettings {
     bool patternEdges = false;
     int samples = 4;            // grid and jitter: samples x samples rays per pixel
     AdaptiveSettings adaptive;  // adaptive: threshold, depth, jitter (gamma from the scene)
+    // Area lights (docs/lights.md): ASOS shadow beams or the classic grid of
+    // point lights, with any eye method; by default ASOS beams under the ASOS
+    // eye method and the grid under the classic ones.
+    std::optional<LightMethod> lightMethod;
+    std::optional<int> lightSamples;  // replaces every area light's counts by N x N
+    ShadowApex shadowApex = ShadowApex::Surface;  // behind: ASOS eye and light methods only
+    bool gridLightCulling = false;  // LightSetup::gridCulling (references only)
     int threads = 0;            // 0: all cores
     std::uint64_t seed = 0;
     std::optional<PixelRegion> region;  // default: the whole image
@@ -55,9 +63,13 @@ struct RenderOutput {
 // found, one per line (bad sizes, counts, asos options, region).
 std::string checkRenderSettings(const RenderSettings& settings);
 
+// The way area lights are shadowed under these settings.
+LightMethod effectiveLightMethod(const RenderSettings& settings);
+
 // Checks what the renderer needs of a description beyond what Scene::build
-// checks: asos blocks in range, lights it can render. Reports each problem
-// with its source location; returns false when there was one.
+// checks: asos blocks in range, lights it can render (checkLight, which also
+// warns). Reports each problem with its source location; returns false when
+// there was an error.
 bool checkRenderable(const SceneDescription& description, Diagnostics& diagnostics);
 
 // Renders a built scene. Throws std::invalid_argument for settings that

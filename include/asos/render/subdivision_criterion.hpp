@@ -30,6 +30,9 @@ public:
     // The paper's estimate of the largest change of the pixel intensity that
     // subdividing all marginal K-pyrays could produce, in units of the pixel.
     double changeBound(int level) const;
+    // The same for pieces that are each `pieceShare` of the whole (a beam
+    // split in two at each level, as a linear light's: 2^-K).
+    double changeBoundForShare(double pieceShare) const;
 
     bool empty() const { return entries_.empty(); }
     void clear() { entries_.clear(); }

@@ -49,7 +49,9 @@ struct AreaLight {
     Vec3 axis2{0.0};
     int size1 = 1;
     int size2 = 1;
-    int adaptive = 0;
+    // POV-Ray's `adaptive n`; absent, every point of the grid is sampled
+    // (POV-Ray's default Adaptive_Level of 100 subdivides to the full grid).
+    std::optional<int> adaptive;
     bool jitter = false;
     bool circular = false;
     bool orient = false;
@@ -120,9 +122,10 @@ inline const std::shared_ptr<const Texture>& defaultTexture() {
 struct Object {
     Shape shape;
     Transform worldFromObject;
-    // Shared, never null: objects given the same declared texture (or none, the
-    // default) point to one Texture, as in POV-Ray. This keeps a million
-    // spheres under 1 GiB (a Texture with its pattern transform is 432 bytes).
+    // Shared and never null: objects with equal textures (one declared texture,
+    // the default, or the same colours written out again) point to one Texture.
+    // A Texture with its pattern transform is 432 bytes; sharing keeps a
+    // million spheres under 1 GiB.
     std::shared_ptr<const Texture> texture = defaultTexture();
     bool noShadow = false;
     AsosOptions asos;

@@ -1,0 +1,108 @@
+#pragma once
+// The light an area light sends a shaded point, as a list of samples
+// (render/shading.hpp's LightSample): one per sub-beam of an ASOS shadow beam
+// that reaches the light (render/area_light_shadow.hpp), or one per point of
+// the classic grid that a plain shadow ray reaches (render/grid_light.hpp).
+// Either way each sample is shaded along its own direction (diffuse and
+// highlights), and the samples' colours add up to the light's colour times
+// the emitter weighting of docs/lights.md (cos theta for rectangles) when
+// nothing is in the way.
+#include <cstdint>
+#include <span>
+#include <vector>
+
+#include "asos/geometry/cone.hpp"
+#include "asos/render/light_beams.hpp"
+#include "asos/render/light_model.hpp"
+#include "asos/render/point_light_shadow.hpp"
+#include "asos/render/sampling.hpp"
+#include "asos/render/shading.hpp"
+#include "asos/render/stats.hpp"
+#include "asos/scene/scene.hpp"
+
+namespace asos {
+
+// A marginal sub-beam awaiting the stopping decision of its level.
+struct AreaBeamNode {
+    LightPiece piece;
+    std::uint32_t first, count;  // its occluders in AreaLightScratch::items[]
+    bool blocked;                // its central ray is blocked
+};
+
+// Per-thread buffers: once grown, a shaded point allocates nothing.
+struct AreaLightScratch {
+    struct Item {
+        std::uint32_t object;
+        ConeClass cls;
+    };
+    std::vector<Item> items[2];
+    std::vector<std::uint8_t> hits[2];  // per item: the node's central ray hits the object
+    std::vector<AreaBeamNode> nodes[2];
+    std::vector<LightSample> samples;       // the answer
+    LightSample merged;                     // the answer, summed (mergeDiffuse)
+    std::vector<LightSample> gridSamples;   // grid: per lattice point, its sample
+    std::vector<double> gridWeights;        // grid: per lattice point, its weight
+    std::vector<std::int8_t> gridState;     // grid: per lattice point, -1 unknown, 0 blocked, 1 lit
+    SubdivisionTally tally;
+};
+
+// What the random numbers, the footprint and the buffers of one shading
+// are: carried from a primary sample down its reflected rays.
+struct LightContext {
+    AreaLightScratch* scratch = nullptr;  // null: a temporary one (slow; tests)
+    PixelRandom rng{0, 0, 0};
+    // The primary sample within the pixel (and, below it, the reflection
+    // depth): numbers drawn for it differ from every other sample's.
+    std::uint64_t key = 0;
+    // The eye pyray's footprint on the surface (ASOS eye method), for
+    // ShadowApex::Behind; null elsewhere (classic methods, reflections).
+    const Footprint* footprint = nullptr;
+
+    // The context of a ray reflected at trace level `depth`.
+    LightContext reflected(int depth) const {
+        LightContext c = *this;
+        c.key = mix64(key ^ (std::uint64_t(depth) << 56));
+        c.footprint = nullptr;
+        return c;
+    }
+};
+
+// One question: the light that area light `light` sends the shaded point.
+struct AreaLightQuery {
+    std::size_t lightIndex = 0;
+    Vec3 point{0.0};
+    Vec3 normal{0.0, 1.0, 0.0};  // unit, turned toward the viewer (the shading normal)
+    // The object the point lies on: convex and flat shapes cannot shadow
+    // themselves where they face the light and are left out of the occluders.
+    std::uint32_t shadedObject = 0;
+    bool shadedCanSelfShadow = false;
+    PixelRandom rng{0, 0, 0};
+    std::uint64_t key = 0;                  // LightContext::key
+    const Footprint* footprint = nullptr;   // LightContext::footprint
+    // The surface only reflects diffusely (brilliance 1, no phong or
+    // specular) and the light does not fade: then the samples may be summed
+    // into one (mergeDiffuse), which lights the point exactly alike.
+    bool diffuseOnly = false;
+};
+
+// The samples of an area light at a shaded point, by the lights' method
+// (setup().method) and apex; the span lives in `scratch` until its next use.
+// A shadowless light is unshadowed. Nothing comes from parts of the light
+// behind the surface.
+std::span<const LightSample> areaLightSamples(const Scene& scene, const SceneLights& lights,
+                                              const AreaLightQuery& query, AreaLightScratch& scratch,
+                                              RenderCounters& counters);
+
+// One sample that lights a surface of diffuse-only finish (brilliance 1, no
+// highlights, no fade) exactly as `samples` together: the sum of colour x
+// direction is linear in the cosine of incidence, so its length and
+// direction are the merged sample's weight and direction (the samples share
+// the light's colour, and each faces the surface). The span lives in
+// `storage`.
+std::span<const LightSample> mergeDiffuse(std::span<const LightSample> samples, LightSample& storage);
+
+// The diffuse weighting of a sample set: sum of colour x max(0, N . L), the
+// irradiance a diffuse white surface would receive (for tests and the docs).
+Vec3 diffuseIrradiance(std::span<const LightSample> samples, const Vec3& normal);
+
+}  // namespace asos

@@ -1,0 +1,49 @@
+#pragma once
+// ASOS shadows from distributed light sources (paper: "Distributed Light
+// Sources", Figure 5). From the shaded point a shadow beam toward the whole
+// light (a pyray to a rectangle's corners, a triangle to a segment's ends, a
+// cone tangent to a sphere) is bounded by a cone and tested against the
+// objects in its way like an eye pyray ("Detection Phase"); where it is
+// marginal it is split (into four quarters, two halves, four equal-area
+// pieces of the sphere's apparent disc), level by level, with the light's own
+// EPS, MAX and jitter and the paper's stopping rule (SubdivisionTally). Each
+// sub-beam that reaches the light becomes one LightSample along its central
+// ray carrying I A cos(theta) (rectangle), I A (sphere: a disc facing the
+// point) or I L (segment: the point on the line as a point light).
+//
+// Beyond the paper: a sub-beam that no occluder touches is refined without
+// any ray while the light it carries varies across it by more than EPS (a
+// point near a large light), so that unshadowed light is integrated to EPS
+// too; and, with ShadowApex::Behind, the beam starts behind the surface so
+// that it encloses the eye pyray's footprint as well as the light (the
+// paper's "Future Work"). docs/lights.md has the rules.
+#include <optional>
+#include <span>
+
+#include "asos/render/area_light.hpp"
+
+namespace asos {
+
+// The samples of an area light (model.isArea()) by ASOS shadow beams.
+std::span<const LightSample> asosAreaLightSamples(const Scene& scene, const LightModel& model,
+                                                  ShadowApex apex, const AreaLightQuery& query,
+                                                  AreaLightScratch& scratch, RenderCounters& counters);
+
+// What one cone test over the whole light (from the point, as the ASOS beam's
+// detection phase) says of every ray toward it: none is blocked, all are, or
+// it cannot tell.
+enum class WholeLight { Lit, Blocked, Partial };
+WholeLight wholeLightVisibility(const Scene& scene, const LightModel& model, const AreaLightQuery& query,
+                                RenderCounters& counters);
+
+// Where a beam starts behind the surface (ShadowApex::Behind): on the line
+// from the light's centre through `point`, the nearest point behind the
+// surface from which the beam to the light holds every corner of the
+// footprint (so its rays cross the tangent plane all over the footprint).
+// Empty when there is none within reach (a light no larger than the
+// footprint, a footprint off the tangent plane, a light at the horizon):
+// then the beam starts at the point, as in the paper.
+std::optional<Vec3> behindApex(const LightModel& model, const Vec3& point, const Vec3& normal,
+                               const Footprint& footprint);
+
+}  // namespace asos

@@ -1,0 +1,117 @@
+#pragma once
+// The shadow beams from one point toward an area light, as the ASOS light
+// shadows split them (paper: "Distributed Light Sources", Figure 5): the
+// pyray to a rectangle's corners and its quarters, the triangle to a
+// segment's ends and its halves, the cone tangent to a sphere and its
+// equal-area pieces. These are the pieces of geometry/beam_rect.hpp,
+// beam_segment.hpp and beam_sphere.hpp (the same regions, central rays,
+// random rays and weights; tests/unit/light_beams_test.cpp compares them),
+// made for speed: a piece is a small value, and its bounding cone is the
+// cone about its central ray through its widest corner, one arctangent
+// (the beams' smallest cones try every pair and triple of corners, forty).
+// A cone about the central ray holds the piece because the piece's corner
+// rays lie within it and the cone is convex (half-angle below pi/2); for a
+// sphere piece, because the central ray lies within the piece's angular
+// range (docs/accel.md, "Sphere pieces").
+#include <cstdint>
+#include <limits>
+#include <optional>
+#include <utility>
+
+#include "asos/geometry/beam.hpp"
+#include "asos/render/light_model.hpp"
+
+namespace asos {
+
+// One piece of the light: its region in the light's coordinates, its
+// level (its share of the light is share(level)), its position among the
+// pieces of that level (for random numbers), its central ray and its cone.
+struct LightPiece {
+    // Rectangle: s in [a0, a1], t in [b0, b1]; segment: s in [a0, a1];
+    // sphere: disc radius r in [a0, a1], angle phi in [b0, b1].
+    double a0 = 0.0, b0 = 0.0, a1 = 1.0, b1 = 1.0;
+    int level = 0;
+    std::uint64_t path = 0;
+    BeamRay central;
+    Cone cone;
+    // The tangent of the cone's half-angle before its padding, when the cone
+    // was made through its widest corner (rectangle pieces, sphere pieces
+    // below level 0); NaN otherwise. Spares its users the trigonometry.
+    double tanHalf = std::numeric_limits<double>::quiet_NaN();
+};
+
+class LightBeams {
+public:
+    // Beams from `apex` toward an area light (model.isArea()); rays start at
+    // distance tMin. `valid()` is false when the apex sees no beam: in the
+    // rectangle's plane, on the segment's line, on or inside the sphere.
+    LightBeams(const LightModel& model, const Vec3& apex, double tMin);
+
+    bool valid() const { return valid_; }
+    const Vec3& apex() const { return apex_; }
+    LightShape shape() const { return shape_; }
+
+    // The whole light: the level-0 piece.
+    LightPiece root() const;
+    // The pieces of the next level, written to out[]: four (rectangle,
+    // sphere) or two (segment). Returns how many. Without `cones` the
+    // pieces' cones are left empty (pieces that are only sampled by rays).
+    int split(const LightPiece& piece, LightPiece* out, bool cones = true) const;
+    static constexpr int kMaxChildren = 4;
+
+    // A ray inside the piece from two numbers in [0, 1) (a segment uses the
+    // first), uniform over the piece's area (length, disc area).
+    BeamRay sample(const LightPiece& piece, const Vec2& xi) const;
+    // The piece's share of the light: 4^-level (2^-level for a segment).
+    double share(int level) const;
+    // No ray of the piece reaches the light nearer than this.
+    double nearestLightDistance(const LightPiece& piece) const;
+    // Pairs of rays across the piece through its central point, one pair per
+    // coordinate: toward the midpoints of opposite edges (a segment's two
+    // ends; for the whole sphere, opposite points of its rim). Their means
+    // less the central value are the piece's second differences. Returns
+    // how many rays (2 or 4).
+    int probeRays(const LightPiece& piece, BeamRay* out) const;
+    // The weights of a rule exact for quadratics (cubics) over the piece:
+    // the central ray's, and each probe ray's; they sum to 1. Square pieces
+    // (rectangle quarters, the sphere's pieces in their equal-area
+    // coordinates) 1/3 and 1/6; the whole disc 1/2 and 1/8; a segment
+    // (Simpson's rule) 2/3 and 1/6.
+    std::pair<double, double> ruleWeights(const LightPiece& piece) const;
+    // The emitter's weighting along a direction: |cos theta| between the
+    // rectangle's normal and the direction; 1 for segments and spheres.
+    double emission(const Vec3& dir) const;
+    // Whether the paper's "Proximity to One Edge" halving holds for this
+    // split: for quarters of a rectangle and halves of a segment (a straight
+    // occluder edge is a straight line in the light's plane); not for the
+    // sphere's equal-area pieces, whose central rays are not placed
+    // symmetrically about their parent's.
+    bool singleEdgeHalving() const { return shape_ != LightShape::Sphere; }
+
+private:
+    LightPiece make(double a0, double b0, double a1, double b1, int level, std::uint64_t path,
+                    bool cone = true) const;
+    int splitRectangle(const LightPiece& piece, LightPiece* out, bool cones) const;
+    Vec3 rectPoint(double s, double t) const { return corner_ + s * edgeA_ + t * edgeB_; }
+    Vec3 discDirection(double r, double phi) const;
+    double sphereDistance(const Vec3& dir) const;
+    double sphereDistanceAtRadius(double r, double widen) const;
+    BeamRay toward(const Vec3& target) const;
+    Cone coneAbout(const Vec3& axis, const Vec3* directions, int count, double farthest,
+                   double& tanHalf) const;
+
+    LightShape shape_ = LightShape::Point;
+    Vec3 apex_{0.0};
+    double tMin_ = 0.0;
+    bool valid_ = false;
+    // Rectangle (corner + s edgeA + t edgeB) and segment (corner + s edgeA).
+    Vec3 corner_{0.0}, edgeA_{0.0}, edgeB_{0.0}, normal_{0.0};
+    bool rectangular_ = false;  // edges at right angles: nearest points by clamping
+    double footS_ = 0.0, footT_ = 0.0, height_ = 0.0;
+    // Sphere.
+    Vec3 centre_{0.0};
+    double radius_ = 0.0, distance_ = 0.0, tanAlpha_ = 0.0, alpha_ = 0.0;
+    Frame frame_{};
+};
+
+}  // namespace asos

@@ -1,0 +1,46 @@
+#include "asos/render/area_light.hpp"
+
+#include "asos/render/area_light_shadow.hpp"
+#include "asos/render/grid_light.hpp"
+
+namespace asos {
+
+std::span<const LightSample> areaLightSamples(const Scene& scene, const SceneLights& lights,
+                                              const AreaLightQuery& query, AreaLightScratch& scratch,
+                                              RenderCounters& counters) {
+    const LightModel& model = lights[query.lightIndex];
+    const std::span<const LightSample> samples =
+        lights.setup().method == LightMethod::Asos
+            ? asosAreaLightSamples(scene, model, lights.setup().apex, query, scratch, counters)
+            : gridAreaLightSamples(scene, model, query, scratch, counters, lights.setup().gridCulling);
+    if (!query.diffuseOnly || samples.size() < 2) return samples;
+    return mergeDiffuse(samples, scratch.merged);
+}
+
+std::span<const LightSample> mergeDiffuse(std::span<const LightSample> samples, LightSample& storage) {
+    // The colours are the light's colour times a weight each: weigh the
+    // directions by the colours' sum of channels (any one would do).
+    Vec3 sum(0.0), color(0.0);
+    double distance = 0.0, total = 0.0;
+    for (const LightSample& s : samples) {
+        const double w = s.color.x + s.color.y + s.color.z;
+        sum += w * s.direction;
+        color += s.color;
+        distance += w * s.distance;
+        total += w;
+    }
+    const double length = glm::length(sum);
+    if (!(length > 0.0) || !(total > 0.0)) return samples;
+    // |sum| / total of the colour: the merged sample's cosine times its
+    // colour is the sum of the samples' cosines times their colours.
+    storage = {sum / length, distance / total, color * (length / total)};
+    return {&storage, 1};
+}
+
+Vec3 diffuseIrradiance(std::span<const LightSample> samples, const Vec3& normal) {
+    Vec3 sum(0.0);
+    for (const LightSample& s : samples) sum += s.color * std::max(0.0, glm::dot(normal, s.direction));
+    return sum;
+}
+
+}  // namespace asos

@@ -1,0 +1,464 @@
+#include "asos/render/area_light_shadow.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "asos/geometry/beam.hpp"
+#include "asos/shapes/local_cone.hpp"
+
+namespace asos {
+
+namespace {
+
+constexpr double kTolerance = kPovShadowTolerance;
+
+// Where the rays of a beam start. At the shaded point (the paper), they count
+// from POV-Ray's shadow tolerance on. From an apex behind the surface, a ray
+// counts only beyond the tangent plane (paper, "Future Work": intersections
+// between the new origin and the surface are ignored).
+struct Origin {
+    Vec3 apex{0.0};
+    bool behind = false;
+    Vec3 normal{0.0, 1.0, 0.0};  // the tangent plane's, toward the light's side
+    double depth = 0.0;          // behind: the apex's distance below the tangent plane
+
+    // Distance along unit `dir` at which a ray leaves the surface.
+    double surfaceDistance(const Vec3& dir) const {
+        if (!behind) return 0.0;
+        const double c = glm::dot(dir, normal);
+        return c > 0.0 ? depth / c : kInfinity;
+    }
+    // Bounds of surfaceDistance over the directions of a cone.
+    double nearestSurface(const Cone& cone) const {
+        if (!behind) return 0.0;
+        const double psi = angleBetween(normal, cone.axis);
+        return depth / std::cos(std::max(0.0, psi - cone.halfAngle)) * (1.0 - 1e-12);
+    }
+    double farthestSurface(const Cone& cone) const {
+        if (!behind) return 0.0;
+        const double widest = angleBetween(normal, cone.axis) + cone.halfAngle;
+        if (!(widest < 0.5 * kPi)) return kInfinity;
+        return depth / std::cos(widest) * (1.0 + 1e-12);
+    }
+    // The first distance at which a ray may meet an occluder.
+    double rayStart(const Vec3& dir) const {
+        return behind ? surfaceDistance(dir) + kTolerance : kTolerance;
+    }
+};
+
+// Every direction of the piece's cone is at or below the tangent plane:
+// nothing through it can light the point.
+bool belowHorizon(const Vec3& normal, const LightPiece& piece) {
+    if (piece.tanHalf >= 0.0) {
+        // angle(normal, axis) >= pi/2 + halfAngle, i.e. cos <= -sin(halfAngle).
+        const double t = piece.tanHalf;
+        return glm::dot(normal, piece.cone.axis) < -t / std::sqrt(1.0 + t * t) - 1e-12;
+    }
+    return angleBetween(normal, piece.cone.axis) - piece.cone.halfAngle >= 0.5 * kPi;
+}
+
+// The piece's cone prepared for the primitives, from the tangent of its
+// half-angle where it has one (no trigonometry), widened as PreparedCone
+// widens every cone (kConeAngleMargin), and the padding kConeAnglePad.
+PreparedCone preparedCone(const LightPiece& piece, const Cone& cone) {
+    if (!(piece.tanHalf >= 0.0 && piece.tanHalf < 1e6)) return PreparedCone(cone);
+    PreparedCone p;
+    p.apex = cone.apex;
+    p.axis = cone.axis;
+    p.tMin = std::max(cone.tMin, 0.0);
+    p.tMax = cone.tMax;
+    const double c = 1.0 / std::sqrt(1.0 + piece.tanHalf * piece.tanHalf), s = piece.tanHalf * c;
+    // cos and sin of halfAngle + delta, delta far below 1e-6 (cos delta is
+    // 1 in doubles, sin delta is delta).
+    const double delta = 2.0 * kConeAnglePad + kConeAngleMargin * (1.0 + cone.halfAngle);
+    p.cosHalf = c - s * delta;
+    p.sinHalf = s + c * delta;
+    return p;
+}
+
+// The shadow of one area light at one point: detection, then subdivision
+// of the marginal sub-beams level by level.
+class BeamShadow {
+public:
+    using Item = AreaLightScratch::Item;
+    using Node = AreaBeamNode;
+
+    BeamShadow(const Scene& scene, const LightModel& model, const AreaLightQuery& query,
+               const Origin& origin, AreaLightScratch& scratch, RenderCounters& counters)
+        : scene_(scene),
+          model_(model),
+          q_(query),
+          origin_(origin),
+          beams_(model, origin.apex, origin.behind ? 0.0 : kTolerance),
+          s_(scratch),
+          c_(counters) {
+        jitterKey_ = mix64(query.key ^ mix64(0xa5ea11u + query.lightIndex));
+    }
+
+    void run() {
+        if (!beams_.valid()) return;  // the point lies in the light (its plane, its line, inside it)
+        const LightPiece root = beams_.root();
+        if (belowHorizon(q_.normal, root)) return;
+        if (model_.shadowless) {
+            refineLit(root);
+            return;
+        }
+
+        // Detection: the occluders of the whole beam.
+        std::vector<Item>& rootItems = s_.items[0];
+        rootItems.clear();
+        const Cone rootCone = coneOf(root);
+        const PreparedCone prepared(rootCone);
+        scene_.coneCandidates(rootCone, [&](std::uint32_t object) {
+            if (scene_.object(object).noShadow) return;
+            if (object == q_.shadedObject && !q_.shadedCanSelfShadow) return;
+            ++c_.coneTests;
+            const ConeClass k = scene_.primitive(object).classify(prepared);
+            if (k.coverage != Coverage::Miss) rootItems.push_back({object, k});
+        });
+        c_.countShadowPyray(0);
+        const auto rootCount = static_cast<std::uint32_t>(rootItems.size());
+        switch (verdict(rootItems, 0, rootCount, root, rootCone)) {
+            case Verdict::Lit: refineLit(root); return;
+            case Verdict::Blocked: return;
+            case Verdict::Marginal: break;
+        }
+
+        // Subdivision, all marginal sub-beams of a level together.
+        std::vector<Node>* nodes = s_.nodes;
+        s_.hits[0].assign(rootCount, 0);
+        nodes[0].clear();
+        nodes[0].push_back({root, 0, rootCount, false});
+        nodes[0].back().blocked = rayBlocked(root.central, rootItems, 0, rootCount, s_.hits[0].data());
+        const AsosSettings& settings = model_.asos;
+        const bool halving = beams_.singleEdgeHalving();
+        LightPiece children[LightBeams::kMaxChildren];
+        int cur = 0;
+        for (int level = 0;; ++level) {
+            const std::vector<Node>& levelNodes = nodes[cur];
+            const std::vector<Item>& items = s_.items[cur];
+            const std::vector<std::uint8_t>& hits = s_.hits[cur];
+            const double share = beams_.share(level);
+
+            s_.tally.clear();
+            for (const Node& n : levelNodes)
+                for (std::uint32_t i = n.first; i < n.first + n.count; ++i)
+                    s_.tally.add(items[i].object, hits[i] != 0,
+                                 halving && items[i].cls.coverage == Coverage::Marginal &&
+                                     items[i].cls.singleEdge);
+            if (level >= settings.maxLevel || s_.tally.changeBoundForShare(share) <= settings.eps) {
+                // Stop: each marginal sub-beam is decided by its central ray,
+                // or at MAX with jitter by a random ray inside it.
+                const bool jitter = settings.jitter && level >= settings.maxLevel;
+                for (const Node& n : levelNodes) {
+                    if (jitter) {
+                        const BeamRay ray = beams_.sample(n.piece, randomPoint(n.piece));
+                        if (!rayBlocked(ray, items, n.first, n.count, nullptr)) emit(ray, share);
+                    } else if (!n.blocked) {
+                        emit(n.piece.central, share);
+                    }
+                }
+                break;
+            }
+
+            const int childLevel = level + 1;
+            const double childShare = beams_.share(childLevel);
+            if (childLevel >= settings.maxLevel) {
+                // MAX-beams need no detection: each is one point sample.
+                for (const Node& n : levelNodes) {
+                    const int count = beams_.split(n.piece, children, false);
+                    for (int i = 0; i < count; ++i) {
+                        c_.countShadowPyray(childLevel);
+                        const BeamRay ray = settings.jitter ? beams_.sample(children[i], randomPoint(children[i]))
+                                                            : children[i].central;
+                        if (!rayBlocked(ray, items, n.first, n.count, nullptr)) emit(ray, childShare);
+                    }
+                }
+                break;
+            }
+
+            const int next = 1 - cur;
+            std::vector<Item>& childItems = s_.items[next];
+            std::vector<std::uint8_t>& childHits = s_.hits[next];
+            std::vector<Node>& childNodes = nodes[next];
+            childItems.clear();
+            childHits.clear();
+            childNodes.clear();
+            for (const Node& n : levelNodes) {
+                const int count = beams_.split(n.piece, children);
+                for (int i = 0; i < count; ++i) {
+                    const LightPiece& child = children[i];
+                    if (belowHorizon(q_.normal, child)) continue;
+                    c_.countShadowPyray(childLevel);
+                    const auto first = static_cast<std::uint32_t>(childItems.size());
+                    const Cone cone = coneOf(child);
+                    const PreparedCone prepared = preparedCone(child, cone);
+                    for (std::uint32_t j = n.first; j < n.first + n.count; ++j) {
+                        ++c_.coneTests;
+                        const ConeClass k = scene_.primitive(items[j].object).classify(prepared);
+                        if (k.coverage != Coverage::Miss) childItems.push_back({items[j].object, k});
+                    }
+                    const auto found = static_cast<std::uint32_t>(childItems.size()) - first;
+                    switch (verdict(childItems, first, found, child, cone)) {
+                        case Verdict::Lit:
+                            childItems.resize(first);
+                            refineLit(child);
+                            break;
+                        case Verdict::Blocked: childItems.resize(first); break;
+                        case Verdict::Marginal: {
+                            childHits.resize(childItems.size(), 0);
+                            Node node{child, first, found, false};
+                            node.blocked = rayBlocked(child.central, childItems, first, found, childHits.data());
+                            childNodes.push_back(node);
+                            break;
+                        }
+                    }
+                }
+            }
+            if (childNodes.empty()) break;
+            cur = next;
+        }
+    }
+
+private:
+    enum class Verdict { Lit, Blocked, Marginal };
+
+    // The piece's cone, its near end moved to the surface for an apex behind it.
+    Cone coneOf(const LightPiece& piece) const {
+        Cone cone = piece.cone;
+        if (origin_.behind) cone.tMin = origin_.nearestSurface(cone);
+        return cone;
+    }
+
+    // No occluder: lit. A Full occluder wholly between the surface and the
+    // nearest point of the light blocks the whole beam. Otherwise (an edge in
+    // the beam, or an object that may lie behind the light for some rays or
+    // before the surface) it is marginal.
+    Verdict verdict(const std::vector<Item>& items, std::uint32_t first, std::uint32_t count,
+                    const LightPiece& piece, const Cone& cone) const {
+        if (count == 0) return Verdict::Lit;
+        double nearestLight = -1.0, farthestSurface = 0.0;
+        for (std::uint32_t i = first; i < first + count; ++i) {
+            const ConeClass& k = items[i].cls;
+            if (k.coverage != Coverage::Full) continue;
+            if (nearestLight < 0.0) {
+                nearestLight = beams_.nearestLightDistance(piece) - kTolerance;
+                farthestSurface = origin_.farthestSurface(cone) + kTolerance;
+            }
+            if (k.tFar < nearestLight && (!origin_.behind || k.tNear > farthestSurface)) return Verdict::Blocked;
+        }
+        return Verdict::Marginal;
+    }
+
+    // Whether the ray toward the light meets one of the occluders; marks
+    // each one it meets (all are asked then).
+    bool rayBlocked(const BeamRay& ray, const std::vector<Item>& items, std::uint32_t first,
+                    std::uint32_t count, std::uint8_t* marks) {
+        ++c_.shadowRays;
+        const double t0 = origin_.rayStart(ray.ray.dir);
+        const double t1 = ray.distance - kTolerance;
+        if (!(t0 < t1)) {
+            // From behind the surface, a ray that never leaves it (the light
+            // point is below the tangent plane) reaches nothing.
+            if (marks)
+                for (std::uint32_t i = first; i < first + count; ++i) marks[i] = 0;
+            return origin_.behind;
+        }
+        bool blocked = false;
+        for (std::uint32_t i = first; i < first + count; ++i) {
+            if (blocked && !marks) break;
+            ++c_.rayTests;
+            const bool hit = scene_.primitive(items[i].object).intersectAny(ray.ray, t0, t1);
+            if (marks) marks[i] = hit;
+            blocked = blocked || hit;
+        }
+        return blocked;
+    }
+
+    // The light a sub-beam of `share` of the light carries along `ray`:
+    // I A cos(theta) = colour x share x cos(theta) (rectangle), I A (sphere),
+    // I L (segment).
+    void emit(const BeamRay& ray, double share) {
+        const Vec3& dir = ray.ray.dir;
+        if (glm::dot(q_.normal, dir) < kPovEpsilon) return;  // it would light nothing
+        const double distance = ray.distance - origin_.surfaceDistance(dir);
+        s_.samples.push_back({dir, std::max(distance, 0.0), model_.color * (share * beams_.emission(dir))});
+    }
+
+    // How much of the diffuse light a direction carries: the emitter's
+    // weighting times the cosine of incidence.
+    double carried(const Vec3& dir) const {
+        return beams_.emission(dir) * std::max(0.0, glm::dot(q_.normal, dir));
+    }
+
+    // A sub-beam that reaches the light unobstructed (no ray needed). The
+    // one-ray midpoint rule's error on it is about a third of the sum of its
+    // second differences along each coordinate (exactly so for a quadratic
+    // on a square), measured with two pairs of probe rays across it. Where
+    // that error is negligible (below EPS / 64 of the piece's share) the
+    // central ray alone carries the piece; where half the sum is within EPS,
+    // a rule exact for quadratics: the central ray and the probes
+    // (LightBeams::ruleWeights); otherwise the pieces are refined alike,
+    // down to MAX.
+    void refineLit(const LightPiece& piece) {
+        BeamRay probes[4];
+        const int n = beams_.probeRays(piece, probes);
+        const double centre = carried(piece.central.ray.dir);
+        double differences = 0.0;
+        for (int i = 0; i < n; i += 2)
+            differences += std::abs(0.5 * (carried(probes[i].ray.dir) + carried(probes[i + 1].ray.dir)) - centre);
+        const double share = beams_.share(piece.level);
+        if (differences / 3.0 <= model_.asos.eps / 64.0) {
+            emit(piece.central, share);
+            return;
+        }
+        if (piece.level < model_.asos.maxLevel && 0.5 * differences > model_.asos.eps) {
+            LightPiece children[LightBeams::kMaxChildren];
+            const int count = beams_.split(piece, children);
+            for (int i = 0; i < count; ++i)
+                if (!belowHorizon(q_.normal, children[i])) refineLit(children[i]);
+            return;
+        }
+        const auto [centreWeight, probeWeight] = beams_.ruleWeights(piece);
+        emit(piece.central, share * centreWeight);
+        for (int i = 0; i < n; ++i) emit(probes[i], share * probeWeight);
+    }
+
+    // Two numbers in [0, 1) for a piece: its level and position decide them.
+    Vec2 randomPoint(const LightPiece& piece) const {
+        return q_.rng.uniform2(SampleStream::LightJitter,
+                               mix64(jitterKey_ ^ (std::uint64_t(piece.level) << 44 | piece.path)));
+    }
+
+    const Scene& scene_;
+    const LightModel& model_;
+    const AreaLightQuery& q_;
+    const Origin& origin_;
+    LightBeams beams_;
+    AreaLightScratch& s_;
+    RenderCounters& c_;
+    std::uint64_t jitterKey_ = 0;
+};
+
+// Whether the beam from `apex` toward the light holds footprint point `f`.
+bool beamHolds(const LightModel& m, const Vec3& apex, const Vec3& f) {
+    const Vec3 d = f - apex;
+    switch (m.shape) {
+        case LightShape::Rectangle: {
+            const LightRectangle& r = m.rectangle;
+            const Vec3 n = glm::cross(r.edgeA, r.edgeB);
+            const double along = glm::dot(d, n);
+            if (along == 0.0) return false;
+            const double t = glm::dot(r.corner - apex, n) / along;
+            if (!(t > 0.0)) return false;
+            const Vec3 rel = apex + t * d - r.corner;
+            const double nn = glm::dot(n, n);
+            const double s = glm::dot(glm::cross(rel, r.edgeB), n) / nn;
+            const double u = glm::dot(glm::cross(r.edgeA, rel), n) / nn;
+            return s >= 0.0 && s <= 1.0 && u >= 0.0 && u <= 1.0;
+        }
+        case LightShape::Segment: {
+            // A triangle cannot hold an area: it must span the footprint's
+            // extent along the light, i.e. hold the footprint point's
+            // projection onto the triangle's plane.
+            const Vec3 a = m.start - apex, b = m.end - apex;
+            const Vec3 normal = glm::cross(a, b);
+            const double length = glm::length(normal);
+            if (!(length > 0.0)) return false;
+            const Vec3 unit = normal / length;
+            const Vec3 p = d - glm::dot(d, unit) * unit;
+            return glm::dot(glm::cross(a, p), unit) >= 0.0 && glm::dot(glm::cross(p, b), unit) >= 0.0 &&
+                   glm::dot(p, a + b) > 0.0;
+        }
+        case LightShape::Sphere: {
+            const Vec3 toCentre = m.position - apex;
+            const double distance = glm::length(toCentre);
+            if (!(distance > m.radius)) return false;
+            return angleBetween(d, toCentre) <= std::asin(m.radius / distance);
+        }
+        case LightShape::Point: break;
+    }
+    return false;
+}
+
+}  // namespace
+
+std::optional<Vec3> behindApex(const LightModel& model, const Vec3& point, const Vec3& normal,
+                               const Footprint& footprint) {
+    if (!model.isArea() || !footprint.onTangentPlane()) return std::nullopt;
+    const Vec3 toLight = model.position - point;
+    const double distance = glm::length(toLight);
+    if (!(distance > 0.0)) return std::nullopt;
+    const Vec3 axis = toLight / distance;
+    // A light near the horizon would put the apex far along the surface.
+    if (!(glm::dot(axis, normal) > 0.05)) return std::nullopt;
+    const std::array<Vec3, 4>& corners = footprint.corners();
+    double reach = 0.0;
+    for (const Vec3& c : corners) reach = std::max(reach, glm::length(c - point));
+    if (!(reach > 0.0)) return std::nullopt;
+    const auto holds = [&](double h) {
+        const Vec3 apex = point - h * axis;
+        return std::all_of(corners.begin(), corners.end(),
+                           [&](const Vec3& c) { return beamHolds(model, apex, c); });
+    };
+    // The beam's cross-section at the surface grows with the distance behind
+    // it, toward the light's own size: start from the similar-triangles
+    // estimate, double until it holds, then halve the bracket.
+    const double lightRadius =
+        model.shape == LightShape::Sphere ? model.radius
+        : model.shape == LightShape::Segment ? 0.5 * model.size
+                                             : 0.5 * std::sqrt(model.size);
+    double hi = reach * distance / std::max(lightRadius - reach, 0.125 * lightRadius);
+    const double farthest = 1e3 * distance;
+    while (!holds(hi)) {
+        hi *= 2.0;
+        if (hi > farthest) return std::nullopt;
+    }
+    double lo = 0.0;
+    for (int i = 0; i < 12; ++i) {
+        const double mid = 0.5 * (lo + hi);
+        (holds(mid) ? hi : lo) = mid;
+    }
+    return point - hi * axis;
+}
+
+WholeLight wholeLightVisibility(const Scene& scene, const LightModel& model, const AreaLightQuery& q,
+                                RenderCounters& counters) {
+    const LightBeams beams(model, q.point, kTolerance);
+    if (!beams.valid()) return WholeLight::Partial;
+    const LightPiece root = beams.root();
+    const PreparedCone prepared(root.cone);
+    const double nearestLight = beams.nearestLightDistance(root) - kTolerance;
+    bool any = false, blocked = false;
+    scene.coneCandidates(root.cone, [&](std::uint32_t object) {
+        if (blocked || scene.object(object).noShadow) return;
+        if (object == q.shadedObject && !q.shadedCanSelfShadow) return;
+        ++counters.coneTests;
+        const ConeClass k = scene.primitive(object).classify(prepared);
+        if (k.coverage == Coverage::Miss) return;
+        any = true;
+        blocked = k.coverage == Coverage::Full && k.tFar < nearestLight;
+    });
+    return blocked ? WholeLight::Blocked : (any ? WholeLight::Partial : WholeLight::Lit);
+}
+
+std::span<const LightSample> asosAreaLightSamples(const Scene& scene, const LightModel& model,
+                                                  ShadowApex apex, const AreaLightQuery& query,
+                                                  AreaLightScratch& scratch, RenderCounters& counters) {
+    scratch.samples.clear();
+    Origin origin;
+    origin.apex = query.point;
+    if (apex == ShadowApex::Behind && query.footprint) {
+        if (const std::optional<Vec3> a = behindApex(model, query.point, query.normal, *query.footprint)) {
+            origin.apex = *a;
+            origin.behind = true;
+            origin.normal = query.normal;
+            origin.depth = glm::dot(query.point - *a, query.normal);
+            if (!(origin.depth > 0.0)) origin = Origin{query.point};
+        }
+    }
+    if (model.isArea()) BeamShadow(scene, model, query, origin, scratch, counters).run();
+    return scratch.samples;
+}
+
+}  // namespace asos

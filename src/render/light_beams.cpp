@@ -1,0 +1,340 @@
+#include "asos/render/light_beams.hpp"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+
+namespace asos {
+
+namespace {
+
+// The radius splitting [r0, r1] at fraction f of its area.
+double areaRadius(double r0, double r1, double f) { return std::sqrt(r0 * r0 + f * (r1 * r1 - r0 * r0)); }
+
+// How far a polar rectangle is from square (as geometry/beam_sphere.cpp
+// measures it): radial extent against arc length at the area-median radius.
+double aspect(double r0, double r1, double phi0, double phi1) {
+    const double radial = r1 - r0;
+    const double arc = std::sqrt(0.5 * (r0 * r0 + r1 * r1)) * (phi1 - phi0);
+    return std::max(radial / arc, arc / radial);
+}
+
+}  // namespace
+
+LightBeams::LightBeams(const LightModel& model, const Vec3& apex, double tMin)
+    : shape_(model.shape), apex_(apex), tMin_(tMin) {
+    switch (shape_) {
+        case LightShape::Rectangle: {
+            corner_ = model.rectangle.corner;
+            edgeA_ = model.rectangle.edgeA;
+            edgeB_ = model.rectangle.edgeB;
+            const Vec3 n = glm::cross(edgeA_, edgeB_);
+            const double area = glm::length(n);
+            if (!(area > 0.0)) return;
+            normal_ = n / area;
+            const Vec3 rel = apex_ - corner_;
+            height_ = std::abs(glm::dot(rel, normal_));
+            // As RectShadowPyray: below rounding, the apex is in the plane.
+            const double scale = glm::length(edgeA_) + glm::length(edgeB_) + glm::length(rel);
+            if (!(height_ > 1e-12 * scale)) return;
+            rectangular_ = std::abs(glm::dot(edgeA_, edgeB_)) <=
+                           1e-12 * glm::length(edgeA_) * glm::length(edgeB_);
+            footS_ = glm::dot(rel, edgeA_) / glm::dot(edgeA_, edgeA_);
+            footT_ = glm::dot(rel, edgeB_) / glm::dot(edgeB_, edgeB_);
+            valid_ = true;
+            return;
+        }
+        case LightShape::Segment: {
+            corner_ = model.start;
+            edgeA_ = model.end - model.start;
+            const double length = glm::length(edgeA_);
+            if (!(length > 0.0)) return;
+            const double f = std::clamp(glm::dot(apex_ - corner_, edgeA_) / (length * length), 0.0, 1.0);
+            const double offLine = glm::length(apex_ - (corner_ + f * edgeA_));
+            if (!(offLine > 1e-12 * (length + glm::length(apex_ - corner_)))) return;
+            footS_ = glm::dot(apex_ - corner_, edgeA_) / (length * length);
+            valid_ = true;
+            return;
+        }
+        case LightShape::Sphere: {
+            centre_ = model.position;
+            radius_ = model.radius;
+            const Vec3 toCentre = centre_ - apex_;
+            distance_ = glm::length(toCentre);
+            if (!(radius_ > 0.0) || !(distance_ > radius_ * (1.0 + 1e-12))) return;
+            alpha_ = std::asin(std::min(1.0, radius_ / distance_));
+            tanAlpha_ = std::tan(alpha_);
+            frame_ = Frame::around(toCentre / distance_);
+            valid_ = true;
+            return;
+        }
+        case LightShape::Point: return;
+    }
+}
+
+double LightBeams::share(int level) const {
+    return shape_ == LightShape::Segment ? std::ldexp(1.0, -level) : std::ldexp(1.0, -2 * level);
+}
+
+BeamRay LightBeams::toward(const Vec3& target) const {
+    const Vec3 offset = target - apex_;
+    const double distance = glm::length(offset);
+    return {Ray{apex_, offset / distance}, distance};
+}
+
+Vec3 LightBeams::discDirection(double r, double phi) const {
+    const double x = r * std::cos(phi), y = r * std::sin(phi);
+    return glm::normalize(frame_.toWorld(tanAlpha_ * x, tanAlpha_ * y, 1.0));
+}
+
+double LightBeams::sphereDistance(const Vec3& dir) const {
+    const Vec3 toCentre = centre_ - apex_;
+    const double along = glm::dot(dir, toCentre);
+    const Vec3 off = glm::cross(dir, toCentre);
+    const double inside = radius_ * radius_ - glm::dot(off, off);
+    return along - std::sqrt(std::max(0.0, inside));
+}
+
+double LightBeams::sphereDistanceAtRadius(double r, double widen) const {
+    // As SphereShadowCone: near the rim the distance is the square root of a
+    // small difference; `widen` moves it out (in) past the uncertainty.
+    const double tanPsi = tanAlpha_ * r;
+    const double cosPsi = 1.0 / std::sqrt(1.0 + tanPsi * tanPsi);
+    const double sinPsi = tanPsi * cosPsi;
+    const double inside = radius_ * radius_ - distance_ * distance_ * sinPsi * sinPsi -
+                          widen * 1e-14 * distance_ * distance_;
+    return distance_ * cosPsi - std::sqrt(std::max(0.0, inside));
+}
+
+Cone LightBeams::coneAbout(const Vec3& axis, const Vec3* directions, int count, double farthest,
+                           double& tanHalf) const {
+    // The widest direction by the tangent of its angle: one arctangent.
+    double widest = 0.0;
+    bool hemisphere = true;
+    for (int i = 0; i < count; ++i) {
+        const double along = glm::dot(directions[i], axis);
+        if (!(along > 1e-6)) {
+            hemisphere = false;
+            break;
+        }
+        widest = std::max(widest, glm::length(glm::cross(directions[i], axis)) / along);
+    }
+    // A piece reaching a right angle from its central ray has no convex cone
+    // about it: the cone of all directions holds it.
+    const double halfAngle = hemisphere ? std::atan(widest) + kConeAnglePad : kPi;
+    tanHalf = hemisphere ? widest : std::numeric_limits<double>::quiet_NaN();
+    return {apex_, axis, halfAngle, tMin_, farthest * (1.0 + 1e-12)};
+}
+
+LightPiece LightBeams::make(double a0, double b0, double a1, double b1, int level, std::uint64_t path,
+                            bool cone) const {
+    LightPiece p{a0, b0, a1, b1, level, path, {}, {}};
+    switch (shape_) {
+        case LightShape::Rectangle: {
+            p.central = toward(rectPoint(0.5 * (a0 + a1), 0.5 * (b0 + b1)));
+            if (!cone) break;
+            const Vec3 corners[4] = {rectPoint(a0, b0), rectPoint(a1, b0), rectPoint(a1, b1), rectPoint(a0, b1)};
+            Vec3 dirs[4];
+            double farthest = 0.0;
+            for (int i = 0; i < 4; ++i) {
+                const Vec3 d = corners[i] - apex_;
+                const double l = glm::length(d);
+                farthest = std::max(farthest, l);
+                dirs[i] = d / l;
+            }
+            p.cone = coneAbout(p.central.ray.dir, dirs, 4, farthest, p.tanHalf);
+            break;
+        }
+        case LightShape::Segment: {
+            p.central = toward(corner_ + 0.5 * (a0 + a1) * edgeA_);
+            if (!cone) break;
+            const Vec3 d0 = corner_ + a0 * edgeA_ - apex_, d1 = corner_ + a1 * edgeA_ - apex_;
+            const double l0 = glm::length(d0), l1 = glm::length(d1);
+            const Vec3 dirs[2] = {d0 / l0, d1 / l1};
+            // The bisector of the two end rays: the smallest cone of the
+            // triangle.
+            const Vec3 axis = glm::normalize(dirs[0] + dirs[1]);
+            p.cone = {apex_, axis, 0.5 * angleBetween(dirs[0], dirs[1]) + kConeAnglePad, tMin_,
+                      std::max(l0, l1) * (1.0 + 1e-12)};
+            break;
+        }
+        case LightShape::Sphere: {
+            const double far = sphereDistanceAtRadius(a1, 1.0);
+            if (level == 0) {
+                p.central = {Ray{apex_, frame_.w}, sphereDistance(frame_.w)};
+                p.cone = {apex_, frame_.w, alpha_ + kConeAnglePad, tMin_, far * (1.0 + 1e-12)};
+                break;
+            }
+            const Vec3 dir = discDirection(areaRadius(a0, a1, 0.5), 0.5 * (b0 + b1));
+            p.central = {Ray{apex_, dir}, sphereDistance(dir)};
+            if (!cone) break;
+            const Vec3 corners[4] = {discDirection(a0, b0), discDirection(a0, b1), discDirection(a1, b0),
+                                     discDirection(a1, b1)};
+            p.cone = coneAbout(dir, corners, 4, far, p.tanHalf);
+            break;
+        }
+        case LightShape::Point: break;
+    }
+    return p;
+}
+
+LightPiece LightBeams::root() const {
+    return shape_ == LightShape::Sphere ? make(0.0, 0.0, 1.0, 2.0 * kPi, 0, 0) : make(0.0, 0.0, 1.0, 1.0, 0, 0);
+}
+
+int LightBeams::splitRectangle(const LightPiece& p, LightPiece* out, bool cones) const {
+    // The quarters share the nine points of a 3 x 3 lattice over the piece:
+    // each is made and normalised once.
+    const double s[3] = {p.a0, 0.5 * (p.a0 + p.a1), p.a1};
+    const double t[3] = {p.b0, 0.5 * (p.b0 + p.b1), p.b1};
+    Vec3 dirs[3][3];
+    double lengths[3][3];
+    if (cones)
+        for (int j = 0; j < 3; ++j)
+            for (int i = 0; i < 3; ++i) {
+                const Vec3 d = rectPoint(s[i], t[j]) - apex_;
+                lengths[j][i] = glm::length(d);
+                dirs[j][i] = d / lengths[j][i];
+            }
+    for (int q = 0; q < 4; ++q) {
+        const int i = q & 1, j = q >> 1;
+        LightPiece& c = out[q];
+        c = LightPiece{s[i], t[j], s[i + 1], t[j + 1], p.level + 1, 4 * p.path + std::uint64_t(q), {}, {}};
+        c.central = toward(rectPoint(0.5 * (s[i] + s[i + 1]), 0.5 * (t[j] + t[j + 1])));
+        if (!cones) continue;
+        const Vec3 corners[4] = {dirs[j][i], dirs[j][i + 1], dirs[j + 1][i + 1], dirs[j + 1][i]};
+        const double farthest = std::max(std::max(lengths[j][i], lengths[j][i + 1]),
+                                         std::max(lengths[j + 1][i + 1], lengths[j + 1][i]));
+        c.cone = coneAbout(c.central.ray.dir, corners, 4, farthest, c.tanHalf);
+    }
+    return 4;
+}
+
+int LightBeams::split(const LightPiece& p, LightPiece* out, bool cones) const {
+    const int level = p.level + 1;
+    switch (shape_) {
+        case LightShape::Rectangle: return splitRectangle(p, out, cones);
+        case LightShape::Segment: {
+            const double mid = 0.5 * (p.a0 + p.a1);
+            out[0] = make(p.a0, 0.0, mid, 1.0, level, 2 * p.path, cones);
+            out[1] = make(mid, 0.0, p.a1, 1.0, level, 2 * p.path + 1, cones);
+            return 2;
+        }
+        case LightShape::Sphere: {
+            // The equal-area pieces of geometry/beam_sphere.cpp: the disc's
+            // quadrants, then 2 x 2, 1 x 4 or 4 x 1 in r^2 and phi, whichever
+            // leaves the pieces closest to square.
+            std::array<std::array<double, 4>, 4> pieces;  // r0, r1, phi0, phi1
+            const double r0 = p.a0, r1 = p.a1, phi0 = p.b0, phi1 = p.b1;
+            const auto phiAt = [&](double f) { return phi0 + f * (phi1 - phi0); };
+            if (p.level == 0) {
+                pieces = {{{0.0, 1.0, 0.0, 0.5 * kPi}, {0.0, 1.0, 0.5 * kPi, kPi},
+                           {0.0, 1.0, kPi, 1.5 * kPi}, {0.0, 1.0, 1.5 * kPi, 2.0 * kPi}}};
+            } else {
+                const double rm = areaRadius(r0, r1, 0.5), pm = phiAt(0.5);
+                const std::array<std::array<double, 4>, 4> grid = {
+                    {{r0, rm, phi0, pm}, {rm, r1, phi0, pm}, {r0, rm, pm, phi1}, {rm, r1, pm, phi1}}};
+                const double p1 = phiAt(0.25), p3 = phiAt(0.75);
+                const std::array<std::array<double, 4>, 4> wedges = {
+                    {{r0, r1, phi0, p1}, {r0, r1, p1, pm}, {r0, r1, pm, p3}, {r0, r1, p3, phi1}}};
+                const double q1 = areaRadius(r0, r1, 0.25), q3 = areaRadius(r0, r1, 0.75);
+                const std::array<std::array<double, 4>, 4> rings = {
+                    {{r0, q1, phi0, phi1}, {q1, rm, phi0, phi1}, {rm, q3, phi0, phi1}, {q3, r1, phi0, phi1}}};
+                const auto worst = [](const std::array<std::array<double, 4>, 4>& set) {
+                    double w = 0.0;
+                    for (const auto& d : set) w = std::max(w, aspect(d[0], d[1], d[2], d[3]));
+                    return w;
+                };
+                const double g = worst(grid), w = worst(wedges), r = worst(rings);
+                pieces = (g <= w && g <= r) ? grid : (w <= r ? wedges : rings);
+            }
+            for (int q = 0; q < 4; ++q)
+                out[q] = make(pieces[q][0], pieces[q][2], pieces[q][1], pieces[q][3], level,
+                              4 * p.path + std::uint64_t(q), cones);
+            return 4;
+        }
+        case LightShape::Point: break;
+    }
+    return 0;
+}
+
+BeamRay LightBeams::sample(const LightPiece& p, const Vec2& xi) const {
+    switch (shape_) {
+        case LightShape::Rectangle:
+            return toward(rectPoint(p.a0 + xi.x * (p.a1 - p.a0), p.b0 + xi.y * (p.b1 - p.b0)));
+        case LightShape::Segment: return toward(corner_ + (p.a0 + xi.x * (p.a1 - p.a0)) * edgeA_);
+        case LightShape::Sphere: {
+            const Vec3 dir = discDirection(areaRadius(p.a0, p.a1, xi.x), p.b0 + xi.y * (p.b1 - p.b0));
+            return {Ray{apex_, dir}, sphereDistance(dir)};
+        }
+        case LightShape::Point: break;
+    }
+    return p.central;
+}
+
+double LightBeams::nearestLightDistance(const LightPiece& p) const {
+    switch (shape_) {
+        case LightShape::Rectangle: {
+            // Rectangles: the nearest point is the foot of the apex clamped
+            // to the piece. Other parallelograms: the height above the plane,
+            // a lower bound.
+            if (!rectangular_) return height_;
+            const Vec3 nearest = rectPoint(std::clamp(footS_, p.a0, p.a1), std::clamp(footT_, p.b0, p.b1));
+            return std::max(height_, glm::length(nearest - apex_) * (1.0 - 1e-12));
+        }
+        case LightShape::Segment: {
+            const Vec3 nearest = corner_ + std::clamp(footS_, p.a0, p.a1) * edgeA_;
+            return glm::length(nearest - apex_) * (1.0 - 1e-12);
+        }
+        case LightShape::Sphere: return sphereDistanceAtRadius(p.a0, -1.0) * (1.0 - 1e-12);
+        case LightShape::Point: break;
+    }
+    return 0.0;
+}
+
+int LightBeams::probeRays(const LightPiece& p, BeamRay* out) const {
+    const auto disc = [&](double r, double phi) {
+        const Vec3 dir = discDirection(r, phi);
+        return BeamRay{Ray{apex_, dir}, sphereDistance(dir)};
+    };
+    switch (shape_) {
+        case LightShape::Rectangle: {
+            const double sm = 0.5 * (p.a0 + p.a1), tm = 0.5 * (p.b0 + p.b1);
+            out[0] = toward(rectPoint(p.a0, tm));
+            out[1] = toward(rectPoint(p.a1, tm));
+            out[2] = toward(rectPoint(sm, p.b0));
+            out[3] = toward(rectPoint(sm, p.b1));
+            return 4;
+        }
+        case LightShape::Segment:
+            out[0] = toward(corner_ + p.a0 * edgeA_);
+            out[1] = toward(corner_ + p.a1 * edgeA_);
+            return 2;
+        case LightShape::Sphere: {
+            if (p.level == 0) {
+                for (int i = 0; i < 4; ++i) out[i] = disc(1.0, 0.5 * kPi * ((i & 1) * 2 + (i >> 1)));
+                return 4;
+            }
+            const double rm = areaRadius(p.a0, p.a1, 0.5), pm = 0.5 * (p.b0 + p.b1);
+            out[0] = disc(p.a0, pm);
+            out[1] = disc(p.a1, pm);
+            out[2] = disc(rm, p.b0);
+            out[3] = disc(rm, p.b1);
+            return 4;
+        }
+        case LightShape::Point: break;
+    }
+    return 0;
+}
+
+std::pair<double, double> LightBeams::ruleWeights(const LightPiece& p) const {
+    if (shape_ == LightShape::Segment) return {2.0 / 3.0, 1.0 / 6.0};
+    if (shape_ == LightShape::Sphere && p.level == 0) return {0.5, 0.125};
+    return {1.0 / 3.0, 1.0 / 6.0};
+}
+
+double LightBeams::emission(const Vec3& dir) const {
+    return shape_ == LightShape::Rectangle ? std::abs(glm::dot(normal_, dir)) : 1.0;
+}
+
+}  // namespace asos

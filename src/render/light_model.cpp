@@ -1,0 +1,134 @@
+#include "asos/render/light_model.hpp"
+
+#include <cmath>
+
+namespace asos {
+
+namespace {
+
+// POV-Ray's EPSILON, used by its parser to call two axis lengths equal.
+constexpr double kAxisLengthTolerance = 1e-10;
+
+bool active(const Vec3& axis, int count) { return count > 1 && glm::length(axis) > 0.0; }
+
+}  // namespace
+
+const char* lightMethodName(LightMethod method) {
+    return method == LightMethod::Asos ? "asos" : "grid";
+}
+
+std::optional<LightMethod> parseLightMethod(std::string_view name) {
+    if (name == "asos") return LightMethod::Asos;
+    if (name == "grid") return LightMethod::Grid;
+    return std::nullopt;
+}
+
+const char* shadowApexName(ShadowApex apex) { return apex == ShadowApex::Behind ? "behind" : "surface"; }
+
+std::optional<ShadowApex> parseShadowApex(std::string_view name) {
+    if (name == "surface") return ShadowApex::Surface;
+    if (name == "behind") return ShadowApex::Behind;
+    return std::nullopt;
+}
+
+const char* lightShapeName(LightShape shape) {
+    switch (shape) {
+        case LightShape::Point: return "point";
+        case LightShape::Rectangle: return "rectangular";
+        case LightShape::Segment: return "linear";
+        case LightShape::Sphere: return "spherical";
+    }
+    return "?";
+}
+
+LightModel makeLightModel(const Light& light, const AsosSettings& sceneSettings,
+                          std::optional<int> samples) {
+    LightModel m;
+    m.position = light.position;
+    m.color = light.color;
+    m.shadowless = light.shadowless;
+    m.asos = sceneSettings.refinedBy(light.asos);
+    if (!light.area) return m;
+    const AreaLight& a = *light.area;
+    m.adaptive = a.adaptive;
+    m.jitter = a.jitter;
+    // A 1 x 1 array is one point light at the centre, as in POV-Ray.
+    if (a.size1 <= 1 && a.size2 <= 1) return m;
+
+    const auto counts = [&](int n1, int n2) {
+        m.count1 = samples ? *samples : n1;
+        m.count2 = samples ? *samples : n2;
+    };
+    if (a.orient) {
+        // POV-Ray's oriented disc: circular, facing the point, of the first
+        // axis's length. Here a sphere of that diameter (paper: "Spherical
+        // Light Sources").
+        m.radius = 0.5 * glm::length(a.axis1);
+        if (!(m.radius > 0.0)) return m;
+        m.shape = LightShape::Sphere;
+        m.size = kPi * m.radius * m.radius;
+        counts(a.size1, a.size2);
+        return m;
+    }
+    const bool first = active(a.axis1, a.size1), second = active(a.axis2, a.size2);
+    if (first && second) {
+        m.shape = LightShape::Rectangle;
+        m.rectangle = {light.position - 0.5 * a.axis1 - 0.5 * a.axis2, a.axis1, a.axis2};
+        m.size = glm::length(glm::cross(a.axis1, a.axis2));
+        counts(a.size1, a.size2);
+    } else if (first || second) {
+        const Vec3& axis = first ? a.axis1 : a.axis2;
+        m.shape = LightShape::Segment;
+        m.start = light.position - 0.5 * axis;
+        m.end = light.position + 0.5 * axis;
+        m.size = glm::length(axis);
+        m.count1 = samples ? *samples : (first ? a.size1 : a.size2);
+        m.count2 = 1;
+    }
+    return m;
+}
+
+bool checkLight(const Light& light, Diagnostics& diagnostics) {
+    if (!light.area) return true;
+    const AreaLight& a = *light.area;
+    bool ok = true;
+    auto error = [&](const std::string& message) {
+        diagnostics.error(light.loc, message);
+        ok = false;
+    };
+    if (a.size1 < 1 || a.size2 < 1 || a.size1 > kMaxLightSamplesPerSide ||
+        a.size2 > kMaxLightSamplesPerSide)
+        error("area_light counts must be between 1 and " + std::to_string(kMaxLightSamplesPerSide) +
+              ", not " + std::to_string(a.size1) + " and " + std::to_string(a.size2));
+    if (a.adaptive && *a.adaptive < 0)
+        error("adaptive must not be negative, not " + std::to_string(*a.adaptive));
+    if (a.orient) {
+        if (!a.circular)
+            diagnostics.warning(light.loc,
+                                "orient is used with circular area lights only (as in POV-Ray): this "
+                                "area light is circular, a spherical light");
+        const double l1 = glm::length(a.axis1), l2 = glm::length(a.axis2);
+        if (std::abs(l1 - l2) > kAxisLengthTolerance)
+            diagnostics.warning(light.loc,
+                                "with orient the two axes of an area light should be of equal "
+                                "length: the first axis's length is the sphere's diameter");
+    } else if (a.circular) {
+        error("circular area lights without orient (flat discs) are not rendered by asos: add "
+              "orient for a spherical light, or drop circular for a rectangular one");
+    } else if (active(a.axis1, a.size1) && active(a.axis2, a.size2) &&
+               !(glm::length(glm::cross(a.axis1, a.axis2)) > 0.0)) {
+        error("the axes of this area_light are parallel: it has no area (make one axis zero, or "
+              "one count 1, for a linear light)");
+    }
+    return ok;
+}
+
+SceneLights::SceneLights(const SceneDescription& description, const LightSetup& setup)
+    : setup_(setup) {
+    const AsosSettings scene = setup.sceneSettings.value_or(sceneAsosSettings(description.globals, {}));
+    models_.reserve(description.lights.size());
+    for (const Light& light : description.lights)
+        models_.push_back(makeLightModel(light, scene, setup.samples));
+}
+
+}  // namespace asos

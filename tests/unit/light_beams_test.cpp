@@ -1,0 +1,160 @@
+// The renderer's light beams (render/light_beams.hpp) are the pieces of
+// geometry/beam_rect.hpp, beam_segment.hpp and beam_sphere.hpp: the same
+// regions, central rays and random rays, with cones (about the central ray)
+// that hold every ray of the piece.
+#include <catch2/catch.hpp>
+
+#include <cmath>
+#include <random>
+
+#include "asos/geometry/beam_rect.hpp"
+#include "asos/geometry/beam_segment.hpp"
+#include "asos/geometry/beam_sphere.hpp"
+#include "asos/render/light_beams.hpp"
+
+using namespace asos;
+
+namespace {
+
+Vec3 randomUnit(std::mt19937_64& rng) {
+    std::normal_distribution<double> n;
+    for (;;) {
+        const Vec3 d(n(rng), n(rng), n(rng));
+        const double l = glm::length(d);
+        if (l > 1e-6) return d / l;
+    }
+}
+
+void checkSame(const BeamRay& a, const BeamRay& b) {
+    CHECK(glm::length(a.ray.dir - b.ray.dir) <= 1e-12);
+    CHECK(a.distance == Approx(b.distance).epsilon(1e-10));
+}
+
+// Rays of the piece lie in its cone and reach the light within its range.
+void checkInside(const LightBeams& beams, const LightPiece& p, std::mt19937_64& rng) {
+    std::uniform_real_distribution<double> u01(0.0, 1.0);
+    for (int k = 0; k < 24; ++k) {
+        const Vec2 xi = k < 4 ? Vec2(k & 1, k >> 1 & 1) : (k < 12 ? Vec2(k < 8 ? 1.0 : 0.0, u01(rng)) : Vec2(u01(rng), u01(rng)));
+        const BeamRay r = k == 0 ? p.central : beams.sample(p, xi);
+        CHECK(angleBetween(p.cone.axis, r.ray.dir) <= p.cone.halfAngle);
+        CHECK(r.distance <= p.cone.tMax);
+        CHECK(r.distance >= beams.nearestLightDistance(p) * (1.0 - 1e-12));
+    }
+}
+
+}  // namespace
+
+TEST_CASE("Rectangle beams: the shadow pyray's quarters, with cones about their central rays", "[lights]") {
+    std::mt19937_64 rng(31);
+    std::uniform_real_distribution<double> u01(0.0, 1.0);
+    for (int trial = 0; trial < 150; ++trial) {
+        LightModel m;
+        m.shape = LightShape::Rectangle;
+        const Vec3 a = randomUnit(rng) * (0.1 + 3 * u01(rng));
+        // Rectangles mostly; some slanted parallelograms.
+        Vec3 b = glm::normalize(glm::cross(a, randomUnit(rng))) * (0.1 + 3 * u01(rng));
+        if (trial % 5 == 0) b += 0.5 * a;
+        m.rectangle = {Vec3(u01(rng), 5, u01(rng)), a, b};
+        const Vec3 apex = m.rectangle.corner + randomUnit(rng) * std::pow(10.0, -1.0 + 3.0 * u01(rng));
+        const LightBeams beams(m, apex, 1e-4);
+        const auto reference = RectShadowPyray::make(apex, m.rectangle, 1e-4);
+        REQUIRE(beams.valid() == reference.has_value());
+        if (!reference) continue;
+        LightPiece p = beams.root();
+        RectShadowPyray q = *reference;
+        for (int level = 0; level <= 4; ++level) {
+            CHECK(beams.share(level) == q.weight());
+            checkSame(p.central, q.central());
+            checkSame(beams.sample(p, {0.3, 0.8}), q.sample(0.3, 0.8));
+            CHECK(beams.emission(p.central.ray.dir) == Approx(q.cosTheta()));
+            if (p.cone.halfAngle < 0.5 * kPi) checkInside(beams, p, rng);
+            CHECK(beams.nearestLightDistance(p) <= q.nearestLightDistance() * (1 + 1e-9));
+            LightPiece children[LightBeams::kMaxChildren];
+            REQUIRE(beams.split(p, children) == 4);
+            const auto quarters = q.split();
+            const int pick = int(rng() % 4);
+            for (int i = 0; i < 4; ++i) {
+                CHECK(children[i].level == level + 1);
+                CHECK(children[i].path == 4 * p.path + std::uint64_t(i));
+                CHECK(children[i].a0 == quarters[i].region().s0);
+                CHECK(children[i].b1 == quarters[i].region().t1);
+            }
+            p = children[pick];
+            q = quarters[pick];
+        }
+    }
+}
+
+TEST_CASE("Segment beams: the shadow pyray's halves", "[lights]") {
+    std::mt19937_64 rng(32);
+    std::uniform_real_distribution<double> u01(0.0, 1.0);
+    for (int trial = 0; trial < 150; ++trial) {
+        LightModel m;
+        m.shape = LightShape::Segment;
+        m.start = Vec3(u01(rng), 4, u01(rng));
+        m.end = m.start + randomUnit(rng) * (0.1 + 5 * u01(rng));
+        const Vec3 apex = m.start + randomUnit(rng) * std::pow(10.0, -1.0 + 2.5 * u01(rng));
+        const LightBeams beams(m, apex, 0.0);
+        const auto reference = SegmentShadowPyray::make(apex, m.start, m.end);
+        REQUIRE(beams.valid() == reference.has_value());
+        if (!reference) continue;
+        LightPiece p = beams.root();
+        SegmentShadowPyray q = *reference;
+        for (int level = 0; level <= 6; ++level) {
+            CHECK(beams.share(level) == q.weight());
+            checkSame(p.central, q.central());
+            checkSame(beams.sample(p, {0.7, 0.0}), q.sample(0.7));
+            CHECK(p.cone.halfAngle == Approx(q.cone().halfAngle).margin(1e-12));
+            checkInside(beams, p, rng);
+            LightPiece halves[LightBeams::kMaxChildren];
+            REQUIRE(beams.split(p, halves) == 2);
+            const int pick = int(rng() % 2);
+            p = halves[pick];
+            q = q.split()[pick];
+        }
+    }
+}
+
+TEST_CASE("Sphere beams: the tangent cone's equal-area pieces", "[lights]") {
+    std::mt19937_64 rng(33);
+    std::uniform_real_distribution<double> u01(0.0, 1.0);
+    for (int trial = 0; trial < 100; ++trial) {
+        LightModel m;
+        m.shape = LightShape::Sphere;
+        m.position = Vec3(u01(rng), 6, u01(rng));
+        m.radius = 0.05 + 2 * u01(rng);
+        const double distance = m.radius * (1.0 + std::pow(10.0, -2.0 + 4.0 * u01(rng)));
+        const Vec3 apex = m.position + randomUnit(rng) * distance;
+        const LightBeams beams(m, apex, 1e-4);
+        const auto reference = SphereShadowCone::make(apex, m.position, m.radius, 1e-4);
+        REQUIRE(beams.valid() == reference.has_value());
+        if (!reference) continue;
+        LightPiece p = beams.root();
+        SphereShadowCone q = *reference;
+        CHECK(p.cone.halfAngle == Approx(q.cone().halfAngle).margin(1e-12));
+        for (int level = 0; level < 4; ++level) {
+            checkSame(p.central, q.central());
+            checkSame(beams.sample(p, {0.4, 0.9}), q.sample(0.4, 0.9));
+            checkInside(beams, p, rng);
+            LightPiece pieces[LightBeams::kMaxChildren];
+            REQUIRE(beams.split(p, pieces) == 4);
+            const auto reference4 = q.split();
+            for (int i = 0; i < 4; ++i) {
+                CHECK(pieces[i].a0 == reference4[i].region().r0);
+                CHECK(pieces[i].a1 == reference4[i].region().r1);
+                CHECK(pieces[i].b0 == reference4[i].region().phi0);
+                CHECK(pieces[i].b1 == reference4[i].region().phi1);
+                checkInside(beams, pieces[i], rng);
+            }
+            const int pick = int(rng() % 4);
+            p = pieces[pick];
+            q = reference4[pick];
+        }
+    }
+    // On or inside the light: no beam.
+    LightModel m;
+    m.shape = LightShape::Sphere;
+    m.position = Vec3(0.0);
+    m.radius = 1.0;
+    CHECK_FALSE(LightBeams(m, Vec3(0.5, 0, 0), 0.0).valid());
+}

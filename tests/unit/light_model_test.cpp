@@ -1,0 +1,127 @@
+// The light forms (render/light_model.hpp): which area_light is a rectangle,
+// a segment, a sphere or a point, the grid counts and --light-samples, and
+// what the renderer refuses or warns about.
+#include <catch2/catch.hpp>
+
+#include "asos/render/light_model.hpp"
+
+using namespace asos;
+
+namespace {
+
+Light withArea(const Vec3& axis1, const Vec3& axis2, int n1, int n2) {
+    Light l;
+    l.position = {1, 5, 2};
+    l.color = {0.5, 1.0, 2.0};
+    AreaLight a;
+    a.axis1 = axis1;
+    a.axis2 = axis2;
+    a.size1 = n1;
+    a.size2 = n2;
+    l.area = a;
+    return l;
+}
+
+}  // namespace
+
+TEST_CASE("area_light forms: rectangle, segment, sphere, point", "[lights]") {
+    const AsosSettings scene;
+    const Vec3 x(1, 0, 0), z(0, 0, 1);
+
+    const LightModel rect = makeLightModel(withArea(2.0 * x, 3.0 * z, 4, 5), scene);
+    CHECK(rect.shape == LightShape::Rectangle);
+    CHECK(rect.rectangle.corner == Vec3(0, 5, 0.5));
+    CHECK(rect.rectangle.edgeA == 2.0 * x);
+    CHECK(rect.rectangle.edgeB == 3.0 * z);
+    CHECK(rect.size == 6.0);
+    CHECK(rect.intensity() == Vec3(0.5, 1.0, 2.0) / 6.0);
+    CHECK((rect.count1 == 4 && rect.count2 == 5));
+    CHECK_FALSE(rect.adaptive);
+
+    // A zero axis, or a count of 1: a segment along the other axis.
+    for (const Light& l : {withArea(2.0 * x, Vec3(0.0), 8, 3), withArea(2.0 * x, z, 8, 1)}) {
+        const LightModel seg = makeLightModel(l, scene);
+        CHECK(seg.shape == LightShape::Segment);
+        CHECK(seg.start == Vec3(0, 5, 2));
+        CHECK(seg.end == Vec3(2, 5, 2));
+        CHECK(seg.size == 2.0);
+        CHECK((seg.count1 == 8 && seg.count2 == 1));
+    }
+    const LightModel along2 = makeLightModel(withArea(x, 4.0 * z, 1, 6), scene);
+    CHECK(along2.shape == LightShape::Segment);
+    CHECK(along2.end - along2.start == 4.0 * z);
+    CHECK(along2.count1 == 6);
+
+    // 1 x 1, or both axes zero: a point light, as in POV-Ray.
+    CHECK(makeLightModel(withArea(x, z, 1, 1), scene).shape == LightShape::Point);
+    CHECK(makeLightModel(withArea(Vec3(0.0), Vec3(0.0), 4, 4), scene).shape == LightShape::Point);
+    Light plain;
+    CHECK(makeLightModel(plain, scene).shape == LightShape::Point);
+
+    // circular orient: a sphere of half the first axis's length.
+    Light sphere = withArea(3.0 * x, 3.0 * z, 6, 6);
+    sphere.area->circular = sphere.area->orient = true;
+    sphere.area->adaptive = 1;
+    sphere.area->jitter = true;
+    const LightModel ball = makeLightModel(sphere, scene);
+    CHECK(ball.shape == LightShape::Sphere);
+    CHECK(ball.radius == 1.5);
+    CHECK(ball.size == Approx(kPi * 2.25));
+    CHECK(ball.adaptive == 1);
+    CHECK(ball.jitter);
+    CHECK(ball.position == Vec3(1, 5, 2));
+
+    // --light-samples replaces the counts; the light's asos block refines the scene's.
+    Light tuned = withArea(2.0 * x, 3.0 * z, 4, 5);
+    tuned.asos.eps = 0.25;
+    const LightModel sampled = makeLightModel(tuned, AsosSettings{0.01, 6, true}, 12);
+    CHECK((sampled.count1 == 12 && sampled.count2 == 12));
+    CHECK(sampled.asos == AsosSettings{0.25, 6, true});
+    CHECK(makeLightModel(withArea(2.0 * x, Vec3(0.0), 8, 3), scene, 12).count1 == 12);
+}
+
+TEST_CASE("Light forms asos refuses or warns about", "[lights]") {
+    const Vec3 x(1, 0, 0), z(0, 0, 1);
+    auto check = [](const Light& l) {
+        Diagnostics d;
+        const bool ok = checkLight(l, d);
+        return std::make_pair(ok, d.all());
+    };
+    CHECK(check(withArea(x, z, 4, 4)).first);
+    CHECK(check(withArea(x, z, 4, 4)).second.empty());
+
+    Light disc = withArea(x, z, 4, 4);
+    disc.area->circular = true;
+    disc.loc.line = 9;
+    auto [discOk, discMessages] = check(disc);
+    CHECK_FALSE(discOk);
+    REQUIRE(discMessages.size() == 1);
+    CHECK(discMessages[0].loc.line == 9);
+    CHECK_THAT(discMessages[0].message, Catch::Contains("circular") && Catch::Contains("orient"));
+
+    Light oriented = withArea(x, 2.0 * z, 4, 4);
+    oriented.area->orient = true;
+    auto [orientOk, orientMessages] = check(oriented);
+    CHECK(orientOk);
+    REQUIRE(orientMessages.size() == 2);  // not circular; unequal axes
+    CHECK(orientMessages[0].severity == Severity::Warning);
+    CHECK(orientMessages[1].severity == Severity::Warning);
+    CHECK(makeLightModel(oriented, AsosSettings{}).radius == 0.5);
+
+    CHECK_FALSE(check(withArea(x, 2.0 * x, 4, 4)).first);  // parallel axes
+    Light negative = withArea(x, z, 4, 4);
+    negative.area->adaptive = -1;
+    CHECK_FALSE(check(negative).first);
+    CHECK_FALSE(check(withArea(x, z, 4, kMaxLightSamplesPerSide + 1)).first);
+}
+
+TEST_CASE("Light method and shadow apex names", "[lights]") {
+    CHECK(parseLightMethod("asos") == LightMethod::Asos);
+    CHECK(parseLightMethod("grid") == LightMethod::Grid);
+    CHECK_FALSE(parseLightMethod("stochastic"));
+    CHECK(std::string(lightMethodName(LightMethod::Grid)) == "grid");
+    CHECK(parseShadowApex("behind") == ShadowApex::Behind);
+    CHECK(parseShadowApex("surface") == ShadowApex::Surface);
+    CHECK_FALSE(parseShadowApex("under"));
+    CHECK(std::string(lightShapeName(LightShape::Segment)) == "linear");
+}
