@@ -3,15 +3,23 @@
 // arrangement (examples/figure6.pov) is rendered under each area light kind
 // with the ASOS eye method throughout, so that images differ only by how
 // the light is sampled:
-//   - a converged reference: the grid at R x R points (R = --reference, 64),
-//     jittered (stratified, unbiased), with the rays a whole-light cone test
+//   - a converged reference: the grid at R x R points (R = --reference, 64;
+//     R^2 along a linear light), jittered (stratified, unbiased), with the rays a whole-light cone test
 //     decides skipped (same image, less time);
-//   - ASOS shadow beams at each --eps (the light's EPS, MAX = --max), and with
-//     --behind also with the beams' apex behind the surface;
-//   - the grid at N x N points for each N of --grids (4, 8, 16), as POV-Ray
-//     traces them: a shadow ray to every point.
+//   - ASOS shadow beams at each --eps (the light's EPS, MAX = --max, twice
+//     that for a linear light, which is halved where the others are
+//     quartered), and with --behind also with the beams' apex behind the
+//     surface;
+//   - the grid at N x N points for each N of --grids (4, 8, 16; N^2 points
+//     along a linear light, the same number of rays), as POV-Ray traces
+//     them: a shadow ray to every point.
 // For each: render time, shadow rays, and the error against the reference
-// (RMS and largest, over every channel of every pixel, linear values).
+// (RMS and largest, over every channel of every pixel, linear values). With
+// --behind, also against a reference converged in the image as well (N x N
+// jittered eye rays per pixel, --eye-samples), which the shadow apex behind
+// the surface (antialiasing shadows across the eye pyray's footprint) aims
+// at, over the pixels that one surface covers (the ASOS eye resolved them
+// at level 0), where no edge of an object confounds the shadow's error.
 // References are kept in --cache (when given) and reused; each row shows the
 // best time of --passes renders.
 #include <algorithm>
@@ -47,6 +55,7 @@ struct BenchLightsArgs {
     bool behind = false;
     std::string cache;
     int passes = 1;
+    int eyeSamples = 4;
 };
 
 struct Kind {
@@ -81,6 +90,7 @@ std::optional<double> parseFraction(const std::string& text) {
 
 struct Run {
     Image image;
+    Image samples;  // channels "rays" and "level" per pixel
     double seconds = 0.0;
     std::uint64_t shadowRays = 0;
     std::uint64_t coneTests = 0;
@@ -90,19 +100,24 @@ struct Errors {
     double rms = 0.0, max = 0.0;
 };
 
-Errors compare(const Image& a, const Image& b) {
+// Over every pixel, or with `levels` (a samples AOV) only over the pixels
+// whose eye pyray was resolved at level 0 (one surface covers the pixel: its
+// error is the shading's, not an edge's).
+Errors compare(const Image& a, const Image& b, const Image* levels = nullptr) {
     Errors e;
     double sum = 0.0;
     std::size_t n = 0;
+    const int level = levels ? levels->channelIndex("level") : -1;
     for (int y = 0; y < a.height(); ++y)
         for (int x = 0; x < a.width(); ++x)
             for (int c = 0; c < 3; ++c) {
+                if (levels && (level < 0 || levels->at(x, y, level) != 0.0f)) continue;
                 const double d = double(a.at(x, y, c)) - double(b.at(x, y, c));
                 sum += d * d;
                 e.max = std::max(e.max, std::abs(d));
                 ++n;
             }
-    e.rms = std::sqrt(sum / double(n));
+    e.rms = n > 0 ? std::sqrt(sum / double(n)) : 0.0;
     return e;
 }
 
@@ -177,70 +192,101 @@ int runBenchLights(const BenchLightsArgs& args) {
             for (const Diagnostic& diag : diagnostics.all()) std::cerr << formatDiagnostic(diag);
             if (!out) return std::nullopt;
             if (best && best->seconds <= out->stats.times.renderSeconds) continue;
-            best = Run{std::move(out->color), out->stats.times.renderSeconds, out->stats.counters.shadowRays,
-                       out->stats.counters.coneTests};
+            best = Run{std::move(out->color), std::move(out->samples), out->stats.times.renderSeconds,
+                       out->stats.counters.shadowRays, out->stats.counters.coneTests};
         }
         return best;
     };
 
-    std::printf("asos bench lights: %s at %dx%d, %d threads, ASOS eye method; error against the grid "
-                "at %dx%d jittered points (linear RGB)\n\n",
-                args.scene.c_str(), args.width, args.height, args.threads, args.reference, args.reference);
-    std::printf("%-12s %-30s %9s %12s %11s %10s %10s\n", "light", "shadows", "time (s)", "shadow rays",
-                "cone tests", "RMS error", "max error");
-    for (const Kind& kind : kinds) {
-        // The reference, from the cache when it is there.
-        Image reference;
-        const fs::path cached = args.cache.empty()
-                                    ? fs::path()
-                                    : fs::path(args.cache) / (std::string("reference_") + kind.name + "_" +
-                                                             std::to_string(args.width) + "x" +
-                                                             std::to_string(args.height) + "_" +
-                                                             std::to_string(args.reference) + ".exr");
+    // A reference image, from the cache when it is there: the grid at R x R
+    // jittered points (R^2 along a linear light), seen by the ASOS eye
+    // method (eyeSamples 0) or by eyeSamples x eyeSamples jittered eye rays
+    // per pixel (converged in the image as well).
+    auto referenceFor = [&](const Kind& kind, int eyeSamples) -> std::optional<Image> {
+        const bool linear = kind.light == 2;
+        const std::string name = std::string("reference_") + kind.name + "_" + std::to_string(args.width) + "x" +
+                                 std::to_string(args.height) + "_" + std::to_string(args.reference) +
+                                 (eyeSamples > 0 ? "_eye" + std::to_string(eyeSamples) : "") + ".exr";
+        const fs::path cached = args.cache.empty() ? fs::path() : fs::path(args.cache) / name;
         if (!cached.empty() && fs::exists(cached)) {
             ReadResult r = readImage(cached);
-            if (r.ok()) reference = std::move(r.image);
+            if (r.ok()) return std::move(r.image);
         }
-        if (reference.width() == 0) {
-            const std::optional<SceneDescription> d = load(kind, true);
-            if (!d) return 1;
-            RenderSettings s;
-            s.lightMethod = LightMethod::Grid;
-            s.lightSamples = args.reference;
-            s.gridLightCulling = true;
-            const std::optional<Run> run = render(*d, s, 1);
-            if (!run) return 1;
-            reference = run->image;
-            std::printf("%-12s %-30s %9.2f %12s %11s %10s %10s\n", kind.name,
-                        ("reference " + std::to_string(args.reference) + "x" + std::to_string(args.reference) +
-                         " jittered")
-                            .c_str(),
-                        run->seconds, count(run->shadowRays).c_str(), count(run->coneTests).c_str(), "-", "-");
-            if (!cached.empty()) (void)writeImage(reference, cached);
+        const std::optional<SceneDescription> d = load(kind, true);
+        if (!d) return std::nullopt;
+        RenderSettings s;
+        s.lightMethod = LightMethod::Grid;
+        s.lightSamples = linear ? args.reference * args.reference : args.reference;
+        s.gridLightCulling = true;
+        if (eyeSamples > 0) {
+            s.method = RenderMethod::Jitter;
+            s.samples = eyeSamples;
+        }
+        const std::optional<Run> run = render(*d, s, 1);
+        if (!run) return std::nullopt;
+        const std::string what = "reference " + std::to_string(args.reference) + "x" +
+                                 std::to_string(args.reference) + " jittered" +
+                                 (eyeSamples > 0 ? ", eye " + std::to_string(eyeSamples) + "x" +
+                                                       std::to_string(eyeSamples)
+                                                 : "");
+        std::printf("%-12s %-34s %9.2f %12s %11s\n", kind.name, what.c_str(), run->seconds,
+                    count(run->shadowRays).c_str(), count(run->coneTests).c_str());
+        if (!cached.empty()) (void)writeImage(run->image, cached);
+        return run->image;
+    };
+
+    std::printf("asos bench lights: %s at %dx%d, %d threads, ASOS eye method; error against the grid at "
+                "%dx%d jittered points (%d along a linear light), linear RGB",
+                args.scene.c_str(), args.width, args.height, args.threads, args.reference, args.reference,
+                args.reference * args.reference);
+    if (args.behind)
+        std::printf("; '*': against the same seen by %dx%d jittered eye rays per pixel, over the pixels "
+                    "one surface covers (eye pyray resolved at level 0)",
+                    args.eyeSamples, args.eyeSamples);
+    std::printf("\n\n%-12s %-34s %9s %12s %11s %10s %10s", "light", "shadows", "time (s)", "shadow rays",
+                "cone tests", "RMS error", "max error");
+    if (args.behind) std::printf(" %10s %10s", "RMS*", "max*");
+    std::printf("\n");
+    for (const Kind& kind : kinds) {
+        const bool linear = kind.light == 2;
+        const std::optional<Image> reference = referenceFor(kind, 0);
+        if (!reference) return 1;
+        std::optional<Image> converged;
+        if (args.behind) {
+            converged = referenceFor(kind, args.eyeSamples);
+            if (!converged) return 1;
         }
         const std::optional<SceneDescription> d = load(kind, false);
         if (!d) return 1;
         auto row = [&](const std::string& what, const SceneDescription& scene, const RenderSettings& s) {
             const std::optional<Run> run = render(scene, s, std::max(args.passes, 1));
             if (!run) return false;
-            const Errors e = compare(run->image, reference);
-            std::printf("%-12s %-30s %9.2f %12s %11s %10.5f %10.4f\n", kind.name, what.c_str(), run->seconds,
+            const Errors e = compare(run->image, *reference);
+            std::printf("%-12s %-34s %9.2f %12s %11s %10.5f %10.4f", kind.name, what.c_str(), run->seconds,
                         count(run->shadowRays).c_str(), count(run->coneTests).c_str(), e.rms, e.max);
+            if (converged) {
+                const Errors c = compare(run->image, *converged, &run->samples);
+                std::printf(" %10.5f %10.4f", c.rms, c.max);
+            }
+            std::printf("\n");
             std::fflush(stdout);
             return true;
         };
+        // A linear light is halved at each level where the others are
+        // quartered: twice the levels reach the same resolution.
+        const int maxLevel = linear ? 2 * args.maxLevel : args.maxLevel;
         for (const auto& [text, eps] : epsList) {
             // The light's own settings, as its asos block would give them.
             SceneDescription tuned = *d;
             for (Light& l : tuned.lights) {
                 l.asos.eps = eps;
-                l.asos.maxLevel = args.maxLevel;
+                l.asos.maxLevel = maxLevel;
             }
             for (int apex = 0; apex < (args.behind ? 2 : 1); ++apex) {
                 RenderSettings s;
                 s.lightMethod = LightMethod::Asos;
                 s.shadowApex = apex ? ShadowApex::Behind : ShadowApex::Surface;
-                if (!row("asos eps " + text + " max " + std::to_string(args.maxLevel) + (apex ? " behind" : ""),
+                if (!row("asos eps " + text + " max " + std::to_string(maxLevel) + (apex ? " behind" : ""),
                          tuned, s))
                     return 1;
             }
@@ -248,8 +294,10 @@ int runBenchLights(const BenchLightsArgs& args) {
         for (int n : grids) {
             RenderSettings s;
             s.lightMethod = LightMethod::Grid;
-            s.lightSamples = n;
-            if (!row("grid " + std::to_string(n) + "x" + std::to_string(n), *d, s)) return 1;
+            s.lightSamples = linear ? n * n : n;
+            const std::string what = linear ? "grid " + std::to_string(n * n) + " points"
+                                            : "grid " + std::to_string(n) + "x" + std::to_string(n);
+            if (!row(what, *d, s)) return 1;
         }
     }
     return 0;
@@ -273,6 +321,8 @@ void addBenchLightsCommand(CLI::App& bench, CommandResult& result) {
     cmd->add_flag("--behind", args->behind, "Also ASOS with the shadow apex behind the surface");
     cmd->add_option("--cache", args->cache, "Folder keeping the reference images between runs");
     cmd->add_option("--passes", args->passes, "Renders per row; the best time is shown (default 1)");
+    cmd->add_option("--eye-samples", args->eyeSamples,
+                    "With --behind: N x N jittered eye rays per pixel for the second reference (default 4)");
     cmd->callback([args, &result] { result.exitCode = runBenchLights(*args); });
 }
 

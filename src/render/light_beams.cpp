@@ -178,6 +178,31 @@ LightPiece LightBeams::make(double a0, double b0, double a1, double b1, int leve
     return p;
 }
 
+LightBeams::AngleCache::Trig LightBeams::AngleCache::of(double phi) {
+    for (int i = 0; i < count; ++i)
+        if (entries[i].phi == phi) return entries[i].trig;
+    const Trig t{std::cos(phi), std::sin(phi)};
+    if (count < kSize) entries[count++] = {phi, t};
+    return t;
+}
+
+Vec3 LightBeams::discDirection(double r, const AngleCache::Trig& t) const {
+    return glm::normalize(frame_.toWorld(tanAlpha_ * r * t.c, tanAlpha_ * r * t.s, 1.0));
+}
+
+LightPiece LightBeams::makeDiscPiece(double r0, double phi0, double r1, double phi1, int level,
+                                     std::uint64_t path, bool cone, AngleCache& angles) const {
+    LightPiece p{r0, phi0, r1, phi1, level, path, {}, {}};
+    const Vec3 dir = discDirection(areaRadius(r0, r1, 0.5), angles.of(0.5 * (phi0 + phi1)));
+    p.central = {Ray{apex_, dir}, sphereDistance(dir)};
+    if (!cone) return p;
+    const AngleCache::Trig t0 = angles.of(phi0), t1 = angles.of(phi1);
+    const Vec3 corners[4] = {discDirection(r0, t0), discDirection(r0, t1), discDirection(r1, t0),
+                             discDirection(r1, t1)};
+    p.cone = coneAbout(dir, corners, 4, sphereDistanceAtRadius(r1, 1.0), p.tanHalf);
+    return p;
+}
+
 LightPiece LightBeams::root() const {
     return shape_ == LightShape::Sphere ? make(0.0, 0.0, 1.0, 2.0 * kPi, 0, 0) : make(0.0, 0.0, 1.0, 1.0, 0, 0);
 }
@@ -248,9 +273,12 @@ int LightBeams::split(const LightPiece& p, LightPiece* out, bool cones) const {
                 const double g = worst(grid), w = worst(wedges), r = worst(rings);
                 pieces = (g <= w && g <= r) ? grid : (w <= r ? wedges : rings);
             }
+            // Neighbouring pieces share their edges' angles (bitwise): each
+            // angle's cosine and sine is computed once.
+            AngleCache angles;
             for (int q = 0; q < 4; ++q)
-                out[q] = make(pieces[q][0], pieces[q][2], pieces[q][1], pieces[q][3], level,
-                              4 * p.path + std::uint64_t(q), cones);
+                out[q] = makeDiscPiece(pieces[q][0], pieces[q][2], pieces[q][1], pieces[q][3], level,
+                                       4 * p.path + std::uint64_t(q), cones, angles);
             return 4;
         }
         case LightShape::Point: break;

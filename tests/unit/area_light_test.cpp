@@ -308,3 +308,54 @@ TEST_CASE("The concentric map takes equal areas of the square to equal areas of 
     CHECK(glm::length(concentricDisc(1.0, 0.5)) == Approx(1.0));
     CHECK(glm::length(concentricDisc(0.5, 0.5)) == 0.0);
 }
+
+TEST_CASE("The apex behind the surface averages a sharp shadow over the eye pyray's footprint",
+          "[lights]") {
+    // A thin slab just above the floor, its edge along z at x = 1: its
+    // shadow on the floor is sharp (the penumbra is 0.005 wide) under a
+    // 2 x 2 light five units up. A pixel's footprint 0.1 wide reaches from
+    // x = 0.98 to 1.08: a fifth of it lies in the shadow.
+    Camera camera;
+    camera.projection = Camera::Projection::Orthographic;
+    const double pixel = 0.1;
+    camera.location = {0.5 * 64 * pixel, 10.0, -0.5 * 64 * pixel};
+    camera.direction = {0.0, -1.0, 0.0};
+    camera.right = {64 * pixel, 0.0, 0.0};
+    camera.up = {0.0, 0.0, 64 * pixel};
+    const CameraModel cameraModel(camera, 64, 64);
+    Object slab = makeObject(BoxShape{{-50, 0.001, -50}, {1.0, 0.011, 50}}, litTexture(Vec3(1.0)));
+    LightSetupScene s(areaLight({1.0, 5, -1.6}, {2, 0, 0}, {0, 0, 2}, 8, 8), {slab});
+    s.d.camera = camera;
+    const ImageSquare square{9.8, 16.0, 10.8, 17.0};
+    const Vec3 up(0, 1, 0);
+    const Vec3 centre = cameraModel.ray(square.uMid(), square.vMid()).at(10.0);
+    REQUIRE(centre.x == Approx(1.03));
+    const Footprint footprint(cameraModel, square, centre, up, 10.0);
+    const AsosSettings settings{1.0 / 256.0, 6, false};
+    auto receivedAt = [&](const Vec3& p, ShadowApex apex) {
+        LightSetup setup;
+        setup.method = LightMethod::Asos;
+        setup.sceneSettings = settings;
+        setup.apex = apex;
+        const SceneLights lights(s.d, setup);
+        AreaLightQuery q;
+        q.point = p;
+        q.normal = up;
+        q.footprint = &footprint;
+        RenderCounters counters;
+        return diffuseIrradiance(areaLightSamples(*s.scene, lights, q, s.scratch, counters), up).x;
+    };
+    // The footprint's average, point by point from the surface.
+    double average = 0.0;
+    const int m = 40;
+    for (int i = 0; i < m; ++i) {
+        const double u = square.u0 + (i + 0.5) / m * (square.u1 - square.u0);
+        average += receivedAt(cameraModel.ray(u, square.vMid()).at(10.0), ShadowApex::Surface) / m;
+    }
+    const double atCentre = receivedAt(centre, ShadowApex::Surface);
+    const double behind = receivedAt(centre, ShadowApex::Behind);
+    INFO("average " << average << ", from the centre " << atCentre << ", from behind " << behind);
+    CHECK(atCentre - average > 0.1);               // the centre is lit: the paper's beam aliases
+    CHECK(std::abs(behind - average) < 0.02);      // the beam from behind sees the footprint
+    CHECK(behindApex(makeLightModel(s.d.lights[0], settings), centre, up, footprint).has_value());
+}

@@ -94,6 +94,23 @@ private:
     int splitRectangle(const LightPiece& piece, LightPiece* out, bool cones) const;
     Vec3 rectPoint(double s, double t) const { return corner_ + s * edgeA_ + t * edgeB_; }
     Vec3 discDirection(double r, double phi) const;
+    // Cosines and sines of the few angles of one split, each computed once.
+    struct AngleCache {
+        struct Trig {
+            double c, s;
+        };
+        static constexpr int kSize = 12;
+        struct Entry {
+            double phi;
+            Trig trig;
+        };
+        Entry entries[kSize];
+        int count = 0;
+        Trig of(double phi);
+    };
+    Vec3 discDirection(double r, const AngleCache::Trig& t) const;
+    LightPiece makeDiscPiece(double r0, double phi0, double r1, double phi1, int level, std::uint64_t path,
+                             bool cone, AngleCache& angles) const;
     double sphereDistance(const Vec3& dir) const;
     double sphereDistanceAtRadius(double r, double widen) const;
     BeamRay toward(const Vec3& target) const;
