@@ -4,8 +4,8 @@
 // compared picture for picture.
 //
 // With asos:     scripts/render-example.sh
-//                (until the renderer lands, this prints the parsed scene:
-//                 build/asos parse examples/default.pov)
+//                (writes build/default.png), or
+//                build/asos render examples/default.pov -o default.png
 // With POV-Ray:  povray +W640 +H480 +A0.1 examples/default.pov
 
 #version 3.7;

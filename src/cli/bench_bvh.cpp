@@ -4,15 +4,16 @@
 // directions uniform on the sphere). Issue 3's goal: >= 10 M camera rays/s per
 // core on 10^4 spheres, cost growing about logarithmically with item count.
 //
-// The items are intersected by small exact double-precision intersectors in
-// this file (a sphere's quadratic, Moller-Trumbore for a triangle), standing
-// in for asos::Primitive until the shapes land; the lead switches them to
-// Primitive at integration so that the figures include the real tests.
+// The items are asos::Primitive objects (sphere, and polygon of three points
+// for a triangle) in an asos::Scene, traced by Scene::intersect: the figures
+// are the product's own, dispatch and full hit record included.
 #include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <optional>
+#include <memory>
 #include <random>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -21,55 +22,12 @@
 #include <tbb/info.h>
 
 #include "asos/accel/bvh.hpp"
+#include "asos/diag/diagnostics.hpp"
+#include "asos/scene/scene.hpp"
 #include "cli/commands.hpp"
 
 namespace asos::cli {
 namespace {
-
-struct Hit {
-    double t;
-    std::uint32_t item;
-};
-
-struct SphereItem {
-    Vec3 centre;
-    double radiusSquared;
-};
-
-struct TriangleItem {
-    Vec3 p0, e1, e2;
-};
-
-std::optional<Hit> hitSphere(const SphereItem& s, std::uint32_t item, const Ray& ray, double tMin,
-                             double tMax) {
-    const Vec3 oc = ray.origin - s.centre;
-    const double b = glm::dot(oc, ray.dir);
-    const double c = glm::dot(oc, oc) - s.radiusSquared;
-    const double disc = b * b - c;
-    if (disc < 0.0) return std::nullopt;
-    const double root = std::sqrt(disc);
-    double t = -b - root;
-    if (t < tMin) t = -b + root;
-    if (t < tMin || t > tMax) return std::nullopt;
-    return Hit{t, item};
-}
-
-std::optional<Hit> hitTriangle(const TriangleItem& tri, std::uint32_t item, const Ray& ray,
-                               double tMin, double tMax) {
-    const Vec3 p = glm::cross(ray.dir, tri.e2);
-    const double det = glm::dot(tri.e1, p);
-    if (det == 0.0) return std::nullopt;
-    const double inv = 1.0 / det;
-    const Vec3 s = ray.origin - tri.p0;
-    const double u = glm::dot(s, p) * inv;
-    if (u < 0.0 || u > 1.0) return std::nullopt;
-    const Vec3 q = glm::cross(s, tri.e1);
-    const double v = glm::dot(ray.dir, q) * inv;
-    if (v < 0.0 || u + v > 1.0) return std::nullopt;
-    const double t = glm::dot(tri.e2, q) * inv;
-    if (t < tMin || t > tMax) return std::nullopt;
-    return Hit{t, item};
-}
 
 // Unit density: n items in a cube of side n^(1/3), each about 0.4 across.
 // Items keep their size and spacing as n grows, so a ray that hits something
@@ -78,41 +36,33 @@ std::optional<Hit> hitTriangle(const TriangleItem& tri, std::uint32_t item, cons
 // cost in proportion to its side, n^(1/3): see docs/accel.md.)
 double sideFor(std::size_t n) { return std::cbrt(static_cast<double>(n)); }
 
-std::vector<SphereItem> makeSpheres(std::size_t n, std::mt19937_64& rng) {
+// Spheres of radius 0.1 to 0.3 at random centres.
+std::vector<Object> makeSpheres(std::size_t n, std::mt19937_64& rng) {
     std::uniform_real_distribution<double> u01(0.0, 1.0);
     const double side = sideFor(n);
-    std::vector<SphereItem> items(n);
-    for (auto& s : items) {
-        s.centre = Vec3(u01(rng), u01(rng), u01(rng)) * side;
-        const double r = 0.1 + 0.2 * u01(rng);
-        s.radiusSquared = r * r;
+    std::vector<Object> objects(n);
+    for (auto& o : objects) {
+        SphereShape s;
+        s.center = Vec3(u01(rng), u01(rng), u01(rng)) * side;
+        s.radius = 0.1 + 0.2 * u01(rng);
+        o.shape = s;
     }
-    return items;
+    return objects;
 }
 
-// Triangles with corners in a cube of side 0.8 about a random centre.
-std::vector<TriangleItem> makeTriangles(std::size_t n, std::mt19937_64& rng) {
+// Triangles (polygons of three points) with corners in a cube of side 0.8
+// about a random centre.
+std::vector<Object> makeTriangles(std::size_t n, std::mt19937_64& rng) {
     std::uniform_real_distribution<double> u01(0.0, 1.0);
     const double side = sideFor(n);
-    std::vector<TriangleItem> items(n);
-    for (auto& t : items) {
+    std::vector<Object> objects(n);
+    for (auto& o : objects) {
         const Vec3 c = Vec3(u01(rng), u01(rng), u01(rng)) * side;
         const auto corner = [&] { return c + (Vec3(u01(rng), u01(rng), u01(rng)) - 0.5) * 0.8; };
         const Vec3 a = corner(), b = corner(), d = corner();
-        t = {a, b - a, d - a};
+        o.shape = PolygonShape{{a, b, d}};
     }
-    return items;
-}
-
-Bounds3 boundsOf(const SphereItem& s) {
-    const double r = std::sqrt(s.radiusSquared);
-    return {s.centre - Vec3(r), s.centre + Vec3(r)};
-}
-Bounds3 boundsOf(const TriangleItem& t) {
-    Bounds3 b = Bounds3::of(t.p0);
-    b.extend(t.p0 + t.e1);
-    b.extend(t.p0 + t.e2);
-    return b;
+    return objects;
 }
 
 // Camera rays: a pinhole outside the scene looking at its centre, the image
@@ -168,18 +118,13 @@ double threadSeconds() {
 
 // The best of `passes` passes over the rays (the fastest pass is the one
 // least disturbed: caches shared with other processes).
-template <class Items, class HitFn>
-TraceResult trace(const Bvh& bvh, const Items& items, const std::vector<Ray>& rays, HitFn hitFn,
-                  int passes) {
+TraceResult trace(const Scene& scene, const std::vector<Ray>& rays, int passes) {
     TraceResult best;
     for (int pass = 0; pass < passes; ++pass) {
         TraceResult result;
         const double start = threadSeconds();
         for (const Ray& ray : rays) {
-            const auto hit = bvh.nearest(ray, 0.0, kInfinity,
-                                         [&](std::uint32_t i, const Ray& r, double tMin, double tMax) {
-                                             return hitFn(items[i], i, r, tMin, tMax);
-                                         });
+            const auto hit = scene.intersect(ray, 0.0, kInfinity);
             if (hit) {
                 ++result.hits;
                 result.checksum += hit->t;
@@ -200,7 +145,7 @@ struct ConeResult {
     double visits = 0.0;
 };
 
-ConeResult traceCones(const Bvh& bvh, const std::vector<Ray>& camera, std::size_t count, int passes) {
+ConeResult traceCones(const Scene& scene, const std::vector<Ray>& camera, std::size_t count, int passes) {
     const double halfAngle = 0.75 * std::acos(std::min(1.0, glm::dot(camera[0].dir, camera[1].dir)));
     const std::size_t step = std::max<std::size_t>(1, camera.size() / count);
     ConeResult best;
@@ -208,8 +153,8 @@ ConeResult traceCones(const Bvh& bvh, const std::vector<Ray>& camera, std::size_
         std::size_t visits = 0, cones = 0;
         const double start = threadSeconds();
         for (std::size_t i = 0; i < camera.size(); i += step) {
-            bvh.cone(Cone{camera[i].origin, camera[i].dir, halfAngle, 0.0, kInfinity},
-                     [&](std::uint32_t) { ++visits; });
+            scene.coneCandidates(Cone{camera[i].origin, camera[i].dir, halfAngle, 0.0, kInfinity},
+                                 [&](std::uint32_t) { ++visits; });
             ++cones;
         }
         const double us = (threadSeconds() - start) * 1e6 / static_cast<double>(cones);
@@ -226,28 +171,29 @@ struct Settings {
     std::uint64_t seed = 1;
     std::string scenes = "both";
     int passes = 3;
-    BvhBuildOptions build;
 };
 
-template <class Items, class HitFn>
-void benchScene(const char* name, const Items& items, HitFn hitFn, const Settings& settings,
+// Build time is Scene::build's: the primitives and the BVH over them.
+void benchScene(const char* name, std::vector<Object> objects, const Settings& settings,
                 std::mt19937_64& rng) {
-    std::vector<Bounds3> bounds;
-    bounds.reserve(items.size());
-    for (const auto& item : items) bounds.push_back(boundsOf(item));
+    const std::size_t count = objects.size();
+    SceneDescription description;
+    description.objects = std::move(objects);
+    Diagnostics diagnostics;
     const auto buildStart = std::chrono::steady_clock::now();
-    const Bvh bvh = Bvh::build(bounds, settings.build);
+    const std::unique_ptr<Scene> scene = Scene::build(std::move(description), diagnostics);
     const double buildSeconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - buildStart).count();
+    if (!scene) throw std::runtime_error("bench bvh: a generated object was rejected");
+    const Bvh& bvh = scene->bvh();
 
     const auto camera = cameraRays(bvh.bounds(), settings.imageWidth);
     const auto random = randomRays(bvh.bounds(), settings.randomRayCount, rng);
-    const TraceResult c = trace(bvh, items, camera, hitFn, settings.passes);
-    const TraceResult r = trace(bvh, items, random, hitFn, settings.passes);
-    const ConeResult cones =
-        traceCones(bvh, camera, settings.coneCount, settings.passes);
+    const TraceResult c = trace(*scene, camera, settings.passes);
+    const TraceResult r = trace(*scene, random, settings.passes);
+    const ConeResult cones = traceCones(*scene, camera, settings.coneCount, settings.passes);
     std::printf("%-10s %9zu %9.3f %9zu %6d %11.2f %7.1f%% %11.2f %7.1f%% %9.2f %7.1f   %.6g\n",
-                name, items.size(), buildSeconds, bvh.nodeCount(), bvh.depth(),
+                name, count, buildSeconds, bvh.nodeCount(), bvh.depth(),
                 camera.size() / c.seconds * 1e-6, 100.0 * c.hits / camera.size(),
                 random.size() / r.seconds * 1e-6, 100.0 * r.hits / random.size(),
                 cones.microseconds, cones.visits, c.checksum + r.checksum);
@@ -269,13 +215,11 @@ int run(const Settings& settings) {
     for (const std::size_t n : settings.sizes) {
         std::mt19937_64 rng(settings.seed + n);
         if (settings.scenes != "triangles") {
-            const auto spheres = makeSpheres(n, rng);
-            benchScene("spheres", spheres, [](const SphereItem& s, std::uint32_t i, const Ray& r, double lo, double hi) { return hitSphere(s, i, r, lo, hi); }, settings, rng);
+            benchScene("spheres", makeSpheres(n, rng), settings, rng);
             std::fflush(stdout);
         }
         if (settings.scenes != "spheres") {
-            const auto triangles = makeTriangles(n, rng);
-            benchScene("triangles", triangles, [](const TriangleItem& t, std::uint32_t i, const Ray& r, double lo, double hi) { return hitTriangle(t, i, r, lo, hi); }, settings, rng);
+            benchScene("triangles", makeTriangles(n, rng), settings, rng);
             std::fflush(stdout);
         }
     }
@@ -297,9 +241,6 @@ void addBenchBvhCommand(CLI::App& bench, CommandResult& result) {
         ->check(CLI::Range(1, 100));
     cmd->add_option("--scenes", settings->scenes, "spheres, triangles or both")
         ->check(CLI::IsMember({"spheres", "triangles", "both"}));
-    cmd->add_option("--leaf", settings->build.maxLeafSize, "max items per leaf")->check(CLI::Range(1, 15));
-    cmd->add_option("--traversal-cost", settings->build.traversalCost, "SAH node cost in item tests")
-        ->check(CLI::NonNegativeNumber);
     cmd->callback([settings, &result] { result.exitCode = run(*settings); });
 }
 

@@ -182,10 +182,10 @@ int runBench(const BenchArgs& args) {
               << std::setw(10) << "peak MiB";
     if (args.povray)
         std::cout << "  |" << std::setw(10) << "povray" << std::setw(10) << "povray" << std::setw(10) << "povray";
-    std::cout << '\n' << std::setw(60) << "";
-    if (args.povray)
-        std::cout << "  |" << std::setw(10) << "wall s" << std::setw(10) << "CPU s" << std::setw(10) << "peak MiB";
     std::cout << '\n';
+    if (args.povray)
+        std::cout << std::setw(60) << "" << "  |" << std::setw(10) << "wall s" << std::setw(10) << "CPU s"
+                  << std::setw(10) << "peak MiB" << '\n';
     int failures = 0;
     for (int e = 3; e <= args.maxExponent; ++e) {
         const long n = std::lround(std::pow(10.0, e));

@@ -1,10 +1,12 @@
-// `asos bench render [SCENE] [-W 640 -H 480] [--threads 1,2] [--repeat 3] [--samples 4]`:
-// renders a scene by every method (asos, single, grid, jitter, adaptive) with
+// `asos bench render [SCENE | --builtin primitives|spheres] [-W 640 -H 480] [--threads 1,2]
+//                    [--repeat 3] [--samples 4]`:
+// renders a scene by every method (asos, asos with pattern edges, single,
+// grid, jitter, adaptive) with
 // each thread count and prints a table of render time (best of --repeat),
 // rays (eye and reflected, shadow, all), pyrays, rays per second, and each method's rays
-// and time relative to ASOS. Without SCENE it renders the built-in scene of
-// the issue: the six primitives on a checkered plane under one point light
-// (the same scene as examples/default.pov).
+// and time relative to ASOS. Without SCENE it renders a built-in scene: the
+// issue's six primitives on a checkered plane under one point light (the same
+// scene as examples/default.pov), or 1600 small spheres.
 #include <algorithm>
 #include <cstdio>
 #include <memory>
@@ -41,8 +43,31 @@ polygon {
 }
 )";
 
+// Many small spheres on a plane: nearly every pixel holds an outline, the
+// hardest case for ASOS. Positions and colours come from a fixed sequence.
+constexpr const char* kSpheresScene = R"(#version 3.7;
+global_settings { assumed_gamma 1.0 }
+background { color rgb <0.5, 0.6, 0.8> }
+camera { location <0, 6, -14> look_at <0, 0, 0> angle 50 }
+light_source { <-10, 20, -10>, color rgb 1 }
+plane { y, 0 pigment { color rgb 0.8 } }
+#declare N = 40;
+#for (I, 0, N - 1)
+  #for (J, 0, N - 1)
+    #declare U = mod(I * 0.618034 + J * 0.754878, 1);
+    #declare V = mod(I * 0.569840 + J * 0.414214, 1);
+    #declare R = 0.08 + 0.17 * mod(I * 0.381966 + J * 0.267949, 1);
+    sphere {
+      <-10 + 20 * (I + U) / N, R + 1.5 * mod(I * 0.2 + J * 0.7, 1), -8 + 20 * (J + V) / N>, R
+      pigment { color rgb <0.3 + 0.7 * U, 0.3 + 0.7 * V, 0.3 + 0.7 * mod(U + V, 1)> }
+    }
+  #end
+#end
+)";
+
 struct BenchArgs {
     std::string scene;
+    std::string builtIn = "primitives";
     int width = 640, height = 480;
     std::vector<int> threads{1, 2};
     int repeat = 3;
@@ -70,9 +95,16 @@ int runBench(const BenchArgs& args) {
     options.imageWidth = args.width;
     options.imageHeight = args.height;
     Diagnostics diagnostics;
+    if (args.builtIn != "primitives" && args.builtIn != "spheres") {
+        std::fprintf(stderr, "asos bench render: error: --builtin wants primitives or spheres, not '%s'\n",
+                     args.builtIn.c_str());
+        return 1;
+    }
+    const char* builtInText = args.builtIn == "spheres" ? kSpheresScene : kBuiltInScene;
     const std::optional<SceneDescription> description =
-        args.scene.empty() ? lang::interpretText(kBuiltInScene, "<built-in scene>", options, diagnostics)
-                           : lang::interpretFile(args.scene, options, diagnostics);
+        args.scene.empty()
+            ? lang::interpretText(builtInText, "<built-in " + args.builtIn + ">", options, diagnostics)
+            : lang::interpretFile(args.scene, options, diagnostics);
     for (const Diagnostic& d : diagnostics.all()) std::fprintf(stderr, "%s", formatDiagnostic(d).c_str());
     if (!description) return 1;
     diagnostics.clear();
@@ -94,16 +126,22 @@ int runBench(const BenchArgs& args) {
     };
     std::vector<Row> rows;
     const std::string samples = std::to_string(args.samples);
-    const std::pair<RenderMethod, std::string> methods[] = {
-        {RenderMethod::Asos, "asos"},
-        {RenderMethod::Single, "single"},
-        {RenderMethod::Grid, "grid " + samples + "x" + samples},
-        {RenderMethod::Jitter, "jitter " + samples + "x" + samples},
-        {RenderMethod::Adaptive, "adaptive"}};
+    struct Method {
+        RenderMethod method;
+        std::string label;
+        bool patternEdges;
+    };
+    const Method methods[] = {{RenderMethod::Asos, "asos", false},
+                              {RenderMethod::Asos, "asos+patterns", true},
+                              {RenderMethod::Single, "single", false},
+                              {RenderMethod::Grid, "grid " + samples + "x" + samples, false},
+                              {RenderMethod::Jitter, "jitter " + samples + "x" + samples, false},
+                              {RenderMethod::Adaptive, "adaptive", false}};
     for (int threads : args.threads)
-        for (const auto& [method, label] : methods) {
+        for (const auto& [method, label, patternEdges] : methods) {
             RenderSettings s;
             s.method = method;
+            s.patternEdges = patternEdges;
             s.width = args.width;
             s.height = args.height;
             s.samples = args.samples;
@@ -118,8 +156,10 @@ int runBench(const BenchArgs& args) {
             rows.push_back(row);
         }
 
-    std::printf("%s, %d x %d, best of %d; ratios against asos at the same thread count\n",
-                args.scene.empty() ? "six primitives and a point light (built in)" : args.scene.c_str(),
+    const std::string what = !args.scene.empty()          ? args.scene
+                             : args.builtIn == "spheres" ? "1600 spheres on a plane (built in)"
+                                                         : "six primitives and a point light (built in)";
+    std::printf("%s, %d x %d, best of %d; ratios against asos at the same thread count\n", what.c_str(),
                 args.width, args.height, args.repeat);
     std::printf("%-14s %7s %9s %12s %12s %12s %12s %12s %8s %8s\n", "method", "threads", "time s",
                 "eye+refl", "shadow rays", "all rays", "pyrays", "rays/s", "x rays", "x time");
@@ -146,7 +186,10 @@ void addBenchRenderCommand(CLI::App& bench, CommandResult& result) {
     auto args = std::make_shared<BenchArgs>();
     CLI::App* cmd = bench.add_subcommand(
         "render", "Time and rays of every method on a scene (default: the six primitives)");
-    cmd->add_option("scene", args->scene, "Scene file (default: the built-in six primitives)");
+    cmd->add_option("scene", args->scene, "Scene file (default: a built-in scene, --builtin)");
+    cmd->add_option("--builtin", args->builtIn,
+                    "primitives (default: the six primitives, as examples/default.pov) or spheres "
+                    "(1600 small spheres: outlines everywhere)");
     cmd->add_option("-W,--width", args->width, "Image width (default 640)");
     cmd->add_option("-H,--height", args->height, "Image height (default 480)");
     cmd->add_option("--threads", args->threads, "Thread counts to run, e.g. 1,2 (default 1,2)")

@@ -100,6 +100,7 @@ std::optional<SceneDescription> Interpreter::runText(std::string text, const std
 
 std::optional<SceneDescription> Interpreter::run(SourceFile& f) {
     file_ = &f;
+    objects_.reserve(static_cast<std::size_t>(std::count(f.text.begin(), f.text.end(), '{')));
     includeStack_.push_back(f.path);
     auto top = [this](const Node& n) { runTopEntry(n); };
     const EntryHandler handler(top);

@@ -114,18 +114,23 @@ private:
 };
 using EntryHandler = FunctionRef<void(const Node&)>;
 
-// Objects as they arrive, in chunks that grow to ~50 MB: big enough that the
-// allocator maps each one separately and returns it to the system when it is
-// freed, so that moving them into the final vector never holds two copies.
+// Objects as they arrive. First into a vector reserved for as many objects as
+// the scene text can write out (one per '{' at most): reserved memory costs
+// address space, not memory, until it is used, and when the guess holds the
+// vector becomes the description's as it is. Objects beyond it (made by
+// loops, or copies of declared unions) go to 64 MiB chunks, which the
+// allocator maps one by one and gives back as soon as they are moved out.
 class ObjectStore {
 public:
+    void reserve(std::size_t count);
     Object& add();
-    std::size_t size() const { return size_; }
+    std::size_t size() const { return main_.size() + overflow_; }
     std::vector<Object> take();
 
 private:
+    std::vector<Object> main_;
     std::vector<std::vector<Object>> chunks_;
-    std::size_t size_ = 0;
+    std::size_t overflow_ = 0;
 };
 
 // Equal textures shared: a scene that writes `pigment { Red }` in a million

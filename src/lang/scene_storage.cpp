@@ -17,24 +17,36 @@ constexpr std::size_t kChunkObjects = kChunkBytes / sizeof(Object);
 
 }  // namespace
 
+void ObjectStore::reserve(std::size_t count) {
+    try {
+        main_.reserve(count);
+    } catch (const std::exception&) {
+        // Too much address space for this system: the chunks will do.
+    }
+}
+
 Object& ObjectStore::add() {
+    if (main_.size() < main_.capacity()) return main_.emplace_back();
     if (chunks_.empty() || chunks_.back().size() == kChunkObjects) {
         chunks_.emplace_back();
         chunks_.back().reserve(kChunkObjects);
     }
-    ++size_;
+    ++overflow_;
     return chunks_.back().emplace_back();
 }
 
 std::vector<Object> ObjectStore::take() {
+    if (chunks_.empty()) return std::move(main_);
     std::vector<Object> all;
-    all.reserve(size_);
+    all.reserve(size());
+    for (Object& o : main_) all.push_back(std::move(o));
+    std::vector<Object>().swap(main_);
     for (auto& chunk : chunks_) {
         for (Object& o : chunk) all.push_back(std::move(o));
         std::vector<Object>().swap(chunk);  // give the chunk back now
     }
     chunks_.clear();
-    size_ = 0;
+    overflow_ = 0;
     return all;
 }
 

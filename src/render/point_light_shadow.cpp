@@ -20,8 +20,7 @@ constexpr double kWidestShadowCone = 0.45 * kPi;
 
 // The shadow pyray from the light through the footprint of one square.
 struct ShadowPyray {
-    Cone cone;
-    Ray central;            // from the light toward the footprint of the square's centre
+    Cone cone;  // about the ray from the light toward the footprint of the square's centre
     double centralDistance;
     // No footprint point of the square is nearer the light than this.
     double nearestFootprint;
@@ -65,7 +64,6 @@ ShadowPyray makeShadowPyray(const Vec3& light, const Footprint& footprint,
     if (!(halfAngle < kWidestShadowCone) || !(p.nearestFootprint > 2.0 * kPovShadowTolerance))
         return p;
     p.cone = {light, axis, halfAngle + kConeAnglePad, kPovShadowTolerance, farthest * (1.0 + 1e-12)};
-    p.central = {light, axis};
     p.valid = true;
     return p;
 }

@@ -19,25 +19,6 @@ Bounds3 padded(Bounds3 b) {
 
 }  // namespace
 
-namespace {
-// A jump on the variant's index to the concrete shape: no virtual call, and
-// no valueless check (a LocalShape is never valueless).
-template <std::size_t I = 0, class Variant, class F>
-decltype(auto) dispatch(const Variant& v, F& f) {
-    if constexpr (I + 1 == std::variant_size_v<Variant>) {
-        return f(*std::get_if<I>(&v));
-    } else {
-        if (v.index() == I) return f(*std::get_if<I>(&v));
-        return dispatch<I + 1>(v, f);
-    }
-}
-}  // namespace
-
-template <class F>
-decltype(auto) Primitive::visit(F&& f) const {
-    return dispatch(shape_, f);
-}
-
 Primitive::Primitive(LocalShape shape, LocalFrame frame, const char* name)
     : shape_(std::move(shape)), frame_(frame), name_(name) {
     localSphere_ = visit([](const auto& s) { return s.boundingSphere(); });
@@ -53,15 +34,17 @@ Bounds3 Primitive::worldBounds() const { return worldBounds_; }
 
 std::optional<SurfaceHit> Primitive::intersect(const Ray& worldRay, double tMin,
                                                double tMax) const {
-    const Ray ray = frame_.rayToLocal(worldRay);
-    const std::optional<LocalHit> hit =
-        visit([&](const auto& s) { return s.intersect(ray, tMin, tMax); });
+    const std::optional<LocalHit> hit = intersectLocal(worldRay, tMin, tMax);
     if (!hit) return std::nullopt;
+    return surfaceHit(worldRay, *hit);
+}
+
+SurfaceHit Primitive::surfaceHit(const Ray& worldRay, const LocalHit& hit) const {
     SurfaceHit out;
-    out.t = hit->t;
-    out.position = worldRay.at(hit->t);
-    out.normal = frame_.normalToWorld(hit->normal);
-    out.objectPoint = frame_.pointToObject(hit->point);
+    out.t = hit.t;
+    out.position = worldRay.at(hit.t);
+    out.normal = frame_.normalToWorld(hit.normal);
+    out.objectPoint = frame_.pointToObject(hit.point);
     return out;
 }
 

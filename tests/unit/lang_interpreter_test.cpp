@@ -156,7 +156,7 @@ TEST_CASE("#if, #while, #for, #declare, #local, #undef", "[lang][interpreter]") 
     CHECK(std::get<SphereShape>(a.objects[5].shape).radius == 1);
 }
 
-TEST_CASE("#include searches beside the file, then -L; #local stays in its file", "[lang][interpreter]") {
+TEST_CASE("#include searches beside the file, then -L, and #local stays in its file", "[lang][interpreter]") {
     const auto dir = scratchDir("include");
     std::filesystem::create_directories(dir / "lib");
     writeFile(dir / "lib" / "shapes.inc", "#local Hidden = 5;\n#declare Radius = 2;\nsphere { 0, Radius }\n");
@@ -402,7 +402,7 @@ TEST_CASE("every semantic error of a file is reported", "[lang][interpreter]") {
           "8:21: scale by zero (<0, 0, 0>) flattens everything\n");
 }
 
-TEST_CASE("#error stops; #debug and #warning are reported with their place", "[lang][interpreter]") {
+TEST_CASE("#error stops, #debug and #warning are reported with their place", "[lang][interpreter]") {
     Run r = run("#debug \"hello\\n\"\n#warning concat(\"w\", str(1, 0, 0))\n#error \"stop\"\nsphere { 0, -1 }\n");
     CHECK_FALSE(r.scene);
     REQUIRE(r.diagnostics.all().size() == 3);

@@ -122,9 +122,10 @@ inline const std::shared_ptr<const Texture>& defaultTexture() {
 struct Object {
     Shape shape;
     Transform worldFromObject;
-    // Shared, never null: objects given the same declared texture (or none, the
-    // default) point to one Texture, as in POV-Ray. This keeps a million
-    // spheres under 1 GiB (a Texture with its pattern transform is 432 bytes).
+    // Shared and never null: objects with equal textures (one declared texture,
+    // the default, or the same colours written out again) point to one Texture.
+    // A Texture with its pattern transform is 432 bytes; sharing keeps a
+    // million spheres under 1 GiB.
     std::shared_ptr<const Texture> texture = defaultTexture();
     bool noShadow = false;
     AsosOptions asos;

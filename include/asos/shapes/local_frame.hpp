@@ -16,9 +16,10 @@ namespace asos {
 
 struct LocalFrame {
     enum class Kind : std::uint8_t { Translate, Similarity, General };
+    // The fields a ray test reads come first, so that they share cache lines.
     Kind kind = Kind::Translate;
-    Mat3 localFromWorld{1.0};  // local = localFromWorld * world + localOffset
     Vec3 localOffset{0.0};
+    Mat3 localFromWorld{1.0};  // local = localFromWorld * world + localOffset
     Mat3 worldFromLocal{1.0};  // world = worldFromLocal * local + worldOffset
     Vec3 worldOffset{0.0};
     double worldPerLocal = 1.0;  // Similarity: world length of a unit local length

@@ -5,6 +5,7 @@
 // std::variant plus the frame placing it in the world, so dispatch is a jump
 // on the variant's index, without virtual calls, and rays and cones reach the
 // shape through the cheapest path its frame allows (see LocalFrame).
+#include <cstddef>
 #include <optional>
 #include <variant>
 
@@ -35,6 +36,12 @@ public:
     Bounds3 worldBounds() const;  // tight-ish, conservative; unspecified when !bounded()
     // The nearest hit with t in [tMin, tMax] of a ray with a unit direction.
     std::optional<SurfaceHit> intersect(const Ray& worldRay, double tMin, double tMax) const;
+    // The same in two phases, for a search over many primitives: the hit in
+    // the local frame (t is the world ray's), cheap to compute and discard,
+    // then the world record for the nearest one only.
+    // surfaceHit(ray, *intersectLocal(ray, lo, hi)) == *intersect(ray, lo, hi).
+    std::optional<LocalHit> intersectLocal(const Ray& worldRay, double tMin, double tMax) const;
+    SurfaceHit surfaceHit(const Ray& worldRay, const LocalHit& hit) const;
     bool intersectAny(const Ray& worldRay, double tMin, double tMax) const;
     ConeClass classify(const Cone& worldCone) const;
     // The same, for a cone whose trigonometry is done once for many objects.
@@ -59,5 +66,31 @@ private:
     BoundingSphere localSphere_;
     double sphereTolerance_ = 0.0;  // scale of the local coordinates, for rounding tolerances
 };
+
+namespace primitive_detail {
+// A jump on the variant's index to the concrete shape: no virtual call, and
+// no valueless check (a LocalShape is never valueless).
+template <std::size_t I = 0, class Variant, class F>
+decltype(auto) dispatch(const Variant& v, F& f) {
+    if constexpr (I + 1 == std::variant_size_v<Variant>) {
+        return f(*std::get_if<I>(&v));
+    } else {
+        if (v.index() == I) return f(*std::get_if<I>(&v));
+        return dispatch<I + 1>(v, f);
+    }
+}
+}  // namespace primitive_detail
+
+template <class F>
+decltype(auto) Primitive::visit(F&& f) const {
+    return primitive_detail::dispatch(shape_, f);
+}
+
+// Inline: it is the inner loop of every nearest-hit search.
+inline std::optional<LocalHit> Primitive::intersectLocal(const Ray& worldRay, double tMin,
+                                                         double tMax) const {
+    const Ray ray = frame_.rayToLocal(worldRay);
+    return visit([&](const auto& s) { return s.intersect(ray, tMin, tMax); });
+}
 
 }  // namespace asos
