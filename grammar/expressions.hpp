@@ -106,14 +106,22 @@ struct function_call : if_must<function_name, call_open, call_arguments, rparen>
 
 // Colours: `rgb <1,0,0>`, `color Red filter 0.5`, `colour red 1 green .5`, …
 // An item's operand is a whole arithmetic expression: `rgb <1,1,1>*0.5`.
+// As in POV-Ray 3.7, a whole colour (`rgb V`, `rgbf V`, …, or after `color` any
+// expression) can only open a colour: once something is read, the next whole
+// colour begins the next value, so `checker rgb <1,0,0> rgb <0,0,1>` is two
+// colours. Components (`red F`, `filter F`, …) may follow and override.
 struct colour_operand : seq<expression> {};
-struct colour_item : if_must<colour_item_name, colour_operand> {};
+struct colour_component : if_must<colour_component_name, colour_operand> {};
+struct colour_whole : if_must<colour_whole_name, colour_operand> {};
 struct colour_base : seq<expression> {};
-struct colour_after_keyword : sor<plus<colour_item>, seq<colour_base, star<colour_item>>> {};
+struct colour_components : star<colour_component> {};
+struct colour_body : sor<seq<colour_whole, colour_components>, plus<colour_component>> {};
+struct colour_after_keyword : sor<colour_body, seq<colour_base, colour_components>> {};
 struct colour_keyword_form : if_must<kw_color, colour_after_keyword> {};
 struct colour_start : success {};  // opens the colour's node
 struct colour_expression
-    : seq<at<sor<kw_color, colour_item_name>>, colour_start, sor<colour_keyword_form, plus<colour_item>>> {};
+    : seq<at<sor<kw_color, colour_whole_name, colour_component_name>>, colour_start,
+          sor<colour_keyword_form, colour_body>> {};
 
 struct name_reference : name {};
 struct unsupported_in_expression : unsupported_keyword {};

@@ -99,8 +99,10 @@ struct constant_word : word_if<accept_class<lang::kConstant>> {};
 struct constant : tok<constant_word> {};
 struct member_word : word_if<accept_class<lang::kMember>> {};
 struct member_name : tok<member_word> {};
-struct colour_item_word : word_if<accept_class<lang::kColourItem>> {};
-struct colour_item_name : tok<colour_item_word> {};
+struct colour_component_word : word_if<accept_class<lang::kColourItem>> {};
+struct colour_component_name : tok<colour_component_word> {};
+struct colour_whole_word : word_if<accept_class<lang::kColourWhole>> {};
+struct colour_whole_name : tok<colour_whole_word> {};
 
 // A POV-Ray keyword asos does not accept. Wherever it is met, its action
 // reports "'isosurface' is not supported by asos" at the keyword.

@@ -351,18 +351,32 @@ void Interpreter::applyObjectModifier(ObjectTree& tree, const Node& n, bool isSh
 
 std::shared_ptr<const Pigment> Interpreter::evalPigment(const Node& block, const Pigment& start) {
     auto p = std::make_shared<Pigment>(start);
+    // POV-Ray's order inside a pigment: an optional declared pigment, then at
+    // most one colour or pattern, then transforms. POV-Ray rejects anything else
+    // ("No matching } in 'pigment'"); so do we, naming the reason.
+    enum class Stage { Empty, Declared, Pattern, Modifiers } stage = Stage::Empty;
+    auto pattern = [&](const Node& n) {
+        if (stage == Stage::Pattern) fail(n, "a pigment has one colour or pattern; this is a second one");
+        if (stage == Stage::Modifiers) fail(n, "a pigment's colour or pattern must come before its transforms");
+        stage = Stage::Pattern;
+    };
     auto entry = [&](const Node& n) {
         if (isTransform(n)) {
             p->worldFromPattern = compose(evalTransformItem(n), p->worldFromPattern);
+            stage = Stage::Modifiers;
         } else if (n.kind == NodeKind::Item && n.word == Word::Checker) {
+            pattern(n);
             p->kind = Pigment::Kind::Checker;
             p->color1 = n.count > 0 ? evalColour(n[0]) : kCheckerBlue;
             p->color2 = n.count > 1 ? evalColour(n[1]) : kCheckerGreen;
         } else {
             const Value v = eval(n);
             if (const auto* declared = std::get_if<std::shared_ptr<const Pigment>>(&v)) {
+                if (stage != Stage::Empty) fail(n, "a declared pigment must come first in the pigment");
                 *p = **declared;
+                stage = Stage::Declared;
             } else if (const auto* num = std::get_if<Num>(&v)) {
+                pattern(n);
                 p->kind = Pigment::Kind::Solid;
                 p->color1 = toColour(*num, n);
                 p->color2 = Color{};

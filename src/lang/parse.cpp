@@ -437,13 +437,16 @@ template <>
 struct action<g::colour_base> {
     static void apply0(Builder& b) { b.frame().flag = true; }
 };
-template <>
-struct action<g::colour_item> {
+struct colour_item_action {
     template <typename Input>
     static void apply(const Input& in, Builder& b) {
         b.reduce(NodeKind::ColourItem, wordOf(leadingWord(in.string_view())), 1, posOf(in));
     }
 };
+template <>
+struct action<g::colour_whole> : colour_item_action {};
+template <>
+struct action<g::colour_component> : colour_item_action {};
 template <>
 struct action<g::colour_expression> {
     template <typename Input>

@@ -35,7 +35,7 @@ std::uint8_t classesOf(Word w) {
     case Word::Yes: case Word::No: case Word::ImageWidth: case Word::ImageHeight:
         return kKeyword | kConstant;
     case Word::Rgb: case Word::Rgbf: case Word::Rgbt: case Word::Rgbft:
-        return kKeyword | kColourItem;
+        return kKeyword | kColourWhole;
     case Word::Red: case Word::Green: case Word::Blue: case Word::Filter: case Word::Transmit:
         return kKeyword | kColourItem | kMember;
     case Word::Gray: case Word::Grey:

@@ -69,9 +69,12 @@ TEST_CASE("expressions", "[lang][grammar]") {
          "sin(pi/2)", "max(1, 2, 3)", "V.x", "C.red", "rgb <1,0,0>", "rgb 1", "color Red",
          "color red 1 green .5", "colour rgb <1,0,0> filter 0.5", "rgbft <1,1,1,0,0>", "!A",
          "(A < B)", "(A <= B & C != D | E)", "(A ? 1 : 2)", "(1 ? 0 ? 5 : 6 : 7)", "\"str\"",
-         "concat(\"a\", str(1, 0, 2))", "<(1 > 0), 0, 0>", "-(-x)", "A.x.y"},
+         "concat(\"a\", str(1, 0, 2))", "<(1 > 0), 0, 0>", "-(-x)", "A.x.y",
+         "rgb <1,0,0> green 1", "red 1 blue 1 filter 0", "color Red green 1 transmit 0.5"},
         {"", "1 +", "(1", "<1,2", "<1,,2>", "sin 1", "sin()", "V.", "V.w", "A < B", "color", "rgb",
-         "(A ? 1)", "1 * * 2"});
+         "(A ? 1)", "1 * * 2",
+         // As in POV-Ray, a whole colour only opens a colour: these are two values.
+         "rgb 1 rgb 0", "rgb <1,0,0> green 1 rgb 0", "red 1 rgb 0", "color Red rgb 1", "color rgb 1 color 0"});
 }
 
 TEST_CASE("directives", "[lang][grammar]") {

@@ -1,14 +1,14 @@
 // Golden renders through the whole pipeline (scene file -> interpreter ->
 // renderer -> PNG):
-//  - against POV-Ray 3.7: tests/golden/povray/primitives.pov, rendered with
+//  - against POV-Ray 3.7: the scenes of tests/golden/povray, rendered with
 //    one ray per pixel and with the adaptive method, must match POV-Ray's
-//    own renders of the same file (-A, and +A0.3 +AM2 +R3 -J);
+//    own renders of the same files (-A, and +A0.3 +AM2 +R3 -J);
 //  - against our own references: every primitive by ASOS, and the six
 //    primitives by every method, in tests/golden/render (96 x 72).
 // Images are compared with OpenImageIO's test-suite thresholds
 // (compareImages). scripts/update-goldens.sh (ASOS_UPDATE_GOLDENS=1) rewrites
 // the references: ours from this build, POV-Ray's by running `povray` on the
-// scenes this file owns (primitives.pov); a failing test never rewrites one.
+// scenes of tests/golden/povray; a failing test never rewrites one.
 // On failure the rendered and difference images are written into the build
 // tree and the worst pixel is printed.
 #include <catch2/catch.hpp>
@@ -99,19 +99,28 @@ RenderSettings settingsFor(RenderMethod method, int width, int height) {
 
 }  // namespace
 
-// The other scenes of tests/golden/povray (povray_crosscheck_test.cpp's)
-// write `checker rgb A rgb B`, which POV-Ray reads as two colours and our
-// interpreter, for now, as one: they join this list when it reads them alike.
+// Every scene of tests/golden/povray against POV-Ray's own render of it:
+// camera mappings (tilted perspective, orthographic), the checker pattern, the
+// background and 8-bit encoding (flat_*), the lighting model (lighting), the
+// recursion of reflection (reflection) and the six primitives (primitives).
 TEST_CASE("The renderer matches POV-Ray with one ray per pixel", "[golden][povray]") {
-    compareWithReference(renderScene(sourceDir("povray") / "primitives.pov",
-                                     settingsFor(RenderMethod::Single, 160, 90)),
-                         povrayReference("primitives", "primitives", "-A"), false);
+    for (const char* scene : {"flat_perspective", "flat_orthographic", "lighting", "reflection", "primitives"}) {
+        INFO(scene);
+        compareWithReference(renderScene(sourceDir("povray") / (std::string(scene) + ".pov"),
+                                         settingsFor(RenderMethod::Single, 160, 90)),
+                             povrayReference(scene, scene, "-A"), false);
+    }
 }
 
+// POV-Ray's defaults: threshold 0.3, depth +R3 (two subdivisions); -J turns
+// its jitter off so that the sample positions coincide.
 TEST_CASE("The adaptive method matches POV-Ray's +AM2", "[golden][povray]") {
-    compareWithReference(renderScene(sourceDir("povray") / "primitives.pov",
-                                     settingsFor(RenderMethod::Adaptive, 160, 90)),
-                         povrayReference("primitives", "primitives_am2", "+A0.3 +AM2 +R3 -J"), false);
+    for (const char* scene : {"flat_perspective", "lighting", "primitives"}) {
+        INFO(scene);
+        compareWithReference(renderScene(sourceDir("povray") / (std::string(scene) + ".pov"),
+                                         settingsFor(RenderMethod::Adaptive, 160, 90)),
+                             povrayReference(scene, std::string(scene) + "_am2", "+A0.3 +AM2 +R3 -J"), false);
+    }
 }
 
 TEST_CASE("Golden ASOS renders of every primitive", "[golden]") {

@@ -74,7 +74,8 @@ enum WordClass : std::uint8_t {
     kFunction = 2,    // abs(…)
     kConstant = 4,    // x, pi, clock, on, …
     kMember = 8,      // V.x, C.red
-    kColourItem = 16, // rgb V, red F, filter F, …
+    kColourItem = 16, // a colour component: red F, filter F, …
+    kColourWhole = 32, // a whole colour: rgb V, rgbf V, rgbt V, rgbft V
 };
 
 struct WordInfo {

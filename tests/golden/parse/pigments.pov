@@ -16,3 +16,11 @@ sphere { 0, 1 pigment { checker color rgb <1, 0, 0> } }
 sphere { 0, 1 pigment { checker Orange, rgb 0 rotate <0, 0, 45> translate 0.5 } }
 sphere { 0, 1 pigment { Stripes } }
 sphere { 0, 1 pigment { Stripes scale 2 } }
+// As in POV-Ray 3.7 (checked with povray): a whole colour (rgb…, or an
+// expression after `color`) opens a colour, components after it override, and
+// the next whole colour is the next value, commas or not.
+sphere { 0, 1 pigment { checker rgb <1, 0, 0> rgb <0, 0, 1> } }
+sphere { 0, 1 pigment { checker rgb <1, 0, 0> green 1 rgb <0, 0, 1> } }
+sphere { 0, 1 pigment { checker red 1 rgb <0, 0, 1> } }
+sphere { 0, 1 pigment { checker color Orange blue 1 color rgb 0.5 } }
+sphere { 0, 1 pigment { Stripes rgb <0, 1, 0> } }  // a declared pigment, then a colour

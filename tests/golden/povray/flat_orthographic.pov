@@ -1,7 +1,8 @@
 // Cross-check of the orthographic camera: the same flat-shaded objects as
-// flat_perspective.pov seen through parallel rays. Mirrored in
-// tests/unit/povray_crosscheck_test.cpp; rendered by scripts/update-goldens.sh
-// as  povray -D +I<this> +O<this>.png +W160 +H90 -A +FN8
+// flat_perspective.pov seen through parallel rays. Rendered
+// through the whole pipeline by tests/unit/render_golden_test.cpp; POV-Ray's
+// reference by scripts/update-goldens.sh as
+//  povray -D +I<this> +O<this>.png +W160 +H90 -A +FN8
 #version 3.7;
 global_settings { assumed_gamma 1.0 }
 #declare Loc = <1.5, 2.2, -6>;

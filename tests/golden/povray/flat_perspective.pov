@@ -1,8 +1,9 @@
 // Cross-check of the camera mapping, the checker pattern, the background and
 // the 8-bit output encoding: flat-shaded objects (ambient 1, diffuse 0) seen
 // through a tilted perspective camera whose right/up ratio (1.6) differs from
-// the image's (16:9). Mirrored in tests/unit/povray_crosscheck_test.cpp;
-// rendered by scripts/update-goldens.sh as
+// the image's (16:9). Rendered by
+// tests/unit/render_golden_test.cpp; POV-Ray's reference by
+// scripts/update-goldens.sh as
 //   povray -D +I<this> +O<this>.png +W160 +H90 -A +FN8
 // (and, for the adaptive cross-check, with +A0.3 +AM2 +R3 -J into <this>_am2.png)
 #version 3.7;

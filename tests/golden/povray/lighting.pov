@@ -1,7 +1,8 @@
 // Cross-check of the lighting model: diffuse, brilliance, phong, specular,
 // ambient_light, light fade, a shadowless coloured light and point-light
-// shadows. Mirrored in tests/unit/povray_crosscheck_test.cpp; rendered by
-// scripts/update-goldens.sh as  povray -D +I<this> +O<this>.png +W160 +H90 -A +FN8
+// shadows. Rendered by tests/unit/render_golden_test.cpp;
+// POV-Ray's reference by scripts/update-goldens.sh as
+//  povray -D +I<this> +O<this>.png +W160 +H90 -A +FN8
 // (and, for the adaptive cross-check, with +A0.3 +AM2 +R3 -J into <this>_am2.png)
 #version 3.7;
 global_settings { assumed_gamma 1.0 ambient_light rgb <0.8, 0.9, 1.0> }
