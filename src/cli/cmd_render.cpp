@@ -1,6 +1,7 @@
 // asos render SCENE -o OUT.png|.exr|.tif|… [-W 640 -H 480] [--method asos|single|grid|jitter|adaptive]
 //   [--eps E|A/B --max M --jitter on|off --pattern-edges on|off] [--samples N] [--threshold T --depth D]
-//   [--light-method asos|grid] [--light-samples N] [--shadow-apex surface|behind] [--threads N]
+//   [--light-method asos|grid] [--light-samples N] [--shadow-apex surface|behind]
+//   [--bit-depth 8|16|half|float] [--threads N]
 //   [--seed S] [--region x0,y0,x1,y1] [--clock C] [-D NAME=VALUE]... [-L DIR]...
 //   [--stats] [--stats-json FILE] [--aov samples=FILE] [--quiet]
 // Parses the scene, renders it (asos/render/renderer.hpp) and writes the
@@ -48,6 +49,7 @@ struct RenderArgs {
     std::optional<std::string> lightMethod;
     std::optional<int> lightSamples;
     std::string shadowApex = "surface";
+    std::optional<std::string> bitDepth;
     int threads = 0;
     std::uint64_t seed = 0;
     std::optional<std::string> region;
@@ -160,7 +162,15 @@ int runRender(const RenderArgs& args) {
         if (!r.region) problems.push_back("--region: " + r.error);
         else settings.region = r.region;
     }
-    if (IoStatus s = checkOutputPath(args.output); !s.ok()) problems.push_back("-o: " + s.error);
+    SampleFormat sampleFormat = SampleFormat::Auto;
+    if (args.bitDepth) {
+        if (*args.bitDepth == "8") sampleFormat = SampleFormat::UInt8;
+        else if (*args.bitDepth == "16") sampleFormat = SampleFormat::UInt16;
+        else if (*args.bitDepth == "half") sampleFormat = SampleFormat::Half;
+        else if (*args.bitDepth == "float") sampleFormat = SampleFormat::Float;
+        else problems.push_back("--bit-depth must be 8, 16, half or float, not '" + *args.bitDepth + "'");
+    }
+    if (IoStatus s = checkOutputPath(args.output, sampleFormat); !s.ok()) problems.push_back("-o: " + s.error);
     std::optional<std::string> samplesAov;
     for (const std::string& aov : args.aovs) {
         const auto eq = aov.find('=');
@@ -220,6 +230,7 @@ int runRender(const RenderArgs& args) {
     const bool cropped = region != PixelRegion::whole(settings.width, settings.height);
     const Image& color = out->color;
     WriteOptions writeOptions;
+    writeOptions.format = sampleFormat;
     writeOptions.assumedGamma = scene->globals.assumedGamma;
     const IoStatus written = writeImage(
         cropped ? color.cropped(region.x0, region.y0, region.x1, region.y1) : color, args.output,
@@ -277,6 +288,9 @@ void addRenderCommand(CLI::App& app, CommandResult& result) {
                     "Area lights: N x N grid points for every light (N along a linear light)");
     cmd->add_option("--shadow-apex", args->shadowApex,
                     "ASOS area light shadows start at the surface (default) or behind it");
+    cmd->add_option("--bit-depth", args->bitDepth,
+                    "8, 16 (sRGB-encoded integers, as POV-Ray's +FN8/+FN16), half or float (linear); "
+                    "default 8 for integer formats, float for .exr");
     cmd->add_option("--threads", args->threads, "Worker threads (default 0: all cores)");
     cmd->add_option("--seed", args->seed, "Seed of the random numbers (default 0)");
     cmd->add_option("--region", args->region,

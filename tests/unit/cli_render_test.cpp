@@ -7,6 +7,7 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -107,6 +108,21 @@ TEST_CASE("asos render writes the image, statistics and the samples AOV", "[cli]
     CHECK(samples.image.channelIndex("rays") >= 0);
     CHECK(samples.image.channelIndex("level") >= 0);
 
+    // --bit-depth 16: POV-Ray's +FN16; a 16-bit PNG holds values between the 8-bit codes.
+    const Result deep = runAsos({"render", scene, "-o", "deep.png", "-W", "32", "-H", "24", "--bit-depth",
+                                 "16", "--quiet"});
+    INFO(deep.err);
+    REQUIRE(deep.exitCode == 0);
+    const ReadResult deepImage = readImage(dir / "deep.png");
+    REQUIRE(deepImage.ok());
+    int between = 0;
+    for (int y = 0; y < 24; ++y)
+        for (int x = 0; x < 32; ++x) {
+            const double v = deepImage.image.at(x, y, 0) * 255.0;
+            between += std::fabs(v - std::round(v)) > 1e-3;
+        }
+    CHECK(between > 100);
+
     for (const char* method : {"single", "grid", "jitter", "adaptive"}) {
         const Result m = runAsos({"render", scene, "-o", std::string(method) + ".exr", "-W", "32", "-H",
                                "24", "--method", method, "--samples", "2", "--quiet"});
@@ -135,6 +151,12 @@ TEST_CASE("asos render: bad options and scenes give an error and no file", "[cli
                                "--region", "0,0,100,100", "--eps", "1/0"});
     CHECK(r2.exitCode == 1);
     for (const char* mention : {"-o", "--region", "--eps"}) CHECK_THAT(r2.err, Catch::Contains(mention));
+    const Result r4 = runAsos({"render", scene, "-o", "bad.png", "--bit-depth", "half"});
+    CHECK(r4.exitCode == 1);
+    CHECK_THAT(r4.err, Catch::Contains("cannot store half-float samples"));
+    const Result r5 = runAsos({"render", scene, "-o", "bad.png", "--bit-depth", "12"});
+    CHECK(r5.exitCode == 1);
+    CHECK_THAT(r5.err, Catch::Contains("--bit-depth must be"));
     const Result r3 = runAsos({"render", scene, "-o", "bad.png", "-W", "16", "-H", "12", "--eps", "-0.5"});
     CHECK(r3.exitCode == 1);
     CHECK_THAT(r3.err, Catch::Contains("eps must be"));
