@@ -3,29 +3,22 @@
 // file; the same bytes for any thread count, and regions that tile the image.
 #include <catch2/catch.hpp>
 
-#include <fcntl.h>
-#include <sys/wait.h>
-#include <unistd.h>
-
 #include <cmath>
 #include <filesystem>
 #include <fstream>
-#include <sstream>
 #include <string>
 #include <vector>
 
 #include "asos/image/image_io.hpp"
+#include "run_asos.hpp"
 
 namespace fs = std::filesystem;
 using namespace asos;
 
 namespace {
 
-struct Result {
-    int exitCode = -1;
-    std::string out;
-    std::string err;
-};
+using Result = asos::test::ProgramResult;
+using asos::test::slurp;
 
 fs::path scratchDir() {
     const fs::path dir = fs::path(ASOS_BINARY_DIR) / "test-output" / "cli_render";
@@ -33,41 +26,7 @@ fs::path scratchDir() {
     return dir;
 }
 
-std::string slurp(const fs::path& p) {
-    std::ifstream in(p, std::ios::binary);
-    std::ostringstream s;
-    s << in.rdbuf();
-    return s.str();
-}
-
-// Runs the asos program in the scratch folder; stdout and stderr are kept
-// in files of this process's own (ctest runs test cases side by side).
-Result runAsos(std::vector<std::string> args) {
-    const fs::path dir = scratchDir();
-    const std::string tag = std::to_string(getpid());
-    const fs::path out = dir / ("stdout-" + tag + ".txt");
-    const fs::path err = dir / ("stderr-" + tag + ".txt");
-    const pid_t pid = fork();
-    if (pid == 0) {
-        const int o = open(out.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
-        const int e = open(err.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
-        if (o < 0 || e < 0 || chdir(dir.c_str()) != 0) _exit(126);
-        dup2(o, STDOUT_FILENO);
-        dup2(e, STDERR_FILENO);
-        std::vector<char*> argv{const_cast<char*>(ASOS_EXE)};
-        for (auto& a : args) argv.push_back(a.data());
-        argv.push_back(nullptr);
-        execv(ASOS_EXE, argv.data());
-        _exit(127);
-    }
-    int status = 0;
-    waitpid(pid, &status, 0);
-    Result r;
-    r.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-    r.out = slurp(out);
-    r.err = slurp(err);
-    return r;
-}
+Result runAsos(std::vector<std::string> args) { return asos::test::runAsos(scratchDir(), std::move(args)); }
 
 // A small scene with every kind of edge and a shadow.
 fs::path sceneFile() {

@@ -1,0 +1,58 @@
+#pragma once
+// Runs the asos program as a user does, for the command-line tests: in a
+// given folder, its stdout and stderr kept in files of this process's own
+// (ctest runs test cases side by side), and read back whole.
+#include <fcntl.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+#include <vector>
+
+namespace asos::test {
+
+struct ProgramResult {
+    int exitCode = -1;  // -1: killed by a signal
+    std::string out;
+    std::string err;
+};
+
+inline std::string slurp(const std::filesystem::path& p) {
+    std::ifstream in(p, std::ios::binary);
+    std::ostringstream s;
+    s << in.rdbuf();
+    return s.str();
+}
+
+inline ProgramResult runAsos(const std::filesystem::path& dir, std::vector<std::string> args) {
+    std::filesystem::create_directories(dir);
+    const std::string tag = std::to_string(getpid());
+    const std::filesystem::path out = dir / ("stdout-" + tag + ".txt");
+    const std::filesystem::path err = dir / ("stderr-" + tag + ".txt");
+    const pid_t pid = fork();
+    if (pid == 0) {
+        const int o = open(out.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+        const int e = open(err.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+        if (o < 0 || e < 0 || chdir(dir.c_str()) != 0) _exit(126);
+        dup2(o, STDOUT_FILENO);
+        dup2(e, STDERR_FILENO);
+        std::vector<char*> argv{const_cast<char*>(ASOS_EXE)};
+        for (auto& a : args) argv.push_back(a.data());
+        argv.push_back(nullptr);
+        execv(ASOS_EXE, argv.data());
+        _exit(127);
+    }
+    ProgramResult r;
+    if (pid < 0) return r;
+    int status = 0;
+    waitpid(pid, &status, 0);
+    r.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+    r.out = slurp(out);
+    r.err = slurp(err);
+    return r;
+}
+
+}  // namespace asos::test
