@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "asos/accel/bvh.hpp"
+#include "random_direction.hpp"
 
 using namespace asos;
 
@@ -58,14 +59,7 @@ std::optional<double> hitBox(const Bounds3& b, const Ray& ray, double tMin, doub
     return lo;
 }
 
-Vec3 randomUnit(std::mt19937_64& rng) {
-    std::normal_distribution<double> n;
-    for (;;) {
-        const Vec3 d(n(rng), n(rng), n(rng));
-        const double l = glm::length(d);
-        if (l > 1e-6) return d / l;
-    }
-}
+using asos::test::randomUnit;
 
 // Directions that include exact zeros and exact axis directions, which
 // stress the float slab test's handling of infinities.

@@ -6,6 +6,7 @@
 #include <sstream>
 
 #include "asos/accel/cone_box.hpp"
+#include "random_direction.hpp"
 
 using namespace asos;
 
@@ -18,14 +19,7 @@ void frame(const Vec3& w, Vec3& u, Vec3& v) {
     v = glm::cross(w, u);
 }
 
-Vec3 randomUnit(std::mt19937_64& rng) {
-    std::normal_distribution<double> n;
-    for (;;) {
-        const Vec3 d(n(rng), n(rng), n(rng));
-        const double l = glm::length(d);
-        if (l > 1e-6) return d / l;
-    }
-}
+using asos::test::randomUnit;
 
 // Cones of every kind the tracer makes: pixel-sized, tiny, wide, wider than a
 // hemisphere, single rays; finite and infinite t-ranges, some starting late.

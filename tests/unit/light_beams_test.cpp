@@ -11,19 +11,13 @@
 #include "asos/geometry/beam_segment.hpp"
 #include "asos/geometry/beam_sphere.hpp"
 #include "asos/render/light_beams.hpp"
+#include "random_direction.hpp"
 
 using namespace asos;
 
 namespace {
 
-Vec3 randomUnit(std::mt19937_64& rng) {
-    std::normal_distribution<double> n;
-    for (;;) {
-        const Vec3 d(n(rng), n(rng), n(rng));
-        const double l = glm::length(d);
-        if (l > 1e-6) return d / l;
-    }
-}
+using asos::test::randomUnit;
 
 void checkSame(const BeamRay& a, const BeamRay& b) {
     CHECK(glm::length(a.ray.dir - b.ray.dir) <= 1e-12);
