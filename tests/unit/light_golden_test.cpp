@@ -7,62 +7,27 @@
 // failure the rendered and difference images are written into the build tree.
 #include <catch2/catch.hpp>
 
-#include <cstdlib>
 #include <filesystem>
 #include <string>
 
-#include "asos/image/image_io.hpp"
-#include "asos/lang/interpreter.hpp"
-#include "asos/render/renderer.hpp"
+#include "golden_images.hpp"
 
 namespace fs = std::filesystem;
 using namespace asos;
 
 namespace {
 
-bool updating() {
-    const char* update = std::getenv("ASOS_UPDATE_GOLDENS");
-    return update && *update;
-}
-
-fs::path outputDir() {
-    const fs::path dir = fs::path(ASOS_BINARY_DIR) / "test-output" / "golden_lights";
-    fs::create_directories(dir);
-    return dir;
-}
-
 Image renderFigure6(int light, RenderSettings settings) {
-    lang::InterpreterOptions options;
-    options.imageWidth = settings.width = 96;
-    options.imageHeight = settings.height = 72;
-    options.defines.push_back({"Light", std::to_string(light)});
-    Diagnostics diagnostics;
-    const std::optional<SceneDescription> description =
-        lang::interpretFile(fs::path(ASOS_SOURCE_DIR) / "examples" / "figure6.pov", options, diagnostics);
-    for (const Diagnostic& d : diagnostics.all()) UNSCOPED_INFO(formatDiagnostic(d));
-    REQUIRE(description);
-    settings.threads = 2;
-    std::optional<RenderOutput> out = render(*description, settings, diagnostics);
-    REQUIRE(out);
-    return std::move(out->color);
+    settings.width = 96;
+    settings.height = 72;
+    return test::renderSceneFile(fs::path(ASOS_SOURCE_DIR) / "examples" / "figure6.pov", settings,
+                                 {{"Light", std::to_string(light)}});
 }
 
 void compareWithReference(const Image& rendered, const std::string& name) {
-    const fs::path reference = fs::path(ASOS_SOURCE_DIR) / "tests" / "golden" / "lights" / (name + ".png");
-    const fs::path ours = outputDir() / (name + ".png");
-    REQUIRE(writeImage(rendered, ours).ok());
-    if (updating()) fs::copy_file(ours, reference, fs::copy_options::overwrite_existing);
-    const ReadResult mine = readImage(ours);
-    const ReadResult theirs = readImage(reference);
-    INFO("reference " << reference.string() << ": " << theirs.error);
-    REQUIRE(mine.ok());
-    REQUIRE(theirs.ok());
-    const ImageComparison cmp = compareImages(mine.image, theirs.image);
-    const fs::path diff = outputDir() / (name + ".diff.png");
-    if (!cmp.passed && cmp.error.empty())
-        (void)writeImage(absoluteDifference(mine.image, theirs.image), diff, {.transfer = Transfer::Raw});
-    INFO(name << ": " << cmp.summary() << "; rendered " << ours.string() << ", difference " << diff.string());
-    CHECK(cmp.passed);
+    test::compareWithReference(rendered,
+                               fs::path(ASOS_SOURCE_DIR) / "tests" / "golden" / "lights" / (name + ".png"),
+                               test::goldenOutputDir("golden_lights"));
 }
 
 }  // namespace

@@ -17,60 +17,18 @@
 #include <filesystem>
 #include <string>
 
-#include "asos/image/image_io.hpp"
-#include "asos/lang/interpreter.hpp"
-#include "asos/render/renderer.hpp"
+#include "golden_images.hpp"
 
 namespace fs = std::filesystem;
 using namespace asos;
+using test::renderSceneFile;
 
 namespace {
 
-bool updating() {
-    const char* update = std::getenv("ASOS_UPDATE_GOLDENS");
-    return update && *update;
-}
-
 fs::path sourceDir(const char* folder) { return fs::path(ASOS_SOURCE_DIR) / "tests" / "golden" / folder; }
 
-fs::path outputDir() {
-    const fs::path dir = fs::path(ASOS_BINARY_DIR) / "test-output" / "golden_render";
-    fs::create_directories(dir);
-    return dir;
-}
-
-Image renderScene(const fs::path& scene, RenderSettings settings) {
-    lang::InterpreterOptions options;
-    options.imageWidth = settings.width;
-    options.imageHeight = settings.height;
-    Diagnostics diagnostics;
-    const std::optional<SceneDescription> description = lang::interpretFile(scene, options, diagnostics);
-    for (const Diagnostic& d : diagnostics.all()) UNSCOPED_INFO(formatDiagnostic(d));
-    REQUIRE(description);
-    settings.threads = 2;
-    std::optional<RenderOutput> out = render(*description, settings, diagnostics);
-    REQUIRE(out);
-    return std::move(out->color);
-}
-
-// Writes `rendered` as PNG into the build tree and compares it with the
-// reference PNG (our own reference is first rewritten when updating).
 void compareWithReference(const Image& rendered, const fs::path& reference, bool ownReference) {
-    const fs::path ours = outputDir() / reference.filename();
-    REQUIRE(writeImage(rendered, ours).ok());
-    if (ownReference && updating()) fs::copy_file(ours, reference, fs::copy_options::overwrite_existing);
-    const ReadResult mine = readImage(ours);
-    const ReadResult theirs = readImage(reference);
-    INFO("reference " << reference.string() << ": " << theirs.error);
-    REQUIRE(mine.ok());
-    REQUIRE(theirs.ok());
-    const ImageComparison cmp = compareImages(mine.image, theirs.image);
-    const fs::path diff = outputDir() / (reference.stem().string() + ".diff.png");
-    if (!cmp.passed && cmp.error.empty())
-        (void)writeImage(absoluteDifference(mine.image, theirs.image), diff, {.transfer = Transfer::Raw});
-    INFO(reference.filename().string() << ": " << cmp.summary() << "; rendered " << ours.string()
-                                       << ", difference " << diff.string());
-    CHECK(cmp.passed);
+    test::compareWithReference(rendered, reference, test::goldenOutputDir("golden_render"), ownReference);
 }
 
 // POV-Ray's render of one of tests/golden/povray's scenes, at 160 x 90,
@@ -79,10 +37,10 @@ fs::path povrayReference(const std::string& scene, const std::string& reference,
                          const std::string& povrayOptions) {
     const fs::path dir = sourceDir("povray");
     const fs::path png = dir / (reference + ".png");
-    if (updating()) {
+    if (test::updatingGoldens()) {
         const std::string command = "povray -D -GA +I'" + (dir / (scene + ".pov")).string() + "' +O'" +
                                     png.string() + "' +W160 +H90 " + povrayOptions + " +FN8 > '" +
-                                    (outputDir() / (reference + ".povray.log")).string() + "' 2>&1";
+                                    (test::goldenOutputDir("golden_render") / (reference + ".povray.log")).string() + "' 2>&1";
         INFO(command);
         REQUIRE(std::system(command.c_str()) == 0);
     }
@@ -106,7 +64,7 @@ RenderSettings settingsFor(RenderMethod method, int width, int height) {
 TEST_CASE("The renderer matches POV-Ray with one ray per pixel", "[golden][povray]") {
     for (const char* scene : {"flat_perspective", "flat_orthographic", "lighting", "reflection", "primitives"}) {
         INFO(scene);
-        compareWithReference(renderScene(sourceDir("povray") / (std::string(scene) + ".pov"),
+        compareWithReference(renderSceneFile(sourceDir("povray") / (std::string(scene) + ".pov"),
                                          settingsFor(RenderMethod::Single, 160, 90)),
                              povrayReference(scene, scene, "-A"), false);
     }
@@ -117,7 +75,7 @@ TEST_CASE("The renderer matches POV-Ray with one ray per pixel", "[golden][povra
 TEST_CASE("The adaptive method matches POV-Ray's +AM2", "[golden][povray]") {
     for (const char* scene : {"flat_perspective", "lighting", "primitives"}) {
         INFO(scene);
-        compareWithReference(renderScene(sourceDir("povray") / (std::string(scene) + ".pov"),
+        compareWithReference(renderSceneFile(sourceDir("povray") / (std::string(scene) + ".pov"),
                                          settingsFor(RenderMethod::Adaptive, 160, 90)),
                              povrayReference(scene, std::string(scene) + "_am2", "+A0.3 +AM2 +R3 -J"), false);
     }
@@ -128,13 +86,13 @@ TEST_CASE("Golden ASOS renders of every primitive", "[golden]") {
         INFO(name);
         const fs::path dir = sourceDir("render");
         compareWithReference(
-            renderScene(dir / (std::string(name) + ".pov"), settingsFor(RenderMethod::Asos, 96, 72)),
+            renderSceneFile(dir / (std::string(name) + ".pov"), settingsFor(RenderMethod::Asos, 96, 72)),
             dir / (std::string(name) + ".png"), true);
     }
     // The checkered plane with pattern edges subdivided too.
     RenderSettings patterns = settingsFor(RenderMethod::Asos, 96, 72);
     patterns.patternEdges = true;
-    compareWithReference(renderScene(sourceDir("render") / "plane.pov", patterns),
+    compareWithReference(renderSceneFile(sourceDir("render") / "plane.pov", patterns),
                          sourceDir("render") / "plane_pattern_edges.png", true);
 }
 
@@ -143,16 +101,16 @@ TEST_CASE("Golden renders of the six primitives by every method", "[golden]") {
     for (RenderMethod m : {RenderMethod::Asos, RenderMethod::Single, RenderMethod::Grid,
                            RenderMethod::Jitter, RenderMethod::Adaptive}) {
         INFO(methodName(m));
-        compareWithReference(renderScene(dir / "methods.pov", settingsFor(m, 96, 72)),
+        compareWithReference(renderSceneFile(dir / "methods.pov", settingsFor(m, 96, 72)),
                              dir / ("methods_" + std::string(methodName(m)) + ".png"), true);
     }
     // ASOS with jittered MAX-rays, and the adaptive method with jitter.
     RenderSettings jittered = settingsFor(RenderMethod::Asos, 96, 72);
     jittered.asos.jitter = true;
     jittered.seed = 3;
-    compareWithReference(renderScene(dir / "methods.pov", jittered), dir / "methods_asos_jitter.png", true);
+    compareWithReference(renderSceneFile(dir / "methods.pov", jittered), dir / "methods_asos_jitter.png", true);
     jittered.method = RenderMethod::Adaptive;
     jittered.adaptive.jitter = true;
-    compareWithReference(renderScene(dir / "methods.pov", jittered),
+    compareWithReference(renderSceneFile(dir / "methods.pov", jittered),
                          dir / "methods_adaptive_jitter.png", true);
 }

@@ -1,0 +1,76 @@
+#pragma once
+// Golden renders: a scene file through the whole pipeline (interpreter,
+// renderer), and the comparison of an image with its reference PNG by
+// OpenImageIO's test-suite thresholds (compareImages). References are
+// rewritten only when ASOS_UPDATE_GOLDENS is set (scripts/update-goldens.sh),
+// and then only those the caller owns; a failing comparison never rewrites
+// one, and leaves the rendered and difference images in the build tree.
+#include <catch2/catch.hpp>
+
+#include <cstdlib>
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "asos/image/image_io.hpp"
+#include "asos/lang/interpreter.hpp"
+#include "asos/render/renderer.hpp"
+
+namespace asos::test {
+
+inline bool updatingGoldens() {
+    const char* update = std::getenv("ASOS_UPDATE_GOLDENS");
+    return update && *update;
+}
+
+// A folder of the build tree for what a golden test writes.
+inline std::filesystem::path goldenOutputDir(const std::string& name) {
+    const std::filesystem::path dir = std::filesystem::path(ASOS_BINARY_DIR) / "test-output" / name;
+    std::filesystem::create_directories(dir);
+    return dir;
+}
+
+// Renders `scene` at the settings' size on two threads; `defines` are
+// declared before the scene runs (as -D does).
+inline Image renderSceneFile(const std::filesystem::path& scene, RenderSettings settings,
+                             std::vector<std::pair<std::string, std::string>> defines = {}) {
+    lang::InterpreterOptions options;
+    options.imageWidth = settings.width;
+    options.imageHeight = settings.height;
+    for (auto& [name, value] : defines) options.defines.push_back({name, value});
+    Diagnostics diagnostics;
+    const std::optional<SceneDescription> description = lang::interpretFile(scene, options, diagnostics);
+    for (const Diagnostic& d : diagnostics.all()) UNSCOPED_INFO(formatDiagnostic(d));
+    REQUIRE(description);
+    settings.threads = 2;
+    std::optional<RenderOutput> out = render(*description, settings, diagnostics);
+    REQUIRE(out);
+    return std::move(out->color);
+}
+
+// Writes `rendered` as PNG into `outputDir` and compares it with
+// `reference`, which is first rewritten from it when updating and
+// `ownReference` (references made by another program are not ours).
+inline void compareWithReference(const Image& rendered, const std::filesystem::path& reference,
+                                 const std::filesystem::path& outputDir, bool ownReference = true) {
+    const std::filesystem::path ours = outputDir / reference.filename();
+    REQUIRE(writeImage(rendered, ours).ok());
+    if (ownReference && updatingGoldens())
+        std::filesystem::copy_file(ours, reference, std::filesystem::copy_options::overwrite_existing);
+    const ReadResult mine = readImage(ours);
+    const ReadResult theirs = readImage(reference);
+    INFO("reference " << reference.string() << ": " << theirs.error);
+    REQUIRE(mine.ok());
+    REQUIRE(theirs.ok());
+    const ImageComparison cmp = compareImages(mine.image, theirs.image);
+    const std::filesystem::path diff = outputDir / (reference.stem().string() + ".diff.png");
+    if (!cmp.passed && cmp.error.empty())
+        (void)writeImage(absoluteDifference(mine.image, theirs.image), diff, {.transfer = Transfer::Raw});
+    INFO(reference.filename().string() << ": " << cmp.summary() << "; rendered " << ours.string()
+                                       << ", difference " << diff.string());
+    CHECK(cmp.passed);
+}
+
+}  // namespace asos::test
