@@ -116,8 +116,11 @@ struct RayPrep {
                 oN = inf;
                 oF = -inf;
             } else {
-                nearInv = static_cast<float>(1.0 / d);
-                farInv = static_cast<float>(kFarScale / d);
+                // One division: kFarScale * (1 / d) in double is within
+                // 2^-52 of kFarScale / d, far below the margin kFarScale leaves.
+                const double inv = 1.0 / d;
+                nearInv = static_cast<float>(inv);
+                farInv = static_cast<float>(kFarScale * inv);
                 oN = side ? below : above;
                 oF = side ? above : below;
             }
