@@ -53,9 +53,12 @@ std::unique_ptr<Scene> Scene::build(SceneDescription description, Diagnostics& d
         scene->primitives_.push_back(std::move(byObject[object]));
         scene->castsShadow_.push_back(description.objects[object].noShadow ? 0 : 1);
     }
-    scene->itemSlot_.resize(scene->bounded_.size());
-    for (std::size_t item = 0; item < scene->bounded_.size(); ++item)
-        scene->itemSlot_[item] = scene->slotOf_[scene->bounded_[item]];
+    const std::size_t treeSlots = scene->bvh_.itemOrder().size();
+    scene->leafSpheres_.assign(treeSlots, TranslatedSphere{Vec3(0.0), -1.0});
+    for (std::size_t i = 0; i < treeSlots; ++i) {
+        const auto sphere = scene->primitives_[scene->unbounded_.size() + i].translatedSphere();
+        if (sphere) scene->leafSpheres_[i] = *sphere;
+    }
     scene->description_ = std::move(description);
     return scene;
 }
@@ -78,16 +81,26 @@ std::optional<SurfaceHit> Scene::intersect(const Ray& ray, double tMin, double t
             best = Candidate{hit->t, slot, *hit};
         }
     }
-    const std::optional<Candidate> nearest =
-        bvh_.nearest(ray, tMin, tMax,
-                     [&](std::uint32_t item, const Ray& r, double lo,
-                         double hi) -> std::optional<Candidate> {
-                         const std::uint32_t slot = itemSlot_[item];
-                         auto h = primitives_[slot].intersectLocal(r, lo, hi);
-                         if (!h) return std::nullopt;
-                         return Candidate{h->t, slot, *h};
-                     });
-    if (nearest) best = nearest;
+    // The BVH's items sit at slots base + leaf slot (Scene::build).
+    const auto base = static_cast<std::uint32_t>(unbounded_.size());
+    double far = tMax;
+    bvh_.traverse<true>(ray, tMin, tMax, [&](std::uint32_t first, std::uint32_t count) {
+        for (std::uint32_t k = first; k < first + count; ++k) {
+            const TranslatedSphere& sphere = leafSpheres_[k];
+            std::optional<LocalHit> hit;
+            if (sphere.radius >= 0.0) {
+                hit = Sphere::intersect(Ray{ray.origin + sphere.localOffset, ray.dir},
+                                        sphere.radius, tMin, far);
+            } else {
+                hit = primitives_[base + k].intersectLocal(ray, tMin, far);
+            }
+            if (hit && hit->t >= tMin && hit->t <= far) {
+                far = hit->t;
+                best = Candidate{hit->t, base + k, *hit};
+            }
+        }
+        return far;
+    });
     if (!best) return std::nullopt;
     SurfaceHit hit = primitives_[best->slot].surfaceHit(ray, best->local);
     hit.objectIndex = static_cast<int>(objectOf_[best->slot]);
@@ -97,10 +110,24 @@ std::optional<SurfaceHit> Scene::intersect(const Ray& ray, double tMin, double t
 bool Scene::occluded(const Ray& ray, double tMin, double tMax) const {
     for (std::uint32_t slot = 0; slot < unbounded_.size(); ++slot)
         if (castsShadow_[slot] && primitives_[slot].intersectAny(ray, tMin, tMax)) return true;
-    return bvh_.any(ray, tMin, tMax, [&](std::uint32_t item, const Ray& r, double lo, double hi) {
-        const std::uint32_t slot = itemSlot_[item];
-        return castsShadow_[slot] && primitives_[slot].intersectAny(r, lo, hi);
+    const auto base = static_cast<std::uint32_t>(unbounded_.size());
+    bool found = false;
+    bvh_.traverse<false>(ray, tMin, tMax, [&](std::uint32_t first, std::uint32_t count) {
+        for (std::uint32_t k = first; k < first + count; ++k) {
+            if (!castsShadow_[base + k]) continue;
+            const TranslatedSphere& sphere = leafSpheres_[k];
+            const bool hit = sphere.radius >= 0.0
+                                 ? Sphere::intersectAny(Ray{ray.origin + sphere.localOffset, ray.dir},
+                                                        sphere.radius, tMin, tMax)
+                                 : primitives_[base + k].intersectAny(ray, tMin, tMax);
+            if (hit) {
+                found = true;
+                return -1.0;
+            }
+        }
+        return tMax;
     });
+    return found;
 }
 
 }  // namespace asos

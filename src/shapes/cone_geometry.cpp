@@ -97,25 +97,11 @@ bool circleMayMeetCone(const LocalCone& cone, double zc, double rho, const Arc& 
         // A point: in the cone or not.
         return coneDistance(cone, conePoint(cone, Vec3(0.0, 0.0, zc) - cone.apex)) <= cone.absTol;
     }
-    const Vec3& p = cone.apex;
-    const Vec3& axis = cone.axis;
-    const double c = cone.cosHalf, s = cone.sinHalf;
-    const double h = zc - p.z;
-    if (c > 0.0 && h * axis.z > 0.0) {
-        // Quick: the footprint lies within `radius` of the axis' crossing q
-        // (see Polygon::classify); a circle farther from q, or wholly around
-        // that disc, does not meet it.
-        const double an = std::abs(axis.z);
-        const double g2 = axis.x * axis.x + axis.y * axis.y;
-        const double k = c * c - g2;
-        if (k > 1e-6) {
-            const double tAxis = h / axis.z;
-            const double qx = p.x + tAxis * axis.x, qy = p.y + tAxis * axis.y;
-            const double radius =
-                std::abs(h) * s / k * (c + std::sqrt(g2) * s / an) * (1.0 + 1e-12) + cone.absTol;
-            const double q = length2d(qx, qy);
-            if (q + radius < rho || q - radius > rho) return false;
-        }
+    if (const FootprintReach reach = footprintReach(cone, zc); reach.valid) {
+        // Quick: a circle farther from the axis' crossing q than the
+        // footprint reaches, or wholly around that disc, does not meet it.
+        const double q = glm::length(reach.q);
+        if (q + reach.radius < rho || q - reach.radius > rho) return false;
     }
     const Footprint f = footprintOnZPlane(cone, zc);
     if (!f.bounded) return !ballOutsideAngular(cone, Vec3(0.0, 0.0, zc), rho);
@@ -133,22 +119,8 @@ bool circleMayMeetCone(const LocalCone& cone, double zc, double rho, const Arc& 
 namespace asos::conegeom {
 
 bool discMayMeetCone(const LocalCone& cone, double zc, double rho) {
-    const Vec3& p = cone.apex;
-    const Vec3& axis = cone.axis;
-    const double c = cone.cosHalf, s = cone.sinHalf;
-    const double h = zc - p.z;
-    if (c > 0.0 && h * axis.z > 0.0) {
-        const double an = std::abs(axis.z);
-        const double g2 = axis.x * axis.x + axis.y * axis.y;
-        const double k = c * c - g2;
-        if (k > 1e-6) {
-            // The footprint within `radius` of the axis' crossing q.
-            const double tAxis = h / axis.z;
-            const double radius =
-                std::abs(h) * s / k * (c + std::sqrt(g2) * s / an) * (1.0 + 1e-12) + cone.absTol;
-            return length2d(p.x + tAxis * axis.x, p.y + tAxis * axis.y) - radius <= rho;
-        }
-    }
+    if (const FootprintReach reach = footprintReach(cone, zc); reach.valid)
+        return glm::length(reach.q) - reach.radius <= rho;
     return !ballOutsideAngular(cone, Vec3(0.0, 0.0, zc), rho);
 }
 

@@ -47,98 +47,80 @@ bool Polygon::contains(double x, double y) const {
 }
 
 std::optional<LocalHit> Polygon::intersect(const Ray& ray, double tMin, double tMax) const {
-    if (ray.dir.z == 0.0 || empty()) return std::nullopt;
-    const double t = -ray.origin.z / ray.dir.z;
-    if (!(t >= tMin && t <= tMax)) return std::nullopt;
-    const double x = ray.origin.x + t * ray.dir.x, y = ray.origin.y + t * ray.dir.y;
+    if (empty()) return std::nullopt;
+    const auto hit = crossZPlane(ray, tMin, tMax);
+    if (!hit) return std::nullopt;
+    const double x = hit->x, y = hit->y;
     if (x < lo_.x || x > hi_.x || y < lo_.y || y > hi_.y || !contains(x, y)) return std::nullopt;
-    return LocalHit{t, Vec3(x, y, 0.0), Vec3(0.0, 0.0, 1.0)};
+    return LocalHit{hit->t, Vec3(x, y, 0.0), Vec3(0.0, 0.0, 1.0)};
 }
 
 ConeClass Polygon::classify(const LocalCone& cone) const {
     if (empty()) return missClass();
     const Vec3& p = cone.apex;
-    const Vec3& axis = cone.axis;
-    const double c = cone.cosHalf, s = cone.sinHalf;
-    // Rays cross the plane z = 0 at t = h / d.z.
-    const double h = -p.z;
-    if (c > 0.0 && h * axis.z > 0.0) {
-        // Fast path. When every ray crosses, the footprint (an ellipse) lies
-        // within `radius` of the axis' crossing q; an edge farther from q
-        // cannot meet the cone. One pass over the edges, like the ray's own
+    if (const FootprintReach f = footprintReach(cone, 0.0); f.valid) {
+        // Fast path. Every ray crosses, and the footprint lies within
+        // f.radius of the axis' crossing q; an edge farther from q cannot
+        // meet the cone. One pass over the edges, like the ray's own
         // even-odd test, finds q's side and the few edges near it, which
         // alone are tested exactly.
-        const double an = std::abs(axis.z);
-        const double g2 = axis.x * axis.x + axis.y * axis.y;
-        const double k = c * c - g2;
-        if (k > 1e-6) {
-            // sin(gamma) = sqrt(g2) <= (1 + g2) / 2: the radius needs no root
-            // (it grows by a fraction of order sin^2(theta)); the depths do.
-            const double gBound = 0.5 * (1.0 + g2), depth = std::abs(h);
-            const double invAn = 1.0 / an;
-            const double tAxis = depth * invAn;
-            const Vec2 q(p.x + tAxis * axis.x, p.y + tAxis * axis.y);
-            // The ellipse: semi-major depth s c / k about a centre depth g s^2 / (an k) from q.
-            const double radius = depth * s / k * (c + gBound * s * invAn) * (1.0 + 1e-12) + cone.absTol;
-            const double radius2 = radius * radius;
-            // The footprint wholly off the polygon's bounding box: a miss.
-            if (q.x + radius < lo_.x || q.x - radius > hi_.x || q.y + radius < lo_.y ||
-                q.y - radius > hi_.y)
-                return missClass();
-            // The edges near q (a few at most, or the exact path runs).
-            constexpr int kMaxNear = 8;
-            std::uint32_t nearEdge[kMaxNear][2];
-            int nearCount = 0;
-            bool inside = false;
-            std::uint32_t begin = 0;
-            for (const std::uint32_t end : loopEnds_) {
-                std::uint32_t i0 = end - 1;
-                for (std::uint32_t i = begin; i < end; ++i) {
-                    const Vec2 v0 = vertices_[i0], v1 = vertices_[i];
-                    const Vec2 e = v1 - v0, w = q - v0;
-                    const double side = e.x * w.y - w.x * e.y;
-                    if ((v0.y > q.y) != (v1.y > q.y) && (side > 0.0) == (v1.y > v0.y)) inside = !inside;
-                    // Is q within radius of the edge?
-                    const double along = glm::dot(e, w), ee = glm::dot(e, e);
-                    const bool near = along <= 0.0  ? glm::dot(w, w) <= radius2
-                                      : along >= ee ? glm::dot(q - v1, q - v1) <= radius2
-                                                    : side * side <= radius2 * ee;
-                    if (near) {
-                        if (nearCount == kMaxNear) return classifyExactly(cone);
-                        nearEdge[nearCount][0] = i0;
-                        nearEdge[nearCount][1] = i;
-                        ++nearCount;
-                    }
-                    i0 = i;
+        const Vec2 q = f.q;
+        const double radius = f.radius;
+        const double radius2 = radius * radius;
+        // The footprint wholly off the polygon's bounding box: a miss.
+        if (q.x + radius < lo_.x || q.x - radius > hi_.x || q.y + radius < lo_.y ||
+            q.y - radius > hi_.y)
+            return missClass();
+        // The edges near q (a few at most, or the exact path runs).
+        constexpr int kMaxNear = 8;
+        std::uint32_t nearEdge[kMaxNear][2];
+        int nearCount = 0;
+        bool inside = false;
+        std::uint32_t begin = 0;
+        for (const std::uint32_t end : loopEnds_) {
+            std::uint32_t i0 = end - 1;
+            for (std::uint32_t i = begin; i < end; ++i) {
+                const Vec2 v0 = vertices_[i0], v1 = vertices_[i];
+                const Vec2 e = v1 - v0, w = q - v0;
+                const double side = e.x * w.y - w.x * e.y;
+                if ((v0.y > q.y) != (v1.y > q.y) && (side > 0.0) == (v1.y > v0.y)) inside = !inside;
+                // Is q within radius of the edge?
+                const double along = glm::dot(e, w), ee = glm::dot(e, e);
+                const bool near = along <= 0.0  ? glm::dot(w, w) <= radius2
+                                  : along >= ee ? glm::dot(q - v1, q - v1) <= radius2
+                                                : side * side <= radius2 * ee;
+                if (near) {
+                    if (nearCount == kMaxNear) return classifyExactly(cone);
+                    nearEdge[nearCount][0] = i0;
+                    nearEdge[nearCount][1] = i;
+                    ++nearCount;
                 }
-                begin = end;
+                i0 = i;
             }
-            if (nearCount == 0 && !inside) return missClass();
-            const double g = std::sqrt(g2);
-            const double lo = an * c - g * s;
-            const double hi = angleWithin(an, g, c, s) ? 1.0 : an * c + g * s;
-            const double tNear = depth / hi, tFar = depth / lo;
-            if (cone.surelyAfter(tNear) || cone.surelyBefore(tFar)) return missClass();
-            // The near edges against the cone itself.
-            int meeting = 0;
-            bool endpointInside = false;
-            for (int n = 0; n < nearCount; ++n) {
-                const ConePoint a = conePoint(cone, Vec3(vertices_[nearEdge[n][0]], 0.0) - p);
-                const ConePoint b = conePoint(cone, Vec3(vertices_[nearEdge[n][1]], 0.0) - p);
-                if (segmentMeetsCone(cone, a, b)) {
-                    ++meeting;
-                    endpointInside = endpointInside || a.inside || b.inside;
-                }
-            }
-            if (meeting > 0) {
-                const bool single = meeting == 1 && !endpointInside && cone.surelyWithin(tNear, tFar);
-                return marginalClass(cone, tNear, tFar, single);
-            }
-            // No edge in the cone: the footprint is wholly in or out, as q.
-            if (!inside) return missClass();
-            if (cone.surelyWithin(tNear, tFar)) return fullClass(tNear, tFar);
-            return marginalClass(cone, tNear, tFar);
+            begin = end;
         }
+        if (nearCount == 0 && !inside) return missClass();
+        const auto [tNear, tFar] = crossingDepths(cone, f);
+        if (cone.surelyAfter(tNear) || cone.surelyBefore(tFar)) return missClass();
+        // The near edges against the cone itself.
+        int meeting = 0;
+        bool endpointInside = false;
+        for (int n = 0; n < nearCount; ++n) {
+            const ConePoint a = conePoint(cone, Vec3(vertices_[nearEdge[n][0]], 0.0) - p);
+            const ConePoint b = conePoint(cone, Vec3(vertices_[nearEdge[n][1]], 0.0) - p);
+            if (segmentMeetsCone(cone, a, b)) {
+                ++meeting;
+                endpointInside = endpointInside || a.inside || b.inside;
+            }
+        }
+        if (meeting > 0) {
+            const bool single = meeting == 1 && !endpointInside && cone.surelyWithin(tNear, tFar);
+            return marginalClass(cone, tNear, tFar, single);
+        }
+        // No edge in the cone: the footprint is wholly in or out, as q.
+        if (!inside) return missClass();
+        if (cone.surelyWithin(tNear, tFar)) return fullClass(tNear, tFar);
+        return marginalClass(cone, tNear, tFar);
     }
     return classifyExactly(cone);
 }
@@ -152,17 +134,8 @@ ConeClass Polygon::classifyExactly(const LocalCone& cone) const {
     const DotRange range = dotRange(cone, axis.z, std::sqrt(axis.x * axis.x + axis.y * axis.y));
     const double ballDist = glm::length(center - p);
     const double ballFar = ballDist + radius_;
-    const double hTol = 1e-15 * (std::abs(p.x) + std::abs(p.y) + std::abs(p.z)) + cone.absTol;
-    if (std::abs(h) <= hTol) {
-        // Apex in the plane (to rounding): rays cross at |t| <= hTol / |d.z|.
-        const double slope = range.lo > 0.0 ? range.lo : range.hi < 0.0 ? -range.hi : 0.0;
-        if (slope > 0.0) {
-            const double tHit = hTol / slope;
-            if (cone.surelyBefore(tHit)) return missClass();
-            return marginalClass(cone, cone.tMin, std::min(tHit, ballFar));
-        }
-        return marginalClass(cone, cone.tMin, ballFar);
-    }
+    const double hTol = apexInPlaneTolerance(cone);
+    if (std::abs(h) <= hTol) return apexInPlaneClass(cone, range, hTol, ballFar);
     const PlaneCrossing crossing = planeCrossing(range, h);
     if (!crossing.any) return missClass();
     const double tLo = std::max({crossing.tNear, ballDist - radius_, std::abs(h)});

@@ -157,6 +157,12 @@ ConeClass Primitive::classifyGeneral(const PreparedCone& cone) const {
     return out;
 }
 
+std::optional<TranslatedSphere> Primitive::translatedSphere() const {
+    const Sphere* sphere = std::get_if<Sphere>(&shape_);
+    if (!sphere || frame_.kind != LocalFrame::Kind::Translate) return std::nullopt;
+    return TranslatedSphere{frame_.localOffset, sphere->radius()};
+}
+
 const char* Primitive::kindName() const { return name_; }
 
 }  // namespace asos

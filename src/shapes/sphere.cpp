@@ -16,51 +16,6 @@ Bounds3 Sphere::worldBounds(const Mat3& m, const Vec3& offset) const {
     return {offset - half, offset + half};
 }
 
-namespace {
-// The roots of |o + t d|^2 = r^2, computed without cancellation: the
-// discriminant from the closest-approach vector (Haines et al., "Precision
-// improvements for ray/sphere intersection", Ray Tracing Gems, 2019).
-struct Roots {
-    bool real;
-    double near, far;
-};
-
-Roots sphereRoots(const Ray& ray, double r) {
-    const Vec3& o = ray.origin;
-    const Vec3& d = ray.dir;
-    const double a = glm::dot(d, d);
-    const double b = glm::dot(o, d);
-    const Vec3 f = o - (b / a) * d;
-    const double disc = a * (r * r - glm::dot(f, f));
-    if (disc < 0.0) return {false, 0.0, 0.0};
-    const double c = glm::dot(o, o) - r * r;
-    const double q = -(b + std::copysign(std::sqrt(disc), b));
-    if (q == 0.0) return {true, 0.0, 0.0};
-    double t0 = q / a, t1 = c / q;
-    if (t0 > t1) std::swap(t0, t1);
-    return {true, t0, t1};
-}
-}  // namespace
-
-std::optional<LocalHit> Sphere::intersect(const Ray& ray, double tMin, double tMax) const {
-    if (!(radius_ > 0.0)) return std::nullopt;
-    const Roots roots = sphereRoots(ray, radius_);
-    if (!roots.real) return std::nullopt;
-    double t;
-    if (roots.near >= tMin && roots.near <= tMax) t = roots.near;
-    else if (roots.far >= tMin && roots.far <= tMax) t = roots.far;
-    else return std::nullopt;
-    const Vec3 p = ray.at(t);
-    return LocalHit{t, p, p};
-}
-
-bool Sphere::intersectAny(const Ray& ray, double tMin, double tMax) const {
-    if (!(radius_ > 0.0)) return false;
-    const Roots roots = sphereRoots(ray, radius_);
-    return roots.real && ((roots.near >= tMin && roots.near <= tMax) ||
-                          (roots.far >= tMin && roots.far <= tMax));
-}
-
 ConeClass Sphere::classify(const LocalCone& cone) const {
     if (!(radius_ > 0.0)) return missClass();
     const double r = radius_, r2 = r * r;

@@ -71,3 +71,53 @@ TEST_CASE("Scene build reports every meaningless object with its location", "[sc
     CHECK(diag.all()[0].loc.line == 3);
     CHECK(diag.all()[1].loc.line == 9);
 }
+
+// The scene's ray searches test translated spheres from a compact array and
+// every other object through its Primitive: both paths must give exactly the
+// primitive's own answers, hit record included.
+TEST_CASE("Scene ray searches give each primitive's exact answer, whatever its placement",
+          "[scene]") {
+    std::mt19937 rng(11);
+    std::uniform_real_distribution<double> u(-8.0, 8.0), size(0.2, 1.0), angle(-180.0, 180.0);
+    SceneDescription d;
+    for (int i = 0; i < 240; ++i) {
+        Object o;
+        const Vec3 at(u(rng), u(rng), u(rng));
+        switch (i % 4) {
+        case 0: o.shape = SphereShape{at, size(rng)}; break;
+        case 1: o.shape = BoxShape{at, at + Vec3(size(rng), size(rng), size(rng))}; break;
+        case 2: o.shape = CylinderShape{at, at + Vec3(0, size(rng), 0), 0.5 * size(rng), false}; break;
+        default: o.shape = PolygonShape{{at, at + Vec3(size(rng), 0, 0), at + Vec3(0, size(rng), 0.3)}}; break;
+        }
+        // Spheres too: translated (the compact path), rotated, scaled.
+        if (i % 3 == 1) o.worldFromObject = Transform::rotateDegrees({angle(rng), angle(rng), angle(rng)});
+        if (i % 3 == 2) o.worldFromObject = Transform::scale({size(rng) + 0.5, 1.0, size(rng) + 0.5});
+        o.noShadow = i % 5 == 0;
+        d.objects.push_back(o);
+    }
+    Diagnostics diag;
+    const auto scene = Scene::build(d, diag);
+    REQUIRE(scene);
+    for (int i = 0; i < 3000; ++i) {
+        const Ray ray{{u(rng), u(rng), u(rng)}, glm::normalize(Vec3(u(rng), u(rng), u(rng)))};
+        const double tMin = i % 2 ? 0.0 : 0.5, tMax = i % 3 ? kInfinity : 6.0;
+        std::optional<SurfaceHit> brute;
+        bool blocked = false;
+        for (std::uint32_t o = 0; o < scene->objectCount(); ++o) {
+            if (auto h = scene->primitive(o).intersect(ray, tMin, tMax))
+                if (!brute || h->t < brute->t) { brute = h; brute->objectIndex = int(o); }
+            blocked = blocked || (!d.objects[o].noShadow &&
+                                  scene->primitive(o).intersectAny(ray, tMin, tMax));
+        }
+        const auto hit = scene->intersect(ray, tMin, tMax);
+        REQUIRE(hit.has_value() == brute.has_value());
+        if (hit) {
+            CHECK(hit->objectIndex == brute->objectIndex);
+            CHECK(hit->t == brute->t);
+            CHECK(hit->position == brute->position);
+            CHECK(hit->normal == brute->normal);
+            CHECK(hit->objectPoint == brute->objectPoint);
+        }
+        CHECK(scene->occluded(ray, tMin, tMax) == blocked);
+    }
+}

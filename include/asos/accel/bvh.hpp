@@ -116,8 +116,11 @@ struct RayPrep {
                 oN = inf;
                 oF = -inf;
             } else {
-                nearInv = static_cast<float>(1.0 / d);
-                farInv = static_cast<float>(kFarScale / d);
+                // One division: kFarScale * (1 / d) in double is within
+                // 2^-52 of kFarScale / d, far below the margin kFarScale leaves.
+                const double inv = 1.0 / d;
+                nearInv = static_cast<float>(inv);
+                farInv = static_cast<float>(kFarScale * inv);
                 oN = side ? below : above;
                 oF = side ? above : below;
             }
@@ -279,10 +282,22 @@ public:
     template <class Visit>
     void cone(const Cone& cone, Visit&& f) const;
 
+    // The ray traversal under nearest and any, for a caller that keeps its
+    // item data in leaf order (itemOrder()): leaf(first, count) tests the
+    // items in leaf slots [first, first + count) and returns the far limit of
+    // the search from then on (the current one, or nearer), or a negative
+    // number to stop. Ordered: children nearest first, as a nearest-hit
+    // search wants; an any-hit search does not need the order.
+    template <bool Ordered, class Leaf>
+    void traverse(const Ray& ray, double tMin, double tMax, Leaf&& leaf) const;
+
 private:
     friend struct BvhBuilder;
-    template <class Leaf>
-    void traverseRay(const Ray& ray, double tMin, double tMax, bool ordered, Leaf&& leaf) const;
+    // The traversal for one octant of ray directions (SX, SY, SZ: 1 where the
+    // direction's component is negative), so that which plane of a box is
+    // entered first is known at compile time.
+    template <int SX, int SY, int SZ, bool Ordered, class Leaf>
+    void traverseOctant(const bvh_detail::RayPrep& prep, Leaf& leaf) const;
 
     std::vector<bvh_detail::Node> nodes_;  // nodes_[0] is the root
     std::vector<std::uint32_t> order_;     // item index per leaf slot
@@ -290,14 +305,25 @@ private:
     int depth_ = 0;
 };
 
-// The ray traversal shared by nearest and any. `leaf(first, count)` tests a
-// leaf's items and returns the far limit of the search from then on (it may
-// have shrunk), or a negative number to stop.
-template <class Leaf>
-void Bvh::traverseRay(const Ray& ray, double tMin, double tMax, bool ordered, Leaf&& leaf) const {
-    using namespace bvh_detail;
+template <bool Ordered, class Leaf>
+void Bvh::traverse(const Ray& ray, double tMin, double tMax, Leaf&& leaf) const {
     if (nodes_.empty()) return;
-    const RayPrep prep(ray, tMin, tMax);
+    const bvh_detail::RayPrep prep(ray, tMin, tMax);
+    switch (prep.nearSide[0] | prep.nearSide[1] << 1 | prep.nearSide[2] << 2) {
+    case 0: traverseOctant<0, 0, 0, Ordered>(prep, leaf); break;
+    case 1: traverseOctant<1, 0, 0, Ordered>(prep, leaf); break;
+    case 2: traverseOctant<0, 1, 0, Ordered>(prep, leaf); break;
+    case 3: traverseOctant<1, 1, 0, Ordered>(prep, leaf); break;
+    case 4: traverseOctant<0, 0, 1, Ordered>(prep, leaf); break;
+    case 5: traverseOctant<1, 0, 1, Ordered>(prep, leaf); break;
+    case 6: traverseOctant<0, 1, 1, Ordered>(prep, leaf); break;
+    default: traverseOctant<1, 1, 1, Ordered>(prep, leaf); break;
+    }
+}
+
+template <int SX, int SY, int SZ, bool Ordered, class Leaf>
+void Bvh::traverseOctant(const bvh_detail::RayPrep& prep, Leaf& leaf) const {
+    using namespace bvh_detail;
     // Locals, so that the loop keeps them in registers.
     const Float4 oNear0 = prep.oNear[0], oNear1 = prep.oNear[1], oNear2 = prep.oNear[2];
     const Float4 oFar0 = prep.oFar[0], oFar1 = prep.oFar[1], oFar2 = prep.oFar[2];
@@ -306,27 +332,20 @@ void Bvh::traverseRay(const Ray& ray, double tMin, double tMax, bool ordered, Le
     const Float4 tLo = prep.tMin;
     Float4 tHi = prep.tMax;
     float farLimit = tHi[0];
-    // Byte offsets of the near and far planes of each axis within a node.
-    constexpr std::size_t kAxisBytes = sizeof(Float4), kSideBytes = 3 * sizeof(Float4);
-    const std::size_t near0 = prep.nearSide[0] * kSideBytes, far0 = kSideBytes - near0;
-    const std::size_t near1 = prep.nearSide[1] * kSideBytes + kAxisBytes, far1 = kSideBytes + 2 * kAxisBytes - near1;
-    const std::size_t near2 = prep.nearSide[2] * kSideBytes + 2 * kAxisBytes, far2 = kSideBytes + 4 * kAxisBytes - near2;
-    const auto plane = [](const Node& node, std::size_t offset) {
-        return *reinterpret_cast<const Float4*>(reinterpret_cast<const char*>(&node) + offset);
-    };
+    const Node* const nodes = nodes_.data();
 
     StackEntry stack[kStackSize];
     int top = 0;
     std::uint32_t ref = 0;
     for (;;) {
         while (!isLeaf(ref)) {
-            const Node& node = nodes_[ref];
-            const Float4 n0 = (plane(node, near0) - oNear0) * nInv0;
-            const Float4 n1 = (plane(node, near1) - oNear1) * nInv1;
-            const Float4 n2 = (plane(node, near2) - oNear2) * nInv2;
-            const Float4 f0 = (plane(node, far0) - oFar0) * fInv0;
-            const Float4 f1 = (plane(node, far1) - oFar1) * fInv1;
-            const Float4 f2 = (plane(node, far2) - oFar2) * fInv2;
+            const Node& node = nodes[ref];
+            const Float4 n0 = (node.box[SX][0] - oNear0) * nInv0;
+            const Float4 n1 = (node.box[SY][1] - oNear1) * nInv1;
+            const Float4 n2 = (node.box[SZ][2] - oNear2) * nInv2;
+            const Float4 f0 = (node.box[1 - SX][0] - oFar0) * fInv0;
+            const Float4 f1 = (node.box[1 - SY][1] - oFar1) * fInv1;
+            const Float4 f2 = (node.box[1 - SZ][2] - oFar2) * fInv2;
             const Float4 a = n0 > tLo ? n0 : tLo, b = n2 > n1 ? n2 : n1;
             const Float4 lo = a > b ? a : b;
             const Float4 c = f0 < tHi ? f0 : tHi, d = f2 < f1 ? f2 : f1;
@@ -344,7 +363,7 @@ void Bvh::traverseRay(const Ray& ray, double tMin, double tMax, bool ordered, Le
                 mask &= mask - 1;
                 if (mask == 0) {
                     // Two children, the common case: nearer one next.
-                    const bool swap = ordered && lo[second] < lo[first];
+                    const bool swap = Ordered && lo[second] < lo[first];
                     const int nearK = swap ? second : first, farK = swap ? first : second;
                     stack[top++] = {node.child[farK], lo[farK]};
                     ref = node.child[nearK];
@@ -359,7 +378,7 @@ void Bvh::traverseRay(const Ray& ray, double tMin, double tMax, bool ordered, Le
                     mask &= mask - 1;
                     stack[top++] = {node.child[k], lo[k]};
                 }
-                if (ordered) {
+                if constexpr (Ordered) {
                     for (int i = base + 1; i < top; ++i) {
                         const StackEntry e = stack[i];
                         int j = i;
@@ -398,7 +417,7 @@ auto Bvh::nearest(const Ray& ray, double tMin, double tMax, Intersect&& f) const
     using Result = bvh_detail::ResultOf<Intersect, std::uint32_t, const Ray&, double, double>;
     Result best;
     double far = tMax;
-    traverseRay(ray, tMin, tMax, true, [&](std::uint32_t first, std::uint32_t count) {
+    traverse<true>(ray, tMin, tMax, [&](std::uint32_t first, std::uint32_t count) {
         for (std::uint32_t k = 0; k < count; ++k) {
             Result hit = f(order_[first + k], ray, tMin, far);
             if (hit && hit->t >= tMin && hit->t <= far) {
@@ -414,7 +433,7 @@ auto Bvh::nearest(const Ray& ray, double tMin, double tMax, Intersect&& f) const
 template <class Test>
 bool Bvh::any(const Ray& ray, double tMin, double tMax, Test&& f) const {
     bool found = false;
-    traverseRay(ray, tMin, tMax, false, [&](std::uint32_t first, std::uint32_t count) {
+    traverse<false>(ray, tMin, tMax, [&](std::uint32_t first, std::uint32_t count) {
         for (std::uint32_t k = 0; k < count; ++k) {
             if (f(order_[first + k], ray, tMin, tMax)) {
                 found = true;

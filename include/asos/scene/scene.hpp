@@ -49,9 +49,14 @@ private:
     std::vector<std::uint8_t> castsShadow_;    // by slot
     std::vector<std::uint32_t> objectOf_;      // slot -> object
     std::vector<std::uint32_t> slotOf_;        // object -> slot
-    std::vector<std::uint32_t> itemSlot_;      // BVH item -> slot
     std::vector<std::uint32_t> bounded_;       // BVH item -> object
     std::vector<std::uint32_t> unbounded_;     // objects outside the BVH
+    // By BVH leaf slot (slot - unbounded count): the item's local offset and
+    // radius when it is a translated sphere (TranslatedSphere), else radius
+    // -1. The ray searches test such spheres from this array (32 bytes an
+    // item, in the order the traversal reaches them), the rest through their
+    // Primitive.
+    std::vector<TranslatedSphere> leafSpheres_;
     Bvh bvh_;
 };
 

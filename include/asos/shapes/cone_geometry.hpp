@@ -166,6 +166,83 @@ inline bool segmentMeetsCone(const LocalCone& cone, const ConePoint& a, const Co
 // True when no point of the ball (centre m, radius r) lies in the infinite
 // cone (angular test only). Exact: the distance from m to the cone exceeds r
 // (the ball grown by the cone's distance tolerance, for an apex on it).
+// The quick footprint bound on the plane z = zc (Disc, Polygon and the
+// circle tests of cylinder and cone): when the cone is narrower than a
+// hemisphere, its axis heads for the plane and no ray of the cone is nearly
+// parallel to it (k = c^2 - sin^2(gamma) > 1e-6, gamma the axis' angle from
+// the normal), every ray crosses the plane, at depths [tNear, tFar], and the
+// footprint (an ellipse of semi-major depth s c / k about a centre depth
+// g s^2 / (an k) from q) lies within `radius` of the axis' crossing q
+// (crossingDepths gives the depths).
+struct FootprintReach {
+    bool valid = false;
+    Vec2 q{0.0};
+    double radius = 0.0;
+    double depth = 0.0;  // |zc - apex.z|
+    double an = 0.0;     // |axis.z|
+    double g2 = 0.0;     // sin^2(gamma)
+    double k = 0.0;      // c^2 - g2
+};
+
+inline FootprintReach footprintReach(const LocalCone& cone, double zc) {
+    FootprintReach f;
+    const Vec3& p = cone.apex;
+    const Vec3& axis = cone.axis;
+    const double c = cone.cosHalf, s = cone.sinHalf;
+    const double h = zc - p.z;
+    if (!(c > 0.0 && h * axis.z > 0.0)) return f;
+    f.an = std::abs(axis.z);
+    f.g2 = axis.x * axis.x + axis.y * axis.y;
+    f.k = c * c - f.g2;
+    if (!(f.k > 1e-6)) return f;
+    f.valid = true;
+    // sin(gamma) = sqrt(g2) <= (1 + g2) / 2: the radius needs no root (it
+    // grows by a fraction of order sin^2(theta)); the depths do.
+    const double gBound = 0.5 * (1.0 + f.g2);
+    f.depth = std::abs(h);
+    const double invAn = 1.0 / f.an;
+    const double tAxis = f.depth * invAn;
+    f.q = Vec2(p.x + tAxis * axis.x, p.y + tAxis * axis.y);
+    f.radius = f.depth * s / f.k * (c + gBound * s * invAn) * (1.0 + 1e-12) + cone.absTol;
+    return f;
+}
+
+// The depths [tNear, tFar] at which the rays cross the plane, for a valid
+// FootprintReach (apart, since the quick misses do not need the root).
+struct CrossingDepths {
+    double tNear;
+    double tFar;
+};
+
+inline CrossingDepths crossingDepths(const LocalCone& cone, const FootprintReach& f) {
+    const double c = cone.cosHalf, s = cone.sinHalf;
+    const double g = std::sqrt(f.g2);
+    const double lo = f.an * c - g * s;
+    const double hi = angleWithin(f.an, g, c, s) ? 1.0 : f.an * c + g * s;
+    return {f.depth / hi, f.depth / lo};
+}
+
+// A cone whose apex lies in the plane z = 0 (to rounding: |apex.z| <= hTol),
+// given the DotRange of +z: its rays cross the plane at |t| <= hTol / |d.z|,
+// so either all of them do so before the range (Miss) or the answer is
+// Marginal, up to tFarBound at most.
+inline ConeClass apexInPlaneClass(const LocalCone& cone, DotRange range, double hTol,
+                                  double tFarBound) {
+    const double slope = range.lo > 0.0 ? range.lo : range.hi < 0.0 ? -range.hi : 0.0;
+    if (slope > 0.0) {
+        const double tHit = hTol / slope;
+        if (cone.surelyBefore(tHit)) return missClass();
+        return marginalClass(cone, cone.tMin, std::min(tHit, tFarBound));
+    }
+    return marginalClass(cone, cone.tMin, tFarBound);
+}
+
+// The tolerance within which an apex counts as lying in the plane z = 0.
+inline double apexInPlaneTolerance(const LocalCone& cone) {
+    const Vec3& p = cone.apex;
+    return 1e-15 * (std::abs(p.x) + std::abs(p.y) + std::abs(p.z)) + cone.absTol;
+}
+
 inline bool ballOutsideAngular(const LocalCone& cone, const Vec3& m, double r) {
     r = r * (1.0 + 1e-12) + cone.absTol;
     const Vec3 w = m - cone.apex;

@@ -1,4 +1,7 @@
 #pragma once
+#include <optional>
+
+#include "asos/geometry/ray.hpp"
 #include "asos/geometry/vec.hpp"
 
 namespace asos {
@@ -17,5 +20,20 @@ struct BoundingSphere {
     Vec3 center{0.0};
     double radius = 0.0;
 };
+
+// Where a ray crosses the plane z = 0 within [tMin, tMax] (Disc, Polygon):
+// the ray parameter and the crossing's x and y.
+struct ZPlaneCrossing {
+    double t;
+    double x;
+    double y;
+};
+
+inline std::optional<ZPlaneCrossing> crossZPlane(const Ray& ray, double tMin, double tMax) {
+    if (ray.dir.z == 0.0) return std::nullopt;
+    const double t = -ray.origin.z / ray.dir.z;
+    if (!(t >= tMin && t <= tMax)) return std::nullopt;
+    return ZPlaneCrossing{t, ray.origin.x + t * ray.dir.x, ray.origin.y + t * ray.dir.y};
+}
 
 }  // namespace asos

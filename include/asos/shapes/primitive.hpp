@@ -27,6 +27,15 @@
 
 namespace asos {
 
+// A sphere placed by a translation only, as Sphere's static tests take it:
+// the local ray is the world ray shifted by localOffset. The scene keeps these
+// in a compact array so that its ray search tests such spheres without
+// reaching the Primitive (same arithmetic, same answers).
+struct TranslatedSphere {
+    Vec3 localOffset{0.0};
+    double radius = 0.0;
+};
+
 class Primitive {
 public:
     // Throws std::invalid_argument with a clear message for meaningless shapes.
@@ -46,6 +55,11 @@ public:
     ConeClass classify(const Cone& worldCone) const;
     // The same, for a cone whose trigonometry is done once for many objects.
     ConeClass classify(const PreparedCone& worldCone) const;
+
+    // This primitive as a TranslatedSphere, when it is a sphere under a pure
+    // translation: Sphere::intersect(ray shifted by localOffset, radius, ...)
+    // then equals intersectLocal(ray, ...).
+    std::optional<TranslatedSphere> translatedSphere() const;
 
     // The POV-Ray keyword of the shape ("sphere", "cone", ...).
     const char* kindName() const;

@@ -1,6 +1,8 @@
 #pragma once
 // POV-Ray's sphere, in a local frame centred on it.
+#include <cmath>
 #include <optional>
+#include <utility>
 
 #include "asos/geometry/bounds.hpp"
 #include "asos/geometry/cone.hpp"
@@ -9,6 +11,32 @@
 #include "asos/shapes/local_hit.hpp"
 
 namespace asos {
+
+namespace sphere_detail {
+// The roots of |o + t d|^2 = r^2, computed without cancellation: the
+// discriminant from the closest-approach vector (Haines et al., "Precision
+// improvements for ray/sphere intersection", Ray Tracing Gems, 2019).
+struct Roots {
+    bool real;
+    double near, far;
+};
+
+inline Roots sphereRoots(const Ray& ray, double r) {
+    const Vec3& o = ray.origin;
+    const Vec3& d = ray.dir;
+    const double a = glm::dot(d, d);
+    const double b = glm::dot(o, d);
+    const Vec3 f = o - (b / a) * d;
+    const double disc = a * (r * r - glm::dot(f, f));
+    if (disc < 0.0) return {false, 0.0, 0.0};
+    const double c = glm::dot(o, o) - r * r;
+    const double q = -(b + std::copysign(std::sqrt(disc), b));
+    if (q == 0.0) return {true, 0.0, 0.0};
+    double t0 = q / a, t1 = c / q;
+    if (t0 > t1) std::swap(t0, t1);
+    return {true, t0, t1};
+}
+}  // namespace sphere_detail
 
 class Sphere {
 public:
@@ -20,8 +48,32 @@ public:
     BoundingSphere boundingSphere() const { return {Vec3(0.0), radius_}; }
     Bounds3 worldBounds(const Mat3& worldFromLocal, const Vec3& offset) const;
 
-    std::optional<LocalHit> intersect(const Ray& ray, double tMin, double tMax) const;
-    bool intersectAny(const Ray& ray, double tMin, double tMax) const;
+    // Inline: the scene's ray search calls them directly for spheres that
+    // are only translated (Scene's leaf records), without a Primitive.
+    std::optional<LocalHit> intersect(const Ray& ray, double tMin, double tMax) const {
+        return intersect(ray, radius_, tMin, tMax);
+    }
+    bool intersectAny(const Ray& ray, double tMin, double tMax) const {
+        return intersectAny(ray, radius_, tMin, tMax);
+    }
+    static std::optional<LocalHit> intersect(const Ray& ray, double radius, double tMin,
+                                             double tMax) {
+        if (!(radius > 0.0)) return std::nullopt;
+        const sphere_detail::Roots roots = sphere_detail::sphereRoots(ray, radius);
+        if (!roots.real) return std::nullopt;
+        double t;
+        if (roots.near >= tMin && roots.near <= tMax) t = roots.near;
+        else if (roots.far >= tMin && roots.far <= tMax) t = roots.far;
+        else return std::nullopt;
+        const Vec3 p = ray.at(t);
+        return LocalHit{t, p, p};
+    }
+    static bool intersectAny(const Ray& ray, double radius, double tMin, double tMax) {
+        if (!(radius > 0.0)) return false;
+        const sphere_detail::Roots roots = sphere_detail::sphereRoots(ray, radius);
+        return roots.real && ((roots.near >= tMin && roots.near <= tMax) ||
+                              (roots.far >= tMin && roots.far <= tMax));
+    }
     // Full iff the cone lies inside the sphere's tangent cone (seen from
     // outside) and every front hit is in range; see docs/geometry.md.
     ConeClass classify(const LocalCone& cone) const;
