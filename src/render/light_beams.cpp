@@ -72,10 +72,6 @@ LightBeams::LightBeams(const LightModel& model, const Vec3& apex, double tMin)
     }
 }
 
-double LightBeams::share(int level) const {
-    return shape_ == LightShape::Segment ? std::ldexp(1.0, -level) : std::ldexp(1.0, -2 * level);
-}
-
 BeamRay LightBeams::toward(const Vec3& target) const {
     const Vec3 offset = target - apex_;
     const double distance = glm::length(offset);
@@ -108,19 +104,24 @@ double LightBeams::sphereDistanceAtRadius(double r, double widen) const {
 
 Cone LightBeams::coneAbout(const Vec3& axis, const Vec3* directions, int count, double farthest,
                            double& tanHalf) const {
-    // The widest direction by the tangent of its angle: one arctangent.
-    double widest = 0.0;
+    // The widest direction by the tangent of its angle, from directions of
+    // any length (the tangent |d x axis| / (d . axis) does not depend on it):
+    // no normalisation, one square root and one arctangent.
+    double widest2 = 0.0;
     bool hemisphere = true;
     for (int i = 0; i < count; ++i) {
         const double along = glm::dot(directions[i], axis);
-        if (!(along > 1e-6)) {
+        // along > 1e-6 |d|: within a right angle of the axis, with margin.
+        if (!(along > 0.0) || !(along * along > 1e-12 * glm::dot(directions[i], directions[i]))) {
             hemisphere = false;
             break;
         }
-        widest = std::max(widest, glm::length(glm::cross(directions[i], axis)) / along);
+        const Vec3 off = glm::cross(directions[i], axis);
+        widest2 = std::max(widest2, glm::dot(off, off) / (along * along));
     }
     // A piece reaching a right angle from its central ray has no convex cone
     // about it: the cone of all directions holds it.
+    const double widest = std::sqrt(widest2);
     const double halfAngle = hemisphere ? std::atan(widest) + kConeAnglePad : kPi;
     tanHalf = hemisphere ? widest : std::numeric_limits<double>::quiet_NaN();
     return {apex_, axis, halfAngle, tMin_, farthest * (1.0 + 1e-12)};
@@ -133,16 +134,11 @@ LightPiece LightBeams::make(double a0, double b0, double a1, double b1, int leve
         case LightShape::Rectangle: {
             p.central = toward(rectPoint(0.5 * (a0 + a1), 0.5 * (b0 + b1)));
             if (!cone) break;
-            const Vec3 corners[4] = {rectPoint(a0, b0), rectPoint(a1, b0), rectPoint(a1, b1), rectPoint(a0, b1)};
-            Vec3 dirs[4];
-            double farthest = 0.0;
-            for (int i = 0; i < 4; ++i) {
-                const Vec3 d = corners[i] - apex_;
-                const double l = glm::length(d);
-                farthest = std::max(farthest, l);
-                dirs[i] = d / l;
-            }
-            p.cone = coneAbout(p.central.ray.dir, dirs, 4, farthest, p.tanHalf);
+            const Vec3 dirs[4] = {rectPoint(a0, b0) - apex_, rectPoint(a1, b0) - apex_, rectPoint(a1, b1) - apex_,
+                                  rectPoint(a0, b1) - apex_};
+            double farthest2 = 0.0;
+            for (const Vec3& d : dirs) farthest2 = std::max(farthest2, glm::dot(d, d));
+            p.cone = coneAbout(p.central.ray.dir, dirs, 4, std::sqrt(farthest2), p.tanHalf);
             break;
         }
         case LightShape::Segment: {
@@ -187,7 +183,11 @@ LightBeams::AngleCache::Trig LightBeams::AngleCache::of(double phi) {
 }
 
 Vec3 LightBeams::discDirection(double r, const AngleCache::Trig& t) const {
-    return glm::normalize(frame_.toWorld(tanAlpha_ * r * t.c, tanAlpha_ * r * t.s, 1.0));
+    return glm::normalize(discOffset(r, t));
+}
+
+Vec3 LightBeams::discOffset(double r, const AngleCache::Trig& t) const {
+    return frame_.toWorld(tanAlpha_ * r * t.c, tanAlpha_ * r * t.s, 1.0);
 }
 
 LightPiece LightBeams::makeDiscPiece(double r0, double phi0, double r1, double phi1, int level,
@@ -197,8 +197,8 @@ LightPiece LightBeams::makeDiscPiece(double r0, double phi0, double r1, double p
     p.central = {Ray{apex_, dir}, sphereDistance(dir)};
     if (!cone) return p;
     const AngleCache::Trig t0 = angles.of(phi0), t1 = angles.of(phi1);
-    const Vec3 corners[4] = {discDirection(r0, t0), discDirection(r0, t1), discDirection(r1, t0),
-                             discDirection(r1, t1)};
+    // Unnormalised: coneAbout needs no unit directions.
+    const Vec3 corners[4] = {discOffset(r0, t0), discOffset(r0, t1), discOffset(r1, t0), discOffset(r1, t1)};
     p.cone = coneAbout(dir, corners, 4, sphereDistanceAtRadius(r1, 1.0), p.tanHalf);
     return p;
 }
@@ -209,17 +209,16 @@ LightPiece LightBeams::root() const {
 
 int LightBeams::splitRectangle(const LightPiece& p, LightPiece* out, bool cones) const {
     // The quarters share the nine points of a 3 x 3 lattice over the piece:
-    // each is made and normalised once.
+    // each is made once (unnormalised: coneAbout needs no unit directions).
     const double s[3] = {p.a0, 0.5 * (p.a0 + p.a1), p.a1};
     const double t[3] = {p.b0, 0.5 * (p.b0 + p.b1), p.b1};
     Vec3 dirs[3][3];
-    double lengths[3][3];
+    double lengths2[3][3];
     if (cones)
         for (int j = 0; j < 3; ++j)
             for (int i = 0; i < 3; ++i) {
-                const Vec3 d = rectPoint(s[i], t[j]) - apex_;
-                lengths[j][i] = glm::length(d);
-                dirs[j][i] = d / lengths[j][i];
+                dirs[j][i] = rectPoint(s[i], t[j]) - apex_;
+                lengths2[j][i] = glm::dot(dirs[j][i], dirs[j][i]);
             }
     for (int q = 0; q < 4; ++q) {
         const int i = q & 1, j = q >> 1;
@@ -228,9 +227,9 @@ int LightBeams::splitRectangle(const LightPiece& p, LightPiece* out, bool cones)
         c.central = toward(rectPoint(0.5 * (s[i] + s[i + 1]), 0.5 * (t[j] + t[j + 1])));
         if (!cones) continue;
         const Vec3 corners[4] = {dirs[j][i], dirs[j][i + 1], dirs[j + 1][i + 1], dirs[j + 1][i]};
-        const double farthest = std::max(std::max(lengths[j][i], lengths[j][i + 1]),
-                                         std::max(lengths[j + 1][i + 1], lengths[j + 1][i]));
-        c.cone = coneAbout(c.central.ray.dir, corners, 4, farthest, c.tanHalf);
+        const double farthest2 = std::max(std::max(lengths2[j][i], lengths2[j][i + 1]),
+                                          std::max(lengths2[j + 1][i + 1], lengths2[j + 1][i]));
+        c.cone = coneAbout(c.central.ray.dir, corners, 4, std::sqrt(farthest2), c.tanHalf);
     }
     return 4;
 }

@@ -13,6 +13,7 @@
 // rays lie within it and the cone is convex (half-angle below pi/2); for a
 // sphere piece, because the central ray lies within the piece's angular
 // range (docs/accel.md, "Sphere pieces").
+#include <bit>
 #include <cstdint>
 #include <limits>
 #include <optional>
@@ -63,7 +64,11 @@ public:
     // first), uniform over the piece's area (length, disc area).
     BeamRay sample(const LightPiece& piece, const Vec2& xi) const;
     // The piece's share of the light: 4^-level (2^-level for a segment).
-    double share(int level) const;
+    // Inline and without a library call: it is asked for every sample.
+    double share(int level) const {
+        const int exponent = shape_ == LightShape::Segment ? level : 2 * level;
+        return exponent < 1000 ? std::bit_cast<double>(std::uint64_t(1023 - exponent) << 52) : 0.0;
+    }
     // No ray of the piece reaches the light nearer than this.
     double nearestLightDistance(const LightPiece& piece) const;
     // Pairs of rays across the piece through its central point, one pair per
@@ -109,11 +114,14 @@ private:
         Trig of(double phi);
     };
     Vec3 discDirection(double r, const AngleCache::Trig& t) const;
+    Vec3 discOffset(double r, const AngleCache::Trig& t) const;  // the same, not normalised
     LightPiece makeDiscPiece(double r0, double phi0, double r1, double phi1, int level, std::uint64_t path,
                              bool cone, AngleCache& angles) const;
     double sphereDistance(const Vec3& dir) const;
     double sphereDistanceAtRadius(double r, double widen) const;
     BeamRay toward(const Vec3& target) const;
+    // The cone about unit `axis` through the widest of `directions` (of any
+    // length), reaching `farthest`.
     Cone coneAbout(const Vec3& axis, const Vec3* directions, int count, double farthest,
                    double& tanHalf) const;
 
