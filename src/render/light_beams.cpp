@@ -19,6 +19,38 @@ double aspect(double r0, double r1, double phi0, double phi1) {
     return std::max(radial / arc, arc / radial);
 }
 
+// The children of a disc piece (r in [r0, r1], phi in [phi0, phi1]) at
+// `level`: the equal-area pieces of geometry/beam_sphere.cpp, as
+// {r0, r1, phi0, phi1} each.
+std::array<std::array<double, 4>, 4> discChildren(int level, double r0, double r1, double phi0, double phi1) {
+    // The disc's quadrants, then 2 x 2, 1 x 4 or 4 x 1 in r^2 and phi, whichever
+    // leaves the pieces closest to square.
+    std::array<std::array<double, 4>, 4> pieces;  // r0, r1, phi0, phi1
+    const auto phiAt = [&](double f) { return phi0 + f * (phi1 - phi0); };
+    if (level == 0) {
+        pieces = {{{0.0, 1.0, 0.0, 0.5 * kPi}, {0.0, 1.0, 0.5 * kPi, kPi},
+                   {0.0, 1.0, kPi, 1.5 * kPi}, {0.0, 1.0, 1.5 * kPi, 2.0 * kPi}}};
+    } else {
+        const double rm = areaRadius(r0, r1, 0.5), pm = phiAt(0.5);
+        const std::array<std::array<double, 4>, 4> grid = {
+            {{r0, rm, phi0, pm}, {rm, r1, phi0, pm}, {r0, rm, pm, phi1}, {rm, r1, pm, phi1}}};
+        const double p1 = phiAt(0.25), p3 = phiAt(0.75);
+        const std::array<std::array<double, 4>, 4> wedges = {
+            {{r0, r1, phi0, p1}, {r0, r1, p1, pm}, {r0, r1, pm, p3}, {r0, r1, p3, phi1}}};
+        const double q1 = areaRadius(r0, r1, 0.25), q3 = areaRadius(r0, r1, 0.75);
+        const std::array<std::array<double, 4>, 4> rings = {
+            {{r0, q1, phi0, phi1}, {q1, rm, phi0, phi1}, {rm, q3, phi0, phi1}, {q3, r1, phi0, phi1}}};
+        const auto worst = [](const std::array<std::array<double, 4>, 4>& set) {
+            double w = 0.0;
+            for (const auto& d : set) w = std::max(w, aspect(d[0], d[1], d[2], d[3]));
+            return w;
+        };
+        const double g = worst(grid), w = worst(wedges), r = worst(rings);
+        pieces = (g <= w && g <= r) ? grid : (w <= r ? wedges : rings);
+    }
+    return pieces;
+}
+
 }  // namespace
 
 LightBeams::LightBeams(const LightModel& model, const Vec3& apex, double tMin)
@@ -174,7 +206,7 @@ LightPiece LightBeams::make(double a0, double b0, double a1, double b1, int leve
     return p;
 }
 
-LightBeams::AngleCache::Trig LightBeams::AngleCache::of(double phi) {
+DiscPieceTable::Trig DiscPieceTable::AngleCache::of(double phi) {
     for (int i = 0; i < count; ++i)
         if (entries[i].phi == phi) return entries[i].trig;
     const Trig t{std::cos(phi), std::sin(phi)};
@@ -182,24 +214,48 @@ LightBeams::AngleCache::Trig LightBeams::AngleCache::of(double phi) {
     return t;
 }
 
-Vec3 LightBeams::discDirection(double r, const AngleCache::Trig& t) const {
+DiscPieceTable::Piece DiscPieceTable::piece(double r0, double r1, double phi0, double phi1, AngleCache& angles) {
+    return {r0, r1, phi0, phi1, areaRadius(r0, r1, 0.5), angles.of(0.5 * (phi0 + phi1)), angles.of(phi0),
+            angles.of(phi1)};
+}
+
+DiscPieceTable::DiscPieceTable() {
+    AngleCache none;
+    pieces_.push_back(piece(0.0, 1.0, 0.0, 2.0 * kPi, none));
+    for (int level = 0; level < kLevels; ++level) {
+        const std::size_t first = ((std::size_t(1) << (2 * level)) - 1) / 3;
+        const std::size_t count = std::size_t(1) << (2 * level);
+        for (std::size_t i = first; i < first + count; ++i) {
+            const Piece parent = pieces_[i];
+            const auto children = discChildren(level, parent.r0, parent.r1, parent.phi0, parent.phi1);
+            AngleCache angles;
+            for (const auto& c : children) pieces_.push_back(piece(c[0], c[1], c[2], c[3], angles));
+        }
+    }
+}
+
+const DiscPieceTable& discPieceTable() {
+    static const DiscPieceTable table;
+    return table;
+}
+
+Vec3 LightBeams::discDirection(double r, const DiscPieceTable::Trig& t) const {
     return glm::normalize(discOffset(r, t));
 }
 
-Vec3 LightBeams::discOffset(double r, const AngleCache::Trig& t) const {
+Vec3 LightBeams::discOffset(double r, const DiscPieceTable::Trig& t) const {
     return frame_.toWorld(tanAlpha_ * r * t.c, tanAlpha_ * r * t.s, 1.0);
 }
 
-LightPiece LightBeams::makeDiscPiece(double r0, double phi0, double r1, double phi1, int level,
-                                     std::uint64_t path, bool cone, AngleCache& angles) const {
-    LightPiece p{r0, phi0, r1, phi1, level, path, {}, {}};
-    const Vec3 dir = discDirection(areaRadius(r0, r1, 0.5), angles.of(0.5 * (phi0 + phi1)));
+LightPiece LightBeams::makeDiscPiece(const DiscPieceTable::Piece& d, int level, std::uint64_t path, bool cone) const {
+    LightPiece p{d.r0, d.phi0, d.r1, d.phi1, level, path, {}, {}};
+    const Vec3 dir = discDirection(d.rc, d.central);
     p.central = {Ray{apex_, dir}, sphereDistance(dir)};
     if (!cone) return p;
-    const AngleCache::Trig t0 = angles.of(phi0), t1 = angles.of(phi1);
     // Unnormalised: coneAbout needs no unit directions.
-    const Vec3 corners[4] = {discOffset(r0, t0), discOffset(r0, t1), discOffset(r1, t0), discOffset(r1, t1)};
-    p.cone = coneAbout(dir, corners, 4, sphereDistanceAtRadius(r1, 1.0), p.tanHalf);
+    const Vec3 corners[4] = {discOffset(d.r0, d.at0), discOffset(d.r0, d.at1), discOffset(d.r1, d.at0),
+                             discOffset(d.r1, d.at1)};
+    p.cone = coneAbout(dir, corners, 4, sphereDistanceAtRadius(d.r1, 1.0), p.tanHalf);
     return p;
 }
 
@@ -245,39 +301,22 @@ int LightBeams::split(const LightPiece& p, LightPiece* out, bool cones) const {
             return 2;
         }
         case LightShape::Sphere: {
-            // The equal-area pieces of geometry/beam_sphere.cpp: the disc's
-            // quadrants, then 2 x 2, 1 x 4 or 4 x 1 in r^2 and phi, whichever
-            // leaves the pieces closest to square.
-            std::array<std::array<double, 4>, 4> pieces;  // r0, r1, phi0, phi1
-            const double r0 = p.a0, r1 = p.a1, phi0 = p.b0, phi1 = p.b1;
-            const auto phiAt = [&](double f) { return phi0 + f * (phi1 - phi0); };
-            if (p.level == 0) {
-                pieces = {{{0.0, 1.0, 0.0, 0.5 * kPi}, {0.0, 1.0, 0.5 * kPi, kPi},
-                           {0.0, 1.0, kPi, 1.5 * kPi}, {0.0, 1.0, 1.5 * kPi, 2.0 * kPi}}};
-            } else {
-                const double rm = areaRadius(r0, r1, 0.5), pm = phiAt(0.5);
-                const std::array<std::array<double, 4>, 4> grid = {
-                    {{r0, rm, phi0, pm}, {rm, r1, phi0, pm}, {r0, rm, pm, phi1}, {rm, r1, pm, phi1}}};
-                const double p1 = phiAt(0.25), p3 = phiAt(0.75);
-                const std::array<std::array<double, 4>, 4> wedges = {
-                    {{r0, r1, phi0, p1}, {r0, r1, p1, pm}, {r0, r1, pm, p3}, {r0, r1, p3, phi1}}};
-                const double q1 = areaRadius(r0, r1, 0.25), q3 = areaRadius(r0, r1, 0.75);
-                const std::array<std::array<double, 4>, 4> rings = {
-                    {{r0, q1, phi0, phi1}, {q1, rm, phi0, phi1}, {rm, q3, phi0, phi1}, {q3, r1, phi0, phi1}}};
-                const auto worst = [](const std::array<std::array<double, 4>, 4>& set) {
-                    double w = 0.0;
-                    for (const auto& d : set) w = std::max(w, aspect(d[0], d[1], d[2], d[3]));
-                    return w;
-                };
-                const double g = worst(grid), w = worst(wedges), r = worst(rings);
-                pieces = (g <= w && g <= r) ? grid : (w <= r ? wedges : rings);
+            // The layout of the disc's pieces does not depend on the apex:
+            // the first levels are made once (discPieceTable).
+            const DiscPieceTable& table = discPieceTable();
+            if (const DiscPieceTable::Piece* d = table.children(p.level, p.path)) {
+                for (int q = 0; q < 4; ++q)
+                    out[q] = makeDiscPiece(d[q], level, 4 * p.path + std::uint64_t(q), cones);
+                return 4;
             }
+            const std::array<std::array<double, 4>, 4> pieces = discChildren(p.level, p.a0, p.a1, p.b0, p.b1);
             // Neighbouring pieces share their edges' angles (bitwise): each
             // angle's cosine and sine is computed once.
-            AngleCache angles;
+            DiscPieceTable::AngleCache angles;
             for (int q = 0; q < 4; ++q)
-                out[q] = makeDiscPiece(pieces[q][0], pieces[q][2], pieces[q][1], pieces[q][3], level,
-                                       4 * p.path + std::uint64_t(q), cones, angles);
+                out[q] = makeDiscPiece(DiscPieceTable::piece(pieces[q][0], pieces[q][1], pieces[q][2],
+                                                             pieces[q][3], angles),
+                                       level, 4 * p.path + std::uint64_t(q), cones);
             return 4;
         }
         case LightShape::Point: break;
