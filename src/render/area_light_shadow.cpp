@@ -109,13 +109,16 @@ public:
         rootItems.clear();
         const Cone rootCone = coneOf(root);
         const PreparedCone prepared(rootCone);
-        scene_.coneCandidates(rootCone, [&](std::uint32_t object) {
+        if (s_.beamCandidates.size() <= q_.lightIndex) s_.beamCandidates.resize(q_.lightIndex + 1);
+        s_.beamCandidates[q_.lightIndex].visit(scene_, rootCone, prepared, [&](std::uint32_t object) {
             if (scene_.object(object).noShadow) return;
             if (object == q_.shadedObject && !q_.shadedCanSelfShadow) return;
             ++c_.coneTests;
             const ConeClass k = scene_.primitive(object).classify(prepared);
             if (k.coverage != Coverage::Miss) rootItems.push_back({object, k});
         });
+        // In object order, wherever the candidates came from.
+        sortByObject(rootItems.data(), rootItems.data() + rootItems.size());
         c_.countShadowPyray(0);
         const auto rootCount = static_cast<std::uint32_t>(rootItems.size());
         switch (verdict(rootItems, 0, rootCount, root, rootCone)) {
@@ -167,11 +170,19 @@ public:
                 // MAX-beams need no detection: each is one point sample.
                 for (const Node& n : levelNodes) {
                     const int count = beams_.split(n.piece, children, false);
+                    for (int i = 0; i < count; ++i) pointSample(children[i], items, n.first, n.count);
+                }
+                break;
+            }
+            if (childLevel + 1 == settings.maxLevel && !detectionMayStop(childShare, settings.eps)) {
+                // (MAX-1)-beams undetected: their MAX-beams, each a point
+                // sample (docs/lights.md, "Detection where it pays").
+                LightPiece grandchildren[LightBeams::kMaxChildren];
+                for (const Node& n : levelNodes) {
+                    const int count = beams_.split(n.piece, children, false);
                     for (int i = 0; i < count; ++i) {
-                        c_.countShadowPyray(childLevel);
-                        const BeamRay ray = settings.jitter ? beams_.sample(children[i], randomPoint(children[i]))
-                                                            : children[i].central;
-                        if (!rayBlocked(ray, items, n.first, n.count, nullptr)) emit(ray, childShare);
+                        const int grandCount = beams_.split(children[i], grandchildren, false);
+                        for (int g = 0; g < grandCount; ++g) pointSample(grandchildren[g], items, n.first, n.count);
                     }
                 }
                 break;
@@ -222,6 +233,34 @@ public:
 
 private:
     enum class Verdict { Lit, Blocked, Marginal };
+
+    // A MAX-beam: one point sample, its central ray or with jitter a random
+    // ray inside it, decided against its parent's occluders. A ray below
+    // the surface's horizon would light nothing: it is not traced.
+    void pointSample(const LightPiece& piece, const std::vector<Item>& items, std::uint32_t first,
+                     std::uint32_t count) {
+        c_.countShadowPyray(piece.level);
+        const BeamRay ray = model_.asos.jitter ? beams_.sample(piece, randomPoint(piece)) : piece.central;
+        if (glm::dot(q_.normal, ray.ray.dir) < kPovEpsilon) return;
+        if (!rayBlocked(ray, items, first, count, nullptr)) emit(ray, beams_.share(piece.level));
+    }
+
+    // Whether the stopping rule could stop at the next level (of pieces each
+    // `childShare` of the light) if the children of this level's marginal
+    // beams were taken as marginal without detection: each counted for each
+    // occluder of its parent, without the single-edge halving. With n such
+    // children on an occluder, max(in, out) >= ceil(n / 2) whatever their
+    // central rays say. s_.tally holds this level's tally (in + out: the
+    // beams listing each occluder).
+    bool detectionMayStop(double childShare, double eps) const {
+        const int perSplit = beams_.shape() == LightShape::Segment ? 2 : 4;
+        double least = 0.0;
+        for (const SubdivisionTally::Entry& e : s_.tally.entries()) {
+            const int n = perSplit * (e.in + e.out);
+            least += double((n + 1) / 2) * childShare;
+        }
+        return least <= eps;
+    }
 
     // The piece's cone, its near end moved to the surface for an apex behind it.
     Cone coneOf(const LightPiece& piece) const {
@@ -313,10 +352,12 @@ private:
             return;
         }
         if (piece.level < model_.asos.maxLevel && 0.5 * differences > model_.asos.eps) {
+            // No cones: nothing is classified here. A child wholly below the
+            // horizon carries nothing (every probe's cosine is clamped to 0,
+            // and emit drops its central ray), as if it had been left out.
             LightPiece children[LightBeams::kMaxChildren];
-            const int count = beams_.split(piece, children);
-            for (int i = 0; i < count; ++i)
-                if (!belowHorizon(q_.normal, children[i])) refineLit(children[i]);
+            const int count = beams_.split(piece, children, false);
+            for (int i = 0; i < count; ++i) refineLit(children[i]);
             return;
         }
         const auto [centreWeight, probeWeight] = beams_.ruleWeights(piece);

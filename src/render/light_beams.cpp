@@ -19,6 +19,38 @@ double aspect(double r0, double r1, double phi0, double phi1) {
     return std::max(radial / arc, arc / radial);
 }
 
+// The children of a disc piece (r in [r0, r1], phi in [phi0, phi1]) at
+// `level`: the equal-area pieces of geometry/beam_sphere.cpp, as
+// {r0, r1, phi0, phi1} each.
+std::array<std::array<double, 4>, 4> discChildren(int level, double r0, double r1, double phi0, double phi1) {
+    // The disc's quadrants, then 2 x 2, 1 x 4 or 4 x 1 in r^2 and phi, whichever
+    // leaves the pieces closest to square.
+    std::array<std::array<double, 4>, 4> pieces;  // r0, r1, phi0, phi1
+    const auto phiAt = [&](double f) { return phi0 + f * (phi1 - phi0); };
+    if (level == 0) {
+        pieces = {{{0.0, 1.0, 0.0, 0.5 * kPi}, {0.0, 1.0, 0.5 * kPi, kPi},
+                   {0.0, 1.0, kPi, 1.5 * kPi}, {0.0, 1.0, 1.5 * kPi, 2.0 * kPi}}};
+    } else {
+        const double rm = areaRadius(r0, r1, 0.5), pm = phiAt(0.5);
+        const std::array<std::array<double, 4>, 4> grid = {
+            {{r0, rm, phi0, pm}, {rm, r1, phi0, pm}, {r0, rm, pm, phi1}, {rm, r1, pm, phi1}}};
+        const double p1 = phiAt(0.25), p3 = phiAt(0.75);
+        const std::array<std::array<double, 4>, 4> wedges = {
+            {{r0, r1, phi0, p1}, {r0, r1, p1, pm}, {r0, r1, pm, p3}, {r0, r1, p3, phi1}}};
+        const double q1 = areaRadius(r0, r1, 0.25), q3 = areaRadius(r0, r1, 0.75);
+        const std::array<std::array<double, 4>, 4> rings = {
+            {{r0, q1, phi0, phi1}, {q1, rm, phi0, phi1}, {rm, q3, phi0, phi1}, {q3, r1, phi0, phi1}}};
+        const auto worst = [](const std::array<std::array<double, 4>, 4>& set) {
+            double w = 0.0;
+            for (const auto& d : set) w = std::max(w, aspect(d[0], d[1], d[2], d[3]));
+            return w;
+        };
+        const double g = worst(grid), w = worst(wedges), r = worst(rings);
+        pieces = (g <= w && g <= r) ? grid : (w <= r ? wedges : rings);
+    }
+    return pieces;
+}
+
 }  // namespace
 
 LightBeams::LightBeams(const LightModel& model, const Vec3& apex, double tMin)
@@ -72,10 +104,6 @@ LightBeams::LightBeams(const LightModel& model, const Vec3& apex, double tMin)
     }
 }
 
-double LightBeams::share(int level) const {
-    return shape_ == LightShape::Segment ? std::ldexp(1.0, -level) : std::ldexp(1.0, -2 * level);
-}
-
 BeamRay LightBeams::toward(const Vec3& target) const {
     const Vec3 offset = target - apex_;
     const double distance = glm::length(offset);
@@ -108,19 +136,24 @@ double LightBeams::sphereDistanceAtRadius(double r, double widen) const {
 
 Cone LightBeams::coneAbout(const Vec3& axis, const Vec3* directions, int count, double farthest,
                            double& tanHalf) const {
-    // The widest direction by the tangent of its angle: one arctangent.
-    double widest = 0.0;
+    // The widest direction by the tangent of its angle, from directions of
+    // any length (the tangent |d x axis| / (d . axis) does not depend on it):
+    // no normalisation, one square root and one arctangent.
+    double widest2 = 0.0;
     bool hemisphere = true;
     for (int i = 0; i < count; ++i) {
         const double along = glm::dot(directions[i], axis);
-        if (!(along > 1e-6)) {
+        // along > 1e-6 |d|: within a right angle of the axis, with margin.
+        if (!(along > 0.0) || !(along * along > 1e-12 * glm::dot(directions[i], directions[i]))) {
             hemisphere = false;
             break;
         }
-        widest = std::max(widest, glm::length(glm::cross(directions[i], axis)) / along);
+        const Vec3 off = glm::cross(directions[i], axis);
+        widest2 = std::max(widest2, glm::dot(off, off) / (along * along));
     }
     // A piece reaching a right angle from its central ray has no convex cone
     // about it: the cone of all directions holds it.
+    const double widest = std::sqrt(widest2);
     const double halfAngle = hemisphere ? std::atan(widest) + kConeAnglePad : kPi;
     tanHalf = hemisphere ? widest : std::numeric_limits<double>::quiet_NaN();
     return {apex_, axis, halfAngle, tMin_, farthest * (1.0 + 1e-12)};
@@ -133,16 +166,11 @@ LightPiece LightBeams::make(double a0, double b0, double a1, double b1, int leve
         case LightShape::Rectangle: {
             p.central = toward(rectPoint(0.5 * (a0 + a1), 0.5 * (b0 + b1)));
             if (!cone) break;
-            const Vec3 corners[4] = {rectPoint(a0, b0), rectPoint(a1, b0), rectPoint(a1, b1), rectPoint(a0, b1)};
-            Vec3 dirs[4];
-            double farthest = 0.0;
-            for (int i = 0; i < 4; ++i) {
-                const Vec3 d = corners[i] - apex_;
-                const double l = glm::length(d);
-                farthest = std::max(farthest, l);
-                dirs[i] = d / l;
-            }
-            p.cone = coneAbout(p.central.ray.dir, dirs, 4, farthest, p.tanHalf);
+            const Vec3 dirs[4] = {rectPoint(a0, b0) - apex_, rectPoint(a1, b0) - apex_, rectPoint(a1, b1) - apex_,
+                                  rectPoint(a0, b1) - apex_};
+            double farthest2 = 0.0;
+            for (const Vec3& d : dirs) farthest2 = std::max(farthest2, glm::dot(d, d));
+            p.cone = coneAbout(p.central.ray.dir, dirs, 4, std::sqrt(farthest2), p.tanHalf);
             break;
         }
         case LightShape::Segment: {
@@ -178,7 +206,7 @@ LightPiece LightBeams::make(double a0, double b0, double a1, double b1, int leve
     return p;
 }
 
-LightBeams::AngleCache::Trig LightBeams::AngleCache::of(double phi) {
+DiscPieceTable::Trig DiscPieceTable::AngleCache::of(double phi) {
     for (int i = 0; i < count; ++i)
         if (entries[i].phi == phi) return entries[i].trig;
     const Trig t{std::cos(phi), std::sin(phi)};
@@ -186,20 +214,48 @@ LightBeams::AngleCache::Trig LightBeams::AngleCache::of(double phi) {
     return t;
 }
 
-Vec3 LightBeams::discDirection(double r, const AngleCache::Trig& t) const {
-    return glm::normalize(frame_.toWorld(tanAlpha_ * r * t.c, tanAlpha_ * r * t.s, 1.0));
+DiscPieceTable::Piece DiscPieceTable::piece(double r0, double r1, double phi0, double phi1, AngleCache& angles) {
+    return {r0, r1, phi0, phi1, areaRadius(r0, r1, 0.5), angles.of(0.5 * (phi0 + phi1)), angles.of(phi0),
+            angles.of(phi1)};
 }
 
-LightPiece LightBeams::makeDiscPiece(double r0, double phi0, double r1, double phi1, int level,
-                                     std::uint64_t path, bool cone, AngleCache& angles) const {
-    LightPiece p{r0, phi0, r1, phi1, level, path, {}, {}};
-    const Vec3 dir = discDirection(areaRadius(r0, r1, 0.5), angles.of(0.5 * (phi0 + phi1)));
+DiscPieceTable::DiscPieceTable() {
+    AngleCache none;
+    pieces_.push_back(piece(0.0, 1.0, 0.0, 2.0 * kPi, none));
+    for (int level = 0; level < kLevels; ++level) {
+        const std::size_t first = ((std::size_t(1) << (2 * level)) - 1) / 3;
+        const std::size_t count = std::size_t(1) << (2 * level);
+        for (std::size_t i = first; i < first + count; ++i) {
+            const Piece parent = pieces_[i];
+            const auto children = discChildren(level, parent.r0, parent.r1, parent.phi0, parent.phi1);
+            AngleCache angles;
+            for (const auto& c : children) pieces_.push_back(piece(c[0], c[1], c[2], c[3], angles));
+        }
+    }
+}
+
+const DiscPieceTable& discPieceTable() {
+    static const DiscPieceTable table;
+    return table;
+}
+
+Vec3 LightBeams::discDirection(double r, const DiscPieceTable::Trig& t) const {
+    return glm::normalize(discOffset(r, t));
+}
+
+Vec3 LightBeams::discOffset(double r, const DiscPieceTable::Trig& t) const {
+    return frame_.toWorld(tanAlpha_ * r * t.c, tanAlpha_ * r * t.s, 1.0);
+}
+
+LightPiece LightBeams::makeDiscPiece(const DiscPieceTable::Piece& d, int level, std::uint64_t path, bool cone) const {
+    LightPiece p{d.r0, d.phi0, d.r1, d.phi1, level, path, {}, {}};
+    const Vec3 dir = discDirection(d.rc, d.central);
     p.central = {Ray{apex_, dir}, sphereDistance(dir)};
     if (!cone) return p;
-    const AngleCache::Trig t0 = angles.of(phi0), t1 = angles.of(phi1);
-    const Vec3 corners[4] = {discDirection(r0, t0), discDirection(r0, t1), discDirection(r1, t0),
-                             discDirection(r1, t1)};
-    p.cone = coneAbout(dir, corners, 4, sphereDistanceAtRadius(r1, 1.0), p.tanHalf);
+    // Unnormalised: coneAbout needs no unit directions.
+    const Vec3 corners[4] = {discOffset(d.r0, d.at0), discOffset(d.r0, d.at1), discOffset(d.r1, d.at0),
+                             discOffset(d.r1, d.at1)};
+    p.cone = coneAbout(dir, corners, 4, sphereDistanceAtRadius(d.r1, 1.0), p.tanHalf);
     return p;
 }
 
@@ -209,17 +265,16 @@ LightPiece LightBeams::root() const {
 
 int LightBeams::splitRectangle(const LightPiece& p, LightPiece* out, bool cones) const {
     // The quarters share the nine points of a 3 x 3 lattice over the piece:
-    // each is made and normalised once.
+    // each is made once (unnormalised: coneAbout needs no unit directions).
     const double s[3] = {p.a0, 0.5 * (p.a0 + p.a1), p.a1};
     const double t[3] = {p.b0, 0.5 * (p.b0 + p.b1), p.b1};
     Vec3 dirs[3][3];
-    double lengths[3][3];
+    double lengths2[3][3];
     if (cones)
         for (int j = 0; j < 3; ++j)
             for (int i = 0; i < 3; ++i) {
-                const Vec3 d = rectPoint(s[i], t[j]) - apex_;
-                lengths[j][i] = glm::length(d);
-                dirs[j][i] = d / lengths[j][i];
+                dirs[j][i] = rectPoint(s[i], t[j]) - apex_;
+                lengths2[j][i] = glm::dot(dirs[j][i], dirs[j][i]);
             }
     for (int q = 0; q < 4; ++q) {
         const int i = q & 1, j = q >> 1;
@@ -228,9 +283,9 @@ int LightBeams::splitRectangle(const LightPiece& p, LightPiece* out, bool cones)
         c.central = toward(rectPoint(0.5 * (s[i] + s[i + 1]), 0.5 * (t[j] + t[j + 1])));
         if (!cones) continue;
         const Vec3 corners[4] = {dirs[j][i], dirs[j][i + 1], dirs[j + 1][i + 1], dirs[j + 1][i]};
-        const double farthest = std::max(std::max(lengths[j][i], lengths[j][i + 1]),
-                                         std::max(lengths[j + 1][i + 1], lengths[j + 1][i]));
-        c.cone = coneAbout(c.central.ray.dir, corners, 4, farthest, c.tanHalf);
+        const double farthest2 = std::max(std::max(lengths2[j][i], lengths2[j][i + 1]),
+                                          std::max(lengths2[j + 1][i + 1], lengths2[j + 1][i]));
+        c.cone = coneAbout(c.central.ray.dir, corners, 4, std::sqrt(farthest2), c.tanHalf);
     }
     return 4;
 }
@@ -246,39 +301,22 @@ int LightBeams::split(const LightPiece& p, LightPiece* out, bool cones) const {
             return 2;
         }
         case LightShape::Sphere: {
-            // The equal-area pieces of geometry/beam_sphere.cpp: the disc's
-            // quadrants, then 2 x 2, 1 x 4 or 4 x 1 in r^2 and phi, whichever
-            // leaves the pieces closest to square.
-            std::array<std::array<double, 4>, 4> pieces;  // r0, r1, phi0, phi1
-            const double r0 = p.a0, r1 = p.a1, phi0 = p.b0, phi1 = p.b1;
-            const auto phiAt = [&](double f) { return phi0 + f * (phi1 - phi0); };
-            if (p.level == 0) {
-                pieces = {{{0.0, 1.0, 0.0, 0.5 * kPi}, {0.0, 1.0, 0.5 * kPi, kPi},
-                           {0.0, 1.0, kPi, 1.5 * kPi}, {0.0, 1.0, 1.5 * kPi, 2.0 * kPi}}};
-            } else {
-                const double rm = areaRadius(r0, r1, 0.5), pm = phiAt(0.5);
-                const std::array<std::array<double, 4>, 4> grid = {
-                    {{r0, rm, phi0, pm}, {rm, r1, phi0, pm}, {r0, rm, pm, phi1}, {rm, r1, pm, phi1}}};
-                const double p1 = phiAt(0.25), p3 = phiAt(0.75);
-                const std::array<std::array<double, 4>, 4> wedges = {
-                    {{r0, r1, phi0, p1}, {r0, r1, p1, pm}, {r0, r1, pm, p3}, {r0, r1, p3, phi1}}};
-                const double q1 = areaRadius(r0, r1, 0.25), q3 = areaRadius(r0, r1, 0.75);
-                const std::array<std::array<double, 4>, 4> rings = {
-                    {{r0, q1, phi0, phi1}, {q1, rm, phi0, phi1}, {rm, q3, phi0, phi1}, {q3, r1, phi0, phi1}}};
-                const auto worst = [](const std::array<std::array<double, 4>, 4>& set) {
-                    double w = 0.0;
-                    for (const auto& d : set) w = std::max(w, aspect(d[0], d[1], d[2], d[3]));
-                    return w;
-                };
-                const double g = worst(grid), w = worst(wedges), r = worst(rings);
-                pieces = (g <= w && g <= r) ? grid : (w <= r ? wedges : rings);
+            // The layout of the disc's pieces does not depend on the apex:
+            // the first levels are made once (discPieceTable).
+            const DiscPieceTable& table = discPieceTable();
+            if (const DiscPieceTable::Piece* d = table.children(p.level, p.path)) {
+                for (int q = 0; q < 4; ++q)
+                    out[q] = makeDiscPiece(d[q], level, 4 * p.path + std::uint64_t(q), cones);
+                return 4;
             }
+            const std::array<std::array<double, 4>, 4> pieces = discChildren(p.level, p.a0, p.a1, p.b0, p.b1);
             // Neighbouring pieces share their edges' angles (bitwise): each
             // angle's cosine and sine is computed once.
-            AngleCache angles;
+            DiscPieceTable::AngleCache angles;
             for (int q = 0; q < 4; ++q)
-                out[q] = makeDiscPiece(pieces[q][0], pieces[q][2], pieces[q][1], pieces[q][3], level,
-                                       4 * p.path + std::uint64_t(q), cones, angles);
+                out[q] = makeDiscPiece(DiscPieceTable::piece(pieces[q][0], pieces[q][1], pieces[q][2],
+                                                             pieces[q][3], angles),
+                                       level, 4 * p.path + std::uint64_t(q), cones);
             return 4;
         }
         case LightShape::Point: break;

@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "asos/geometry/cone.hpp"
+#include "asos/render/cone_candidates.hpp"
 #include "asos/render/light_beams.hpp"
 #include "asos/render/light_model.hpp"
 #include "asos/render/point_light_shadow.hpp"
@@ -44,6 +45,7 @@ struct AreaLightScratch {
     std::vector<double> gridWeights;        // grid: per lattice point, its weight
     std::vector<std::int8_t> gridState;     // grid: per lattice point, -1 unknown, 0 blocked, 1 lit
     SubdivisionTally tally;
+    std::vector<BeamCandidateCache> beamCandidates;  // per light: the objects near the last beams
 };
 
 // What the random numbers, the footprint and the buffers of one shading

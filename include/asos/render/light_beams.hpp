@@ -13,10 +13,12 @@
 // rays lie within it and the cone is convex (half-angle below pi/2); for a
 // sphere piece, because the central ray lies within the piece's angular
 // range (docs/accel.md, "Sphere pieces").
+#include <bit>
 #include <cstdint>
 #include <limits>
 #include <optional>
 #include <utility>
+#include <vector>
 
 #include "asos/geometry/beam.hpp"
 #include "asos/render/light_model.hpp"
@@ -39,6 +41,48 @@ struct LightPiece {
     // below level 0); NaN otherwise. Spares its users the trigonometry.
     double tanHalf = std::numeric_limits<double>::quiet_NaN();
 };
+
+// The pieces of a sphere light's apparent disc in the disc's own coordinates
+// (radius r in [0, 1], angle phi): their layout does not depend on the point,
+// so the first levels are made once (discPieceTable()), with the cosines and
+// sines of their angles; deeper pieces are made as they are needed.
+class DiscPieceTable {
+public:
+    struct Trig {
+        double c, s;
+    };
+    struct Piece {
+        double r0, r1, phi0, phi1;
+        double rc;                // the central radius (the median of the area)
+        Trig central, at0, at1;   // of the central angle, phi0 and phi1
+    };
+    // Cosines and sines of the few angles of one split, each computed once.
+    struct AngleCache {
+        static constexpr int kSize = 12;
+        struct Entry {
+            double phi;
+            Trig trig;
+        };
+        Entry entries[kSize];
+        int count = 0;
+        Trig of(double phi);
+    };
+    static Piece piece(double r0, double r1, double phi0, double phi1, AngleCache& angles);
+
+    static constexpr int kLevels = 5;  // 1365 pieces
+    DiscPieceTable();
+    // The four children of piece `path` at `level`, or null past the table.
+    const Piece* children(int level, std::uint64_t path) const {
+        if (level + 1 > kLevels) return nullptr;
+        return &pieces_[(((std::size_t(1) << (2 * (level + 1))) - 1) / 3) + 4 * path];
+    }
+
+private:
+    std::vector<Piece> pieces_;  // level by level, each level in path order
+};
+
+// The one table, made on first use and constant after.
+const DiscPieceTable& discPieceTable();
 
 class LightBeams {
 public:
@@ -63,7 +107,11 @@ public:
     // first), uniform over the piece's area (length, disc area).
     BeamRay sample(const LightPiece& piece, const Vec2& xi) const;
     // The piece's share of the light: 4^-level (2^-level for a segment).
-    double share(int level) const;
+    // Inline and without a library call: it is asked for every sample.
+    double share(int level) const {
+        const int exponent = shape_ == LightShape::Segment ? level : 2 * level;
+        return exponent < 1000 ? std::bit_cast<double>(std::uint64_t(1023 - exponent) << 52) : 0.0;
+    }
     // No ray of the piece reaches the light nearer than this.
     double nearestLightDistance(const LightPiece& piece) const;
     // Pairs of rays across the piece through its central point, one pair per
@@ -94,26 +142,14 @@ private:
     int splitRectangle(const LightPiece& piece, LightPiece* out, bool cones) const;
     Vec3 rectPoint(double s, double t) const { return corner_ + s * edgeA_ + t * edgeB_; }
     Vec3 discDirection(double r, double phi) const;
-    // Cosines and sines of the few angles of one split, each computed once.
-    struct AngleCache {
-        struct Trig {
-            double c, s;
-        };
-        static constexpr int kSize = 12;
-        struct Entry {
-            double phi;
-            Trig trig;
-        };
-        Entry entries[kSize];
-        int count = 0;
-        Trig of(double phi);
-    };
-    Vec3 discDirection(double r, const AngleCache::Trig& t) const;
-    LightPiece makeDiscPiece(double r0, double phi0, double r1, double phi1, int level, std::uint64_t path,
-                             bool cone, AngleCache& angles) const;
+    Vec3 discDirection(double r, const DiscPieceTable::Trig& t) const;
+    Vec3 discOffset(double r, const DiscPieceTable::Trig& t) const;  // the same, not normalised
+    LightPiece makeDiscPiece(const DiscPieceTable::Piece& d, int level, std::uint64_t path, bool cone) const;
     double sphereDistance(const Vec3& dir) const;
     double sphereDistanceAtRadius(double r, double widen) const;
     BeamRay toward(const Vec3& target) const;
+    // The cone about unit `axis` through the widest of `directions` (of any
+    // length), reaching `farthest`.
     Cone coneAbout(const Vec3& axis, const Vec3* directions, int count, double farthest,
                    double& tanHalf) const;
 
