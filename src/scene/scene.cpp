@@ -63,47 +63,62 @@ std::unique_ptr<Scene> Scene::build(SceneDescription description, Diagnostics& d
     return scene;
 }
 
-namespace {
-// A candidate of the nearest-hit search: the world record is made for the
-// winner only (Primitive::surfaceHit), not for every hit it replaces.
-struct Candidate {
-    double t;
-    std::uint32_t slot;
-    LocalHit local;
-};
-}  // namespace
+std::optional<LocalHit> Scene::intersectSlot(std::uint32_t slot, const Ray& ray, double tMin,
+                                             double tMax) const {
+    return primitives_[slot].intersectLocal(ray, tMin, tMax);
+}
 
 std::optional<SurfaceHit> Scene::intersect(const Ray& ray, double tMin, double tMax) const {
-    std::optional<Candidate> best;
+    // The search keeps the nearest candidate's slot and local hit; the world
+    // record (Primitive::surfaceHit) is made for the winner only. A leaf
+    // sphere keeps only its t: its local hit is made once, at the end.
+    constexpr std::uint32_t kNone = ~0u;
+    std::uint32_t bestSlot = kNone;
+    bool bestIsLeafSphere = false;
+    LocalHit bestLocal;
     for (std::uint32_t slot = 0; slot < unbounded_.size(); ++slot) {
         if (auto hit = primitives_[slot].intersectLocal(ray, tMin, tMax)) {
             tMax = hit->t;
-            best = Candidate{hit->t, slot, *hit};
+            bestSlot = slot;
+            bestLocal = *hit;
         }
     }
     // The BVH's items sit at slots base + leaf slot (Scene::build).
     const auto base = static_cast<std::uint32_t>(unbounded_.size());
     double far = tMax;
-    bvh_.traverse<true>(ray, tMin, tMax, [&](std::uint32_t first, std::uint32_t count) {
+    // Inlined into the traversal loop: an out-of-line call there would save
+    // and restore the loop's vector registers at every leaf.
+    const auto leaf = [&](std::uint32_t first, std::uint32_t count) __attribute__((always_inline)) {
         for (std::uint32_t k = first; k < first + count; ++k) {
             const TranslatedSphere& sphere = leafSpheres_[k];
-            std::optional<LocalHit> hit;
             if (sphere.radius >= 0.0) {
-                hit = Sphere::intersect(Ray{ray.origin + sphere.localOffset, ray.dir},
-                                        sphere.radius, tMin, far);
-            } else {
-                hit = primitives_[base + k].intersectLocal(ray, tMin, far);
-            }
-            if (hit && hit->t >= tMin && hit->t <= far) {
+                const double t = Sphere::nearestRoot(Ray{ray.origin + sphere.localOffset, ray.dir},
+                                                     sphere.radius, tMin, far);
+                if (t >= tMin && t <= far) {
+                    far = t;
+                    bestSlot = base + k;
+                    bestIsLeafSphere = true;
+                }
+            } else if (const auto hit = intersectSlot(base + k, ray, tMin, far);
+                       hit && hit->t >= tMin && hit->t <= far) {
                 far = hit->t;
-                best = Candidate{hit->t, base + k, *hit};
+                bestSlot = base + k;
+                bestIsLeafSphere = false;
+                bestLocal = *hit;
             }
         }
         return far;
-    });
-    if (!best) return std::nullopt;
-    SurfaceHit hit = primitives_[best->slot].surfaceHit(ray, best->local);
-    hit.objectIndex = static_cast<int>(objectOf_[best->slot]);
+    };
+    bvh_.traverse<true>(ray, tMin, tMax, leaf);
+    if (bestSlot == kNone) return std::nullopt;
+    if (bestIsLeafSphere) {
+        // Sphere::intersect's hit, from the same ray and t.
+        const Ray local{ray.origin + leafSpheres_[bestSlot - base].localOffset, ray.dir};
+        const Vec3 p = local.at(far);
+        bestLocal = LocalHit{far, p, p};
+    }
+    SurfaceHit hit = primitives_[bestSlot].surfaceHit(ray, bestLocal);
+    hit.objectIndex = static_cast<int>(objectOf_[bestSlot]);
     return hit;
 }
 
@@ -112,7 +127,7 @@ bool Scene::occluded(const Ray& ray, double tMin, double tMax) const {
         if (castsShadow_[slot] && primitives_[slot].intersectAny(ray, tMin, tMax)) return true;
     const auto base = static_cast<std::uint32_t>(unbounded_.size());
     bool found = false;
-    bvh_.traverse<false>(ray, tMin, tMax, [&](std::uint32_t first, std::uint32_t count) {
+    const auto leaf = [&](std::uint32_t first, std::uint32_t count) __attribute__((always_inline)) {
         for (std::uint32_t k = first; k < first + count; ++k) {
             if (!castsShadow_[base + k]) continue;
             const TranslatedSphere& sphere = leafSpheres_[k];
@@ -126,7 +141,8 @@ bool Scene::occluded(const Ray& ray, double tMin, double tMax) const {
             }
         }
         return tMax;
-    });
+    };
+    bvh_.traverse<false>(ray, tMin, tMax, leaf);
     return found;
 }
 

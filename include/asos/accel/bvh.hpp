@@ -73,6 +73,14 @@ inline float roundDownToFloat(double x) {
     const float f = static_cast<float>(x);
     return static_cast<double>(f) > x ? nextFloatDown(f) : f;
 }
+// roundUpToFloat for the far limits of a search (x >= 0, or +inf): the float
+// after a finite f >= 0 is the next bit pattern, so no special cases.
+inline float roundUpToFloatNonNegative(double x) {
+    if (!(x >= 0.0)) [[unlikely]] return roundUpToFloat(x);
+    const float f = static_cast<float>(x);
+    if (static_cast<double>(f) < x) return std::bit_cast<float>(std::bit_cast<std::uint32_t>(f) + 1);
+    return f;
+}
 
 // The float slab test is made conservative for a double ray (docs/accel.md):
 // the origin is moved a few float ulps toward the far side of each plane it is
@@ -100,22 +108,7 @@ struct RayPrep {
             const auto above = static_cast<float>(o + shift), below = static_cast<float>(o - shift);
             float nearInv, farInv, oN, oF;
             int side = std::signbit(d) ? 1 : 0;
-            if (d == 0.0) {
-                // Parallel: an infinite inverse gives -inf or +inf per plane;
-                // 0 * inf (NaN) can only occur for a plane strictly outside,
-                // where either answer is right.
-                nearInv = farInv = side ? -inf : inf;
-                oN = side ? below : above;
-                oF = side ? above : below;
-            } else if (std::abs(d) < 1e-30) {
-                // 1/d overflows a float: drop this axis's constraint
-                // (conservative; a unit direction has another, larger
-                // component that still culls).
-                side = 0;
-                nearInv = farInv = inf;
-                oN = inf;
-                oF = -inf;
-            } else {
+            if (std::abs(d) >= 1e-30) [[likely]] {
                 // One division: kFarScale * (1 / d) in double is within
                 // 2^-52 of kFarScale / d, far below the margin kFarScale leaves.
                 const double inv = 1.0 / d;
@@ -123,6 +116,21 @@ struct RayPrep {
                 farInv = static_cast<float>(kFarScale * inv);
                 oN = side ? below : above;
                 oF = side ? above : below;
+            } else if (d == 0.0) {
+                // Parallel: an infinite inverse gives -inf or +inf per plane;
+                // 0 * inf (NaN) can only occur for a plane strictly outside,
+                // where either answer is right.
+                nearInv = farInv = side ? -inf : inf;
+                oN = side ? below : above;
+                oF = side ? above : below;
+            } else {
+                // 1/d overflows a float (or d is NaN): drop this axis's
+                // constraint (conservative; a unit direction has another,
+                // larger component that still culls).
+                side = 0;
+                nearInv = farInv = inf;
+                oN = inf;
+                oF = -inf;
             }
             nearSide[i] = side;
             oNear[i] = Float4{oN, oN, oN, oN};
@@ -363,10 +371,14 @@ void Bvh::traverseOctant(const bvh_detail::RayPrep& prep, Leaf& leaf) const {
                 mask &= mask - 1;
                 if (mask == 0) {
                     // Two children, the common case: nearer one next.
-                    const bool swap = Ordered && lo[second] < lo[first];
-                    const int nearK = swap ? second : first, farK = swap ? first : second;
-                    stack[top++] = {node.child[farK], lo[farK]};
-                    ref = node.child[nearK];
+                    // Without a branch: which child is nearer is a coin
+                    // toss that a predictor would often get wrong.
+                    const std::uint32_t c0 = node.child[first], c1 = node.child[second];
+                    const float l0 = lo[first], l1 = lo[second];
+                    const std::uint32_t swap = Ordered ? 0u - static_cast<std::uint32_t>(l1 < l0) : 0u;
+                    const std::uint32_t flip = (c0 ^ c1) & swap;
+                    stack[top++] = {c1 ^ flip, Ordered ? std::max(l0, l1) : l1};
+                    ref = c0 ^ flip;
                     continue;
                 }
                 // Three or four: push all, sort the pushed entries farthest first.
@@ -395,7 +407,7 @@ void Bvh::traverseOctant(const bvh_detail::RayPrep& prep, Leaf& leaf) const {
         {
             const double next = leaf(leafFirst(ref), leafCount(ref));
             if (next < 0.0) return;
-            const float hiF = roundUpToFloat(next * kFarScale);
+            const float hiF = roundUpToFloatNonNegative(next * kFarScale);
             tHi = Float4{hiF, hiF, hiF, hiF};
             farLimit = hiF;
         }

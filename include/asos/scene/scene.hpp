@@ -40,6 +40,10 @@ public:
 
 private:
     Scene() = default;
+    // The generic item test of the ray search, out of line: the traversal
+    // loop inlines only the compact tests.
+    [[gnu::noinline]] std::optional<LocalHit> intersectSlot(std::uint32_t slot, const Ray& ray,
+                                                            double tMin, double tMax) const;
 
     SceneDescription description_;
     // The primitives are stored by slot: the unbounded ones first, then the

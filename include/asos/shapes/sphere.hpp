@@ -1,6 +1,7 @@
 #pragma once
 // POV-Ray's sphere, in a local frame centred on it.
 #include <cmath>
+#include <limits>
 #include <optional>
 #include <utility>
 
@@ -58,15 +59,21 @@ public:
     }
     static std::optional<LocalHit> intersect(const Ray& ray, double radius, double tMin,
                                              double tMax) {
-        if (!(radius > 0.0)) return std::nullopt;
-        const sphere_detail::Roots roots = sphere_detail::sphereRoots(ray, radius);
-        if (!roots.real) return std::nullopt;
-        double t;
-        if (roots.near >= tMin && roots.near <= tMax) t = roots.near;
-        else if (roots.far >= tMin && roots.far <= tMax) t = roots.far;
-        else return std::nullopt;
+        const double t = nearestRoot(ray, radius, tMin, tMax);
+        if (std::isnan(t)) return std::nullopt;
         const Vec3 p = ray.at(t);
         return LocalHit{t, p, p};
+    }
+    // The t of intersect's hit, or NaN when there is none: a nearest-hit
+    // search keeps only t and makes the hit (ray.at(t)) for the winner.
+    static double nearestRoot(const Ray& ray, double radius, double tMin, double tMax) {
+        constexpr double kNone = std::numeric_limits<double>::quiet_NaN();
+        if (!(radius > 0.0)) return kNone;
+        const sphere_detail::Roots roots = sphere_detail::sphereRoots(ray, radius);
+        if (!roots.real) return kNone;
+        if (roots.near >= tMin && roots.near <= tMax) return roots.near;
+        if (roots.far >= tMin && roots.far <= tMax) return roots.far;
+        return kNone;
     }
     static bool intersectAny(const Ray& ray, double radius, double tMin, double tMax) {
         if (!(radius > 0.0)) return false;
