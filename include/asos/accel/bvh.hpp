@@ -371,14 +371,10 @@ void Bvh::traverseOctant(const bvh_detail::RayPrep& prep, Leaf& leaf) const {
                 mask &= mask - 1;
                 if (mask == 0) {
                     // Two children, the common case: nearer one next.
-                    // Without a branch: which child is nearer is a coin
-                    // toss that a predictor would often get wrong.
-                    const std::uint32_t c0 = node.child[first], c1 = node.child[second];
-                    const float l0 = lo[first], l1 = lo[second];
-                    const std::uint32_t swap = Ordered ? 0u - static_cast<std::uint32_t>(l1 < l0) : 0u;
-                    const std::uint32_t flip = (c0 ^ c1) & swap;
-                    stack[top++] = {c1 ^ flip, Ordered ? std::max(l0, l1) : l1};
-                    ref = c0 ^ flip;
+                    const bool swap = Ordered && lo[second] < lo[first];
+                    const int nearK = swap ? second : first, farK = swap ? first : second;
+                    stack[top++] = {node.child[farK], lo[farK]};
+                    ref = node.child[nearK];
                     continue;
                 }
                 // Three or four: push all, sort the pushed entries farthest first.
