@@ -17,23 +17,20 @@ std::span<const LightSample> areaLightSamples(const Scene& scene, const SceneLig
     return mergeDiffuse(samples, scratch.merged);
 }
 
-std::span<const LightSample> mergeDiffuse(std::span<const LightSample> samples, LightSample& storage) {
-    // The colours are the light's colour times a weight each: weigh the
-    // directions by the colours' sum of channels (any one would do).
-    Vec3 sum(0.0), color(0.0);
-    double distance = 0.0, total = 0.0;
-    for (const LightSample& s : samples) {
-        const double w = s.color.x + s.color.y + s.color.z;
-        sum += w * s.direction;
-        color += s.color;
-        distance += w * s.distance;
-        total += w;
-    }
+std::optional<LightSample> DiffuseSum::merged() const {
     const double length = glm::length(sum);
-    if (!(length > 0.0) || !(total > 0.0)) return samples;
+    if (!(length > 0.0) || !(total > 0.0)) return std::nullopt;
     // |sum| / total of the colour: the merged sample's cosine times its
     // colour is the sum of the samples' cosines times their colours.
-    storage = {sum / length, distance / total, color * (length / total)};
+    return LightSample{sum / length, distance / total, color * (length / total)};
+}
+
+std::span<const LightSample> mergeDiffuse(std::span<const LightSample> samples, LightSample& storage) {
+    DiffuseSum total;
+    for (const LightSample& s : samples) total.add(s);
+    const std::optional<LightSample> merged = total.merged();
+    if (!merged) return samples;
+    storage = *merged;
     return {&storage, 1};
 }
 

@@ -166,25 +166,15 @@ public:
 
             const int childLevel = level + 1;
             const double childShare = beams_.share(childLevel);
-            if (childLevel >= settings.maxLevel) {
-                // MAX-beams need no detection: each is one point sample.
-                for (const Node& n : levelNodes) {
-                    const int count = beams_.split(n.piece, children, false);
-                    for (int i = 0; i < count; ++i) pointSample(children[i], items, n.first, n.count);
-                }
-                break;
-            }
-            if (childLevel + 1 == settings.maxLevel && !detectionMayStop(childShare, settings.eps)) {
-                // (MAX-1)-beams undetected: their MAX-beams, each a point
-                // sample (docs/lights.md, "Detection where it pays").
-                LightPiece grandchildren[LightBeams::kMaxChildren];
-                for (const Node& n : levelNodes) {
-                    const int count = beams_.split(n.piece, children, false);
-                    for (int i = 0; i < count; ++i) {
-                        const int grandCount = beams_.split(children[i], grandchildren, false);
-                        for (int g = 0; g < grandCount; ++g) pointSample(grandchildren[g], items, n.first, n.count);
-                    }
-                }
+            // MAX-beams need no detection: each is one point sample. Where
+            // detection does not pay, the levels down to MAX are left
+            // undetected too (docs/lights.md, "Detection where it pays").
+            const int toMax = settings.maxLevel - level;
+            if (toMax <= 1 || (toMax <= undetectedLevels() && !detectionMayStop(childShare, settings.eps))) {
+                for (const Node& n : levelNodes)
+                    beams_.forEachDescendant(n.piece, toMax, [&](const LightPiece& piece) {
+                        pointSample(piece, items, n.first, n.count);
+                    });
                 break;
             }
 
@@ -244,6 +234,12 @@ private:
         if (glm::dot(q_.normal, ray.ray.dir) < kPovEpsilon) return;
         if (!rayBlocked(ray, items, first, count, nullptr)) emit(ray, beams_.share(piece.level));
     }
+
+    // How many levels above MAX a marginal beam's descendants may be left
+    // undetected: as many as make 16 MAX-beams, whose point samples cost
+    // about as many rays as the detection of one or two levels of children
+    // costs in cone classifications (docs/lights.md).
+    int undetectedLevels() const { return beams_.shape() == LightShape::Segment ? 4 : 2; }
 
     // Whether the stopping rule could stop at the next level (of pieces each
     // `childShare` of the light) if the children of this level's marginal
@@ -321,7 +317,10 @@ private:
         const Vec3& dir = ray.ray.dir;
         if (glm::dot(q_.normal, dir) < kPovEpsilon) return;  // it would light nothing
         const double distance = ray.distance - origin_.surfaceDistance(dir);
-        s_.samples.push_back({dir, std::max(distance, 0.0), model_.color * (share * beams_.emission(dir))});
+        const LightSample sample{dir, std::max(distance, 0.0), model_.color * (share * beams_.emission(dir))};
+        // Diffuse only: summed as made (the same sum as mergeDiffuse's).
+        if (q_.diffuseOnly) s_.diffuseSum.add(sample);
+        else s_.samples.push_back(sample);
     }
 
     // How much of the diffuse light a direction carries: the emitter's
@@ -498,8 +497,19 @@ std::span<const LightSample> asosAreaLightSamples(const Scene& scene, const Ligh
             if (!(origin.depth > 0.0)) origin = Origin{query.point};
         }
     }
+    scratch.diffuseSum.clear();
     if (model.isArea()) BeamShadow(scene, model, query, origin, scratch, counters).run();
-    return scratch.samples;
+    if (!query.diffuseOnly) return scratch.samples;
+    // The samples were summed as they were made (BeamShadow::emit): the one
+    // sample that lights the point as all of them (mergeDiffuse), or none
+    // when they carry no light.
+    const DiffuseSum& sum = scratch.diffuseSum;
+    if (sum.count == 1) scratch.samples.push_back(sum.first);
+    if (sum.count < 2) return scratch.samples;
+    const std::optional<LightSample> merged = sum.merged();
+    if (!merged) return scratch.samples;
+    scratch.merged = *merged;
+    return {&scratch.merged, 1};
 }
 
 }  // namespace asos

@@ -178,11 +178,14 @@ LightPiece LightBeams::make(double a0, double b0, double a1, double b1, int leve
             if (!cone) break;
             const Vec3 d0 = corner_ + a0 * edgeA_ - apex_, d1 = corner_ + a1 * edgeA_ - apex_;
             const double l0 = glm::length(d0), l1 = glm::length(d1);
-            const Vec3 dirs[2] = {d0 / l0, d1 / l1};
+            const Vec3 u = d0 / l0, v = d1 / l1;
             // The bisector of the two end rays: the smallest cone of the
-            // triangle.
-            const Vec3 axis = glm::normalize(dirs[0] + dirs[1]);
-            p.cone = {apex_, axis, 0.5 * angleBetween(dirs[0], dirs[1]) + kConeAnglePad, tMin_,
+            // triangle. For unit u and v, tan(angle / 2) = |u - v| / |u + v|:
+            // one arctangent, and the tangent spares the cone's users theirs.
+            const Vec3 sum = u + v;
+            const double sumLength = glm::length(sum);
+            p.tanHalf = glm::length(u - v) / sumLength;
+            p.cone = {apex_, sum / sumLength, std::atan(p.tanHalf) + kConeAnglePad, tMin_,
                       std::max(l0, l1) * (1.0 + 1e-12)};
             break;
         }

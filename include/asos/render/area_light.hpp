@@ -8,6 +8,7 @@
 // the emitter weighting of docs/lights.md (cos theta for rectangles) when
 // nothing is in the way.
 #include <cstdint>
+#include <optional>
 #include <span>
 #include <vector>
 
@@ -22,6 +23,29 @@
 #include "asos/scene/scene.hpp"
 
 namespace asos {
+
+// The running sum of mergeDiffuse: samples added one by one, in order, give
+// bit for bit the sample mergeDiffuse makes of them all, without storing them.
+struct DiffuseSum {
+    Vec3 sum{0.0}, color{0.0};
+    double distance = 0.0, total = 0.0;
+    std::size_t count = 0;
+    LightSample first;  // the one sample, while there is one
+
+    void clear() { *this = DiffuseSum{}; }
+    void add(const LightSample& s) {
+        // The colours are the light's colour times a weight each: weigh the
+        // directions by the colours' sum of channels (any one would do).
+        const double w = s.color.x + s.color.y + s.color.z;
+        sum += w * s.direction;
+        color += s.color;
+        distance += w * s.distance;
+        total += w;
+        if (count++ == 0) first = s;
+    }
+    // The merged sample, or none when the samples carry no light.
+    std::optional<LightSample> merged() const;
+};
 
 // A marginal sub-beam awaiting the stopping decision of its level.
 struct AreaBeamNode {
@@ -41,6 +65,7 @@ struct AreaLightScratch {
     std::vector<AreaBeamNode> nodes[2];
     std::vector<LightSample> samples;       // the answer
     LightSample merged;                     // the answer, summed (mergeDiffuse)
+    DiffuseSum diffuseSum;                  // ASOS beams: the answer, summed as it is made
     std::vector<LightSample> gridSamples;   // grid: per lattice point, its sample
     std::vector<double> gridWeights;        // grid: per lattice point, its weight
     std::vector<std::int8_t> gridState;     // grid: per lattice point, -1 unknown, 0 blocked, 1 lit

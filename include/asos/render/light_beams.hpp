@@ -102,6 +102,38 @@ public:
     // pieces' cones are left empty (pieces that are only sampled by rays).
     int split(const LightPiece& piece, LightPiece* out, bool cones = true) const;
     static constexpr int kMaxChildren = 4;
+    // The pieces `depth` levels below `piece`, without cones, each passed
+    // to f(const LightPiece&) in the order repeated split()s give them, with
+    // the same regions, paths and central rays (bit for bit). Rectangles
+    // and segments make only those pieces, none of the levels between (point
+    // samples at MAX: docs/lights.md, "Speed").
+    template <class F>
+    void forEachDescendant(const LightPiece& piece, int depth, F&& f) const {
+        switch (shape_) {
+            case LightShape::Rectangle:
+                descendRectangle(piece.a0, piece.b0, piece.a1, piece.b1, piece.level, piece.path, depth, f);
+                return;
+            case LightShape::Segment:
+                descendSegment(piece.a0, piece.a1, piece.level, piece.path, depth, f);
+                return;
+            case LightShape::Sphere:
+                if (depth > 0 && discPieceTable().children(piece.level + depth - 1, 0)) {
+                    descendDisc(discPieceTable(), piece.level, piece.path, depth, f);
+                    return;
+                }
+                [[fallthrough]];
+            default: {
+                if (depth == 0) {
+                    f(piece);
+                    return;
+                }
+                LightPiece children[kMaxChildren];
+                const int count = split(piece, children, false);
+                for (int i = 0; i < count; ++i) forEachDescendant(children[i], depth - 1, f);
+                return;
+            }
+        }
+    }
 
     // A ray inside the piece from two numbers in [0, 1) (a segment uses the
     // first), uniform over the piece's area (length, disc area).
@@ -137,6 +169,51 @@ public:
     bool singleEdgeHalving() const { return shape_ != LightShape::Sphere; }
 
 private:
+    // forEachDescendant's: the midpoints of dyadic ranges are exact, and the
+    // central rays are made by the same expressions as split()'s.
+    template <class F>
+    void descendRectangle(double a0, double b0, double a1, double b1, int level, std::uint64_t path, int depth,
+                          F& f) const {
+        if (depth == 0) {
+            LightPiece p{a0, b0, a1, b1, level, path, {}, {}};
+            p.central = toward(rectPoint(0.5 * (a0 + a1), 0.5 * (b0 + b1)));
+            f(std::as_const(p));
+            return;
+        }
+        const double s[3] = {a0, 0.5 * (a0 + a1), a1};
+        const double t[3] = {b0, 0.5 * (b0 + b1), b1};
+        for (int q = 0; q < 4; ++q) {
+            const int i = q & 1, j = q >> 1;
+            descendRectangle(s[i], t[j], s[i + 1], t[j + 1], level + 1, 4 * path + std::uint64_t(q), depth - 1, f);
+        }
+    }
+    // Sphere pieces whose layouts are all in the table: made from it.
+    template <class F>
+    void descendDisc(const DiscPieceTable& table, int level, std::uint64_t path, int depth, F& f) const {
+        const DiscPieceTable::Piece* d = table.children(level, path);
+        for (int q = 0; q < 4; ++q) {
+            const std::uint64_t child = 4 * path + std::uint64_t(q);
+            if (depth == 1) {
+                const LightPiece piece = makeDiscPiece(d[q], level + 1, child, false);
+                f(piece);
+            } else {
+                descendDisc(table, level + 1, child, depth - 1, f);
+            }
+        }
+    }
+    template <class F>
+    void descendSegment(double a0, double a1, int level, std::uint64_t path, int depth, F& f) const {
+        if (depth == 0) {
+            LightPiece p{a0, 0.0, a1, 1.0, level, path, {}, {}};
+            p.central = toward(corner_ + 0.5 * (a0 + a1) * edgeA_);
+            f(std::as_const(p));
+            return;
+        }
+        const double mid = 0.5 * (a0 + a1);
+        descendSegment(a0, mid, level + 1, 2 * path, depth - 1, f);
+        descendSegment(mid, a1, level + 1, 2 * path + 1, depth - 1, f);
+    }
+
     LightPiece make(double a0, double b0, double a1, double b1, int level, std::uint64_t path,
                     bool cone = true) const;
     int splitRectangle(const LightPiece& piece, LightPiece* out, bool cones) const;
