@@ -88,7 +88,8 @@ ConeClass Primitive::classifyRigid(const PreparedCone& cone) const {
     else
         local.setRange(cone.tMin, cone.tMax, absTol);
     ConeClass out = visit([&](const auto& s) { return s.classify(local); });
-    if (out.coverage == Coverage::Miss) return out;
+    // No branch on the answer (as good as random from one cone to the
+    // next): a Miss's bounds (+inf, -inf) come through unchanged.
     double tNear = out.tNear * (1.0 - kConeDistanceTolerance) - absTol;
     double tFar = out.tFar * (1.0 + kConeDistanceTolerance) + absTol;
     if constexpr (kScaled) {
