@@ -97,8 +97,9 @@ ConeClass Box::classify(const LocalCone& cone) const {
     bool outside = false, inside = true;
     double far2 = 0.0;
     for (int i = 0; i < 3; ++i) {
-        if (p[i] < lo_[i] - tol || p[i] > hi_[i] + tol) outside = true;
-        if (!(p[i] > lo_[i] + tol && p[i] < hi_[i] - tol)) inside = false;
+        // Flags, not branches: where the apex lies is as good as random.
+        outside |= (p[i] < lo_[i] - tol) | (p[i] > hi_[i] + tol);
+        inside &= (p[i] > lo_[i] + tol) & (p[i] < hi_[i] - tol);
         far2 += std::max(sq(p[i] - lo_[i]), sq(p[i] - hi_[i]));
     }
     if (outside && c > 0.0) {
@@ -119,8 +120,8 @@ ConeClass Box::classify(const LocalCone& cone) const {
                 continue;
             }
             const double inv = 1.0 / a[i];
-            double t0 = (lo_[i] - p[i]) * inv, t1 = (hi_[i] - p[i]) * inv;
-            if (t0 > t1) std::swap(t0, t1);
+            const double tLo = (lo_[i] - p[i]) * inv, tHi = (hi_[i] - p[i]) * inv;
+            const double t0 = std::min(tLo, tHi), t1 = std::max(tLo, tHi);  // no branch
             const double spread = r * std::abs(inv);
             grownEnter = std::max(grownEnter, t0 - spread);
             grownExit = std::min(grownExit, t1 + spread);

@@ -93,11 +93,17 @@ LocalFrame LocalFrame::make(const Transform& worldFromObject, const Mat3& object
     if (similar) {
         f.kind = Kind::Similarity;
         f.worldPerLocal = std::sqrt(s2);
-        f.sigmaMax = f.sigmaMin = 1.0 / f.worldPerLocal;
+        f.localPerWorld = 1.0 / f.worldPerLocal;
+        f.localRotation = f.localFromWorld * f.worldPerLocal;
+        f.sigmaMax = f.sigmaMin = f.localPerWorld;
         return f;
     }
     f.kind = Kind::General;
-    const Vec3 ev = symmetricEigenvalues(glm::transpose(f.localFromWorld) * f.localFromWorld);
+    const Mat3 localGram = glm::transpose(f.localFromWorld) * f.localFromWorld;
+    f.gramTrace = localGram[0][0] + localGram[1][1] + localGram[2][2];
+    const double det = glm::determinant(f.localFromWorld);
+    f.gramDeterminant = det * det;
+    const Vec3 ev = symmetricEigenvalues(localGram);
     const double hi = std::max({ev.x, ev.y, ev.z}), low = std::min({ev.x, ev.y, ev.z});
     // Singular values, rounded outward.
     f.sigmaMax = std::sqrt(hi) * (1.0 + 1e-12);

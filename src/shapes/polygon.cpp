@@ -71,9 +71,13 @@ ConeClass Polygon::classify(const LocalCone& cone) const {
         if (q.x + radius < lo_.x || q.x - radius > hi_.x || q.y + radius < lo_.y ||
             q.y - radius > hi_.y)
             return missClass();
-        // The edges near q (a few at most, or the exact path runs).
+        // The edges near q (a few at most, or the exact path runs). The
+        // loop has no data-dependent branch: whether an edge crosses q's
+        // line or lies near q is as good as random from one cone to the
+        // next, and a mispredicted branch per edge would cost more than the
+        // arithmetic (the slot past kMaxNear absorbs the overflow).
         constexpr int kMaxNear = 8;
-        std::uint32_t nearEdge[kMaxNear][2];
+        std::uint32_t nearEdge[kMaxNear + 1][2];
         int nearCount = 0;
         bool inside = false;
         std::uint32_t begin = 0;
@@ -81,24 +85,22 @@ ConeClass Polygon::classify(const LocalCone& cone) const {
             std::uint32_t i0 = end - 1;
             for (std::uint32_t i = begin; i < end; ++i) {
                 const Vec2 v0 = vertices_[i0], v1 = vertices_[i];
-                const Vec2 e = v1 - v0, w = q - v0;
+                const Vec2 e = v1 - v0, w = q - v0, w1 = q - v1;
                 const double side = e.x * w.y - w.x * e.y;
-                if ((v0.y > q.y) != (v1.y > q.y) && (side > 0.0) == (v1.y > v0.y)) inside = !inside;
-                // Is q within radius of the edge?
+                inside ^= ((v0.y > q.y) != (v1.y > q.y)) & ((side > 0.0) == (v1.y > v0.y));
+                // Is q within radius of the edge (its nearest point an end or inside)?
                 const double along = glm::dot(e, w), ee = glm::dot(e, e);
-                const bool near = along <= 0.0  ? glm::dot(w, w) <= radius2
-                                  : along >= ee ? glm::dot(q - v1, q - v1) <= radius2
-                                                : side * side <= radius2 * ee;
-                if (near) {
-                    if (nearCount == kMaxNear) return classifyExactly(cone);
-                    nearEdge[nearCount][0] = i0;
-                    nearEdge[nearCount][1] = i;
-                    ++nearCount;
-                }
+                const bool nearStart = (along <= 0.0) & (glm::dot(w, w) <= radius2);
+                const bool nearEnd = (along >= ee) & (glm::dot(w1, w1) <= radius2);
+                const bool nearInner = (along > 0.0) & (along < ee) & (side * side <= radius2 * ee);
+                nearEdge[nearCount][0] = i0;
+                nearEdge[nearCount][1] = i;
+                nearCount = std::min(nearCount + int(nearStart | nearEnd | nearInner), kMaxNear);
                 i0 = i;
             }
             begin = end;
         }
+        if (nearCount == kMaxNear) return classifyExactly(cone);
         if (nearCount == 0 && !inside) return missClass();
         const auto [tNear, tFar] = crossingDepths(cone, f);
         if (cone.surelyAfter(tNear) || cone.surelyBefore(tFar)) return missClass();

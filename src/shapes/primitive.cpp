@@ -58,33 +58,46 @@ ConeClass Primitive::classify(const Cone& worldCone) const {
 }
 
 ConeClass Primitive::classify(const PreparedCone& cone) const {
-    if (!cone.valid) return {Coverage::Marginal, 0.0, kInfinity, false};
-    if (cone.tMin > cone.tMax) return {};
-    if (frame_.kind == LocalFrame::Kind::General) return classifyGeneral(cone);
+    if (!cone.valid) [[unlikely]]
+        return {Coverage::Marginal, 0.0, kInfinity, false};
+    if (cone.tMin > cone.tMax) [[unlikely]]
+        return {};
+    if (frame_.kind == LocalFrame::Kind::Translate) return classifyRigid<false>(cone);
+    if (frame_.kind == LocalFrame::Kind::Similarity) return classifyRigid<true>(cone);
+    return classifyGeneral(cone);
+}
+
+// Translations and similarities carry the cone over exactly: the apex and
+// the axis are mapped (the axis by the rotation alone), the half-angle is
+// kept and distances scale by localPerWorld.
+template <bool kScaled>
+ConeClass Primitive::classifyRigid(const PreparedCone& cone) const {
     LocalCone local;
-    double worldPerLocal = 1.0;
-    if (frame_.kind == LocalFrame::Kind::Translate) {
+    if constexpr (kScaled) {
+        local.apex = frame_.localFromWorld * cone.apex + frame_.localOffset;
+        local.axis = frame_.localRotation * cone.axis;
+    } else {
         local.apex = cone.apex + frame_.localOffset;
         local.axis = cone.axis;
-    } else {
-        local.apex = frame_.localFromWorld * cone.apex + frame_.localOffset;
-        // localFromWorld is a rotation over worldPerLocal: the image of a unit
-        // axis is unit after the scale.
-        worldPerLocal = frame_.worldPerLocal;
-        local.axis = (frame_.localFromWorld * cone.axis) * worldPerLocal;
     }
     local.cosHalf = cone.cosHalf;
     local.sinHalf = cone.sinHalf;
     const double absTol = 1e-11 * (l1(local.apex) + sphereTolerance_);
-    const double localPerWorld = 1.0 / worldPerLocal;
-    local.setRange(cone.tMin * localPerWorld, cone.tMax * localPerWorld, absTol);
+    if constexpr (kScaled)
+        local.setRange(cone.tMin * frame_.localPerWorld, cone.tMax * frame_.localPerWorld, absTol);
+    else
+        local.setRange(cone.tMin, cone.tMax, absTol);
     ConeClass out = visit([&](const auto& s) { return s.classify(local); });
-    if (out.coverage == Coverage::Miss) return out;
-    const double slack = absTol * worldPerLocal;
-    out.tNear = std::max(cone.tMin,
-                         out.tNear * worldPerLocal * (1.0 - kConeDistanceTolerance) - slack);
-    out.tFar = std::min(cone.tMax,
-                        out.tFar * worldPerLocal * (1.0 + kConeDistanceTolerance) + slack);
+    // No branch on the answer (as good as random from one cone to the
+    // next): a Miss's bounds (+inf, -inf) come through unchanged.
+    double tNear = out.tNear * (1.0 - kConeDistanceTolerance) - absTol;
+    double tFar = out.tFar * (1.0 + kConeDistanceTolerance) + absTol;
+    if constexpr (kScaled) {
+        tNear *= frame_.worldPerLocal;
+        tFar *= frame_.worldPerLocal;
+    }
+    out.tNear = std::max(cone.tMin, tNear);
+    out.tFar = std::min(cone.tMax, tFar);
     return out;
 }
 
@@ -93,20 +106,29 @@ ConeClass Primitive::classify(const PreparedCone& cone) const {
 // and since t is no longer a local distance, each world ray's local range is
 // [tMin L, tMax L] with L = |A d| between Lmin and Lmax: the shape classifies
 // the union of those ranges, and a Full answer stands only if its depth bounds
-// fall in every ray's own range.
+// fall in every ray's own range (docs/geometry.md).
 ConeClass Primitive::classifyGeneral(const PreparedCone& cone) const {
     const Mat3& a = frame_.localFromWorld;
     const Vec3 aAxis = a * cone.axis;
-    const double la = glm::length(aAxis);
-    const Vec3 axis = aAxis / la;
-    const Mat3 basis = frameAroundAxis(cone.axis);
-    const Vec3 au = a * basis[0], av = a * basis[1];
-    const double pu = glm::dot(au, axis), pv = glm::dot(av, axis);
-    const double tau = std::sqrt(pu * pu + pv * pv);
-    const Vec3 qu = au - pu * axis, qv = av - pv * axis;
-    const double g11 = glm::dot(qu, qu), g22 = glm::dot(qv, qv), g12 = glm::dot(qu, qv);
-    const double half = 0.5 * (g11 - g22);
-    const double sigmaPerp = std::sqrt(0.5 * (g11 + g22) + std::sqrt(half * half + g12 * g12));
+    const double la2 = glm::dot(aAxis, aAxis);
+    const double la = std::sqrt(la2);
+    const double invLa = 1.0 / la;
+    const Vec3 axis = aAxis * invLa;
+    // With u, v unit across the world axis, A u = qu + pu axis and
+    // A v = qv + pv axis: tau = |(pu, pv)| is the length of A^T axis off the
+    // world axis (computed as a vector, without cancellation), and the Gram
+    // matrix of (qu, qv) has trace tr(G) - la^2 - tau^2 and determinant
+    // det(A)^2 / la^2, so its larger eigenvalue sigmaPerp^2 needs no basis.
+    const Vec3 back = axis * a - la * cone.axis;  // A^T axis, off the world axis
+    const double tau2 = glm::dot(back, back);
+    const double tau = std::sqrt(tau2);
+    const double trace = frame_.gramTrace;
+    // Rounding: the trace's difference is off by a few ulps of the trace,
+    // the discriminant by a few ulps of trace * sum; both are padded upward.
+    const double sum = std::max(0.0, trace - la2 - tau2) + 1e-14 * trace;
+    const double product = frame_.gramDeterminant * invLa * invLa;
+    const double spread = std::max(0.0, sum * sum - 4.0 * product) + 1e-13 * trace * sum;
+    const double sigmaPerp = std::sqrt(0.5 * (sum + std::sqrt(spread)));
     const double c = cone.cosHalf, s = cone.sinHalf;
 
     LocalCone local;
@@ -117,16 +139,19 @@ ConeClass Primitive::classifyGeneral(const PreparedCone& cone) const {
     local.cosHalf = -1.0;
     local.sinHalf = 0.0;
     if (c > 0.0) {
-        const double t = s / c;
-        const double den = la - t * tau;
+        const double den = c * la - s * tau;
         if (den > 0.0) {
-            const double tl = t * sigmaPerp / den * (1.0 + 1e-12) + 1e-300;
+            const double tl = s * sigmaPerp / den * (1.0 + 1e-12) + 1e-300;
             local.cosHalf = 1.0 / std::sqrt(1.0 + tl * tl);
             local.sinHalf = tl * local.cosHalf;
         }
     }
-    // Bounds on L = |A d| over the cone: |A(d - axis)| <= 2 sin(theta/2) sigmaMax.
-    const double chord = c > -1.0 ? s / std::sqrt(0.5 * (1.0 + c)) : 2.0;
+    // Bounds on L = |A d| over the cone: |A(d - axis)| <= 2 sin(theta/2) sigmaMax,
+    // and 2 sin(theta/2) = s / sqrt((1 + c) / 2) <= s (1 + (sqrt(2) - 1)(1 - c))
+    // for c >= 0 (the reciprocal root is convex).
+    const double chord = c >= 0.0 ? s * (1.0 + 0.41421356237309515 * (1.0 - c)) * (1.0 + 1e-15)
+                         : c > -1.0 ? s / std::sqrt(0.5 * (1.0 + c))
+                                    : 2.0;
     double lMin = std::max(frame_.sigmaMin, la - chord * frame_.sigmaMax);
     if (c > 0.0) lMin = std::max(lMin, c * la - s * tau);
     const double lMax = std::min(frame_.sigmaMax, la + chord * frame_.sigmaMax);

@@ -74,16 +74,11 @@ struct LocalCone {
         tMin = t0;
         tMax = t1;
         absTol = tolerance;
-        const double tol0 = kConeDistanceTolerance * t0 + absTol;
-        tMinOuter = t0 - tol0;
-        tMinInner = t0 + tol0;
-        if (std::isfinite(t1)) {
-            const double tol1 = kConeDistanceTolerance * t1 + absTol;
-            tMaxOuter = t1 + tol1;
-            tMaxInner = t1 - tol1;
-        } else {
-            tMaxOuter = tMaxInner = t1;
-        }
+        // Written so that an infinite t1 stays infinite without a branch.
+        tMinOuter = t0 * (1.0 - kConeDistanceTolerance) - absTol;
+        tMinInner = t0 * (1.0 + kConeDistanceTolerance) + absTol;
+        tMaxOuter = t1 * (1.0 + kConeDistanceTolerance) + absTol;
+        tMaxInner = t1 * (1.0 - kConeDistanceTolerance) - absTol;
     }
 
     // Every hit is at t <= tFarBound and that is provably before the range.

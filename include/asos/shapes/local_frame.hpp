@@ -23,8 +23,17 @@ struct LocalFrame {
     Mat3 worldFromLocal{1.0};  // world = worldFromLocal * local + worldOffset
     Vec3 worldOffset{0.0};
     double worldPerLocal = 1.0;  // Similarity: world length of a unit local length
-    double sigmaMax = 1.0;       // largest and smallest singular values of localFromWorld
+    double localPerWorld = 1.0;  // its reciprocal
+    // Similarity: localFromWorld * worldPerLocal, the rotation alone (a
+    // world unit vector maps to a local unit vector with one product).
+    Mat3 localRotation{1.0};
+    double sigmaMax = 1.0;  // largest and smallest singular values of localFromWorld
     double sigmaMin = 1.0;
+    // General: the trace and determinant of the Gram matrix G of
+    // localFromWorld, which give the singular values of its restriction to
+    // the plane across a cone's axis in closed form (Primitive::classify).
+    double gramTrace = 3.0;
+    double gramDeterminant = 1.0;
     Mat3 objectFromLocal{1.0};  // object = objectFromLocal * local + objectOffset
     Vec3 objectOffset{0.0};
 

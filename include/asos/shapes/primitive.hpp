@@ -69,6 +69,8 @@ private:
         std::variant<Sphere, Box, TruncatedCone, Cylinder, Disc, Polygon, Plane>;
 
     Primitive(LocalShape shape, LocalFrame frame, const char* name);
+    template <bool kScaled>
+    ConeClass classifyRigid(const PreparedCone& cone) const;
     ConeClass classifyGeneral(const PreparedCone& cone) const;
     template <class F>
     decltype(auto) visit(F&& f) const;
