@@ -171,10 +171,20 @@ public:
             // undetected too (docs/lights.md, "Detection where it pays").
             const int toMax = settings.maxLevel - level;
             if (toMax <= 1 || (toMax <= undetectedLevels() && !detectionMayStop(childShare, settings.eps))) {
-                for (const Node& n : levelNodes)
-                    beams_.forEachDescendant(n.piece, toMax, [&](const LightPiece& piece) {
-                        pointSample(piece, items, n.first, n.count);
-                    });
+                const double sampleShare = beams_.share(settings.maxLevel);
+                for (const Node& n : levelNodes) {
+                    const Item* occluders = items.data() + n.first;
+                    if (settings.jitter) {
+                        beams_.forEachDescendant(n.piece, toMax, [&](const LightPiece& piece) {
+                            pointSample(piece, occluders, n.count, sampleShare);
+                        });
+                    } else {
+                        beams_.forEachCentralRay(n.piece, toMax, [&](const BeamRay& ray) {
+                            c_.countShadowPyray(settings.maxLevel);
+                            sampleRay(ray, occluders, n.count, sampleShare);
+                        });
+                    }
+                }
                 break;
             }
 
@@ -227,12 +237,28 @@ private:
     // A MAX-beam: one point sample, its central ray or with jitter a random
     // ray inside it, decided against its parent's occluders. A ray below
     // the surface's horizon would light nothing: it is not traced.
-    void pointSample(const LightPiece& piece, const std::vector<Item>& items, std::uint32_t first,
-                     std::uint32_t count) {
+    void pointSample(const LightPiece& piece, const Item* occluders, std::uint32_t count, double share) {
         c_.countShadowPyray(piece.level);
         const BeamRay ray = model_.asos.jitter ? beams_.sample(piece, randomPoint(piece)) : piece.central;
+        sampleRay(ray, occluders, count, share);
+    }
+    void sampleRay(const BeamRay& ray, const Item* occluders, std::uint32_t count, double share) {
         if (glm::dot(q_.normal, ray.ray.dir) < kPovEpsilon) return;
-        if (!rayBlocked(ray, items, first, count, nullptr)) emit(ray, beams_.share(piece.level));
+        if (!sampleBlocked(ray, occluders, count)) emitAbove(ray, share);
+    }
+
+    // rayBlocked without marks, for point samples: stops at the first
+    // occluder met.
+    bool sampleBlocked(const BeamRay& ray, const Item* occluders, std::uint32_t count) {
+        ++c_.shadowRays;
+        const double t0 = origin_.rayStart(ray.ray.dir);
+        const double t1 = ray.distance - kTolerance;
+        if (!(t0 < t1)) return origin_.behind;
+        for (std::uint32_t i = 0; i < count; ++i) {
+            ++c_.rayTests;
+            if (scene_.primitive(occluders[i].object).intersectAny(ray.ray, t0, t1)) return true;
+        }
+        return false;
     }
 
     // How many levels above MAX a marginal beam's descendants may be left
@@ -314,8 +340,12 @@ private:
     // I A cos(theta) = colour x share x cos(theta) (rectangle), I A (sphere),
     // I L (segment).
     void emit(const BeamRay& ray, double share) {
+        if (glm::dot(q_.normal, ray.ray.dir) < kPovEpsilon) return;  // it would light nothing
+        emitAbove(ray, share);
+    }
+    // emit, for a ray known to be above the horizon.
+    void emitAbove(const BeamRay& ray, double share) {
         const Vec3& dir = ray.ray.dir;
-        if (glm::dot(q_.normal, dir) < kPovEpsilon) return;  // it would light nothing
         const double distance = ray.distance - origin_.surfaceDistance(dir);
         const LightSample sample{dir, std::max(distance, 0.0), model_.color * (share * beams_.emission(dir))};
         // Diffuse only: summed as made (the same sum as mergeDiffuse's).
