@@ -353,12 +353,6 @@ private:
         else s_.samples.push_back(sample);
     }
 
-    // How much of the diffuse light a direction carries: the emitter's
-    // weighting times the cosine of incidence.
-    double carried(const Vec3& dir) const {
-        return beams_.emission(dir) * std::max(0.0, glm::dot(q_.normal, dir));
-    }
-
     // A sub-beam that reaches the light unobstructed (no ray needed). The
     // one-ray midpoint rule's error on it is about a third of the sum of its
     // second differences along each coordinate (exactly so for a quadratic
@@ -371,13 +365,21 @@ private:
     void refineLit(const LightPiece& piece) {
         BeamRay probes[4];
         const int n = beams_.probeRays(piece, probes);
-        const double centre = carried(piece.central.ray.dir);
+        // Each direction's emitter weight and cosine of incidence, computed
+        // once: the criterion and the samples both use them.
+        double weight[5], cosine[5];
+        const auto measure = [&](int i, const Vec3& dir) {
+            weight[i] = beams_.emission(dir);
+            cosine[i] = glm::dot(q_.normal, dir);
+            return weight[i] * std::max(0.0, cosine[i]);
+        };
+        const double centre = measure(4, piece.central.ray.dir);
         double differences = 0.0;
         for (int i = 0; i < n; i += 2)
-            differences += std::abs(0.5 * (carried(probes[i].ray.dir) + carried(probes[i + 1].ray.dir)) - centre);
+            differences += std::abs(0.5 * (measure(i, probes[i].ray.dir) + measure(i + 1, probes[i + 1].ray.dir)) - centre);
         const double share = beams_.share(piece.level);
         if (differences / 3.0 <= model_.asos.eps / 64.0) {
-            emit(piece.central, share);
+            emitMeasured(piece.central, share, weight[4], cosine[4]);
             return;
         }
         if (piece.level < model_.asos.maxLevel && 0.5 * differences > model_.asos.eps) {
@@ -390,8 +392,19 @@ private:
             return;
         }
         const auto [centreWeight, probeWeight] = beams_.ruleWeights(piece);
-        emit(piece.central, share * centreWeight);
-        for (int i = 0; i < n; ++i) emit(probes[i], share * probeWeight);
+        emitMeasured(piece.central, share * centreWeight, weight[4], cosine[4]);
+        for (int i = 0; i < n; ++i) emitMeasured(probes[i], share * probeWeight, weight[i], cosine[i]);
+    }
+
+    // emit, with the direction's emitter weight and cosine of incidence
+    // already known (the same values emit would compute).
+    void emitMeasured(const BeamRay& ray, double share, double emission, double cosine) {
+        if (cosine < kPovEpsilon) return;  // it would light nothing
+        const Vec3& dir = ray.ray.dir;
+        const double distance = ray.distance - origin_.surfaceDistance(dir);
+        const LightSample sample{dir, std::max(distance, 0.0), model_.color * (share * emission)};
+        if (q_.diffuseOnly) s_.diffuseSum.add(sample);
+        else s_.samples.push_back(sample);
     }
 
     // Two numbers in [0, 1) for a piece: its level and position decide them.

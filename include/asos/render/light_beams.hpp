@@ -144,20 +144,27 @@ public:
     // forEachDescendant's (quarter q = i + 2 j at each level: Morton order).
     template <class F>
     void forEachCentralRay(const LightPiece& piece, int depth, F&& f) const {
-        if (shape_ != LightShape::Rectangle || depth > 8) {
+        if (shape_ != LightShape::Rectangle || depth > 4) {
             forEachDescendant(piece, depth, [&](const LightPiece& p) { f(p.central); });
             return;
         }
         const double scale = std::bit_cast<double>(std::uint64_t(1023 - depth) << 52);  // 2^-depth
         const double ds = (piece.a1 - piece.a0) * scale, dt = (piece.b1 - piece.b0) * scale;
+        const int side = 1 << depth;
+        double sc[16], tc[16];
+        for (int k = 0; k < side; ++k) {
+            sc[k] = piece.a0 + (double(k) + 0.5) * ds;
+            tc[k] = piece.b0 + (double(k) + 0.5) * dt;
+        }
+        // The even and odd bits of a Morton index (at most 8 bits here).
+        const auto compact = [](std::uint32_t x) {
+            x &= 0x55u;
+            x = (x | (x >> 1)) & 0x33u;
+            return (x | (x >> 2)) & 0x0fu;
+        };
         const std::uint32_t count = 1u << (2 * depth);
         for (std::uint32_t m = 0; m < count; ++m) {
-            std::uint32_t i = 0, j = 0;
-            for (int b = 0; b < depth; ++b) {
-                i |= ((m >> (2 * b)) & 1u) << b;
-                j |= ((m >> (2 * b + 1)) & 1u) << b;
-            }
-            const BeamRay ray = toward(rectPoint(piece.a0 + (double(i) + 0.5) * ds, piece.b0 + (double(j) + 0.5) * dt));
+            const BeamRay ray = toward(rectPoint(sc[compact(m)], tc[compact(m >> 1)]));
             f(ray);
         }
     }
