@@ -108,7 +108,7 @@ public:
         std::vector<Item>& rootItems = s_.items[0];
         rootItems.clear();
         const Cone rootCone = coneOf(root);
-        const PreparedCone prepared(rootCone);
+        const PreparedCone prepared = preparedCone(root, rootCone);
         if (s_.beamCandidates.size() <= q_.lightIndex) s_.beamCandidates.resize(q_.lightIndex + 1);
         s_.beamCandidates[q_.lightIndex].visit(scene_, rootCone, prepared, [&](std::uint32_t object) {
             if (scene_.object(object).noShadow) return;
