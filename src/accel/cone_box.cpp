@@ -44,6 +44,9 @@ constexpr double kSlackRelative = 1e-9;
 // component is +1e-17 still reaches +inf) are widened by this much, far above
 // the rounding of atan2 and cos.
 constexpr double kAngleSlack = 1e-12;
+// The cosines of widened angles, computed by angle-sum formulas, are moved
+// outward by this much, far above their rounding (a few 1e-16).
+constexpr double kValueSlack = 1e-15;
 
 double maxAbs(const Vec3& v) {
     return std::max({std::abs(v.x), std::abs(v.y), std::abs(v.z)});
@@ -73,15 +76,35 @@ ConeBoxTest::ConeBoxTest(const Cone& cone) : cone_(cone) {
                            ? Vec3(1, 0, 0)
                            : (std::abs(w.y) <= std::abs(w.z) ? Vec3(0, 1, 0) : Vec3(0, 0, 1));
     orthogonal_ = glm::normalize(glm::cross(w, least));
+    // θ' = θ + kAngleSlack, by its cosine and sine (cos of the slack is 1 in
+    // doubles, its sine the slack itself): no trigonometry per axis.
+    const bool whole = cone_.halfAngle + kAngleSlack >= kPi;
+    const double cosWide = cos_ - kAngleSlack * sin_;
+    const double sinWide = sin_ + kAngleSlack * cos_;
+    cosWide_ = whole ? -1.0 : std::max(-1.0, cosWide - kValueSlack);
     for (int i = 0; i < 3; ++i) {
-        // α: the angle between the axis and coordinate axis i, by atan2 (well
-        // conditioned near 0 and π, unlike acos). The rays of the cone make
-        // angles with e_i that fill [α - θ, α + θ] clipped to [0, π].
+        // α: the angle between the axis and coordinate axis i, cos α = w_i,
+        // sin α = |w with w_i left out| (>= 0). The rays of the cone make
+        // angles with e_i that fill [α - θ', α + θ'] clipped to [0, π], so u_i
+        // lies between cos(min(π, α + θ')) and cos(max(0, α - θ')). Both are
+        // the angle-sum formulas; which clip applies is the sign of
+        // sin(α - θ') (α <= θ' iff it is <= 0, both angles in [0, π]) and of
+        // sin(α + θ') (α + θ' >= π iff it is <= 0). Near a switch the formula
+        // is continuous with the clipped value, so rounding on either side
+        // costs a few ulps, which kValueSlack covers.
         const int j = (i + 1) % 3;
         const int k = (i + 2) % 3;
-        const double alpha = std::atan2(std::hypot(w[j], w[k]), w[i]);
-        dirHi_[i] = std::cos(std::max(0.0, alpha - cone_.halfAngle - kAngleSlack));
-        dirLo_[i] = std::cos(std::min(kPi, alpha + cone_.halfAngle + kAngleSlack));
+        const double cosA = w[i];
+        const double sinA = std::hypot(w[j], w[k]);
+        if (whole) {
+            dirHi_[i] = 1.0;
+            dirLo_[i] = -1.0;
+            continue;
+        }
+        const bool nearClip = sinA * cosWide - cosA * sinWide <= 0.0;
+        const bool farClip = sinA * cosWide + cosA * sinWide <= 0.0;
+        dirHi_[i] = nearClip ? 1.0 : std::min(1.0, cosA * cosWide + sinA * sinWide + kValueSlack);
+        dirLo_[i] = farClip ? -1.0 : std::max(-1.0, cosA * cosWide - sinA * sinWide - kValueSlack);
     }
     updateFarEnd();
 }
@@ -103,8 +126,7 @@ void ConeBoxTest::updateFarEnd() {
         coneBounds_.hi[i] = cone_.apex[i] + hi;
     }
     axialHi_ = tMax;
-    const double cosWide = std::cos(std::min(kPi, cone_.halfAngle + kAngleSlack));
-    axialLo_ = cosWide >= 0.0 ? tMin * cosWide : extremeProduct(tMax, cosWide);
+    axialLo_ = cosWide_ >= 0.0 ? tMin * cosWide_ : extremeProduct(tMax, cosWide_);
 }
 
 bool ConeBoxTest::contains(const Vec3& point) const {

@@ -108,7 +108,7 @@ public:
         std::vector<Item>& rootItems = s_.items[0];
         rootItems.clear();
         const Cone rootCone = coneOf(root);
-        const PreparedCone prepared(rootCone);
+        const PreparedCone prepared = preparedCone(root, rootCone);
         if (s_.beamCandidates.size() <= q_.lightIndex) s_.beamCandidates.resize(q_.lightIndex + 1);
         s_.beamCandidates[q_.lightIndex].visit(scene_, rootCone, prepared, [&](std::uint32_t object) {
             if (scene_.object(object).noShadow) return;
@@ -171,10 +171,20 @@ public:
             // undetected too (docs/lights.md, "Detection where it pays").
             const int toMax = settings.maxLevel - level;
             if (toMax <= 1 || (toMax <= undetectedLevels() && !detectionMayStop(childShare, settings.eps))) {
-                for (const Node& n : levelNodes)
-                    beams_.forEachDescendant(n.piece, toMax, [&](const LightPiece& piece) {
-                        pointSample(piece, items, n.first, n.count);
-                    });
+                const double sampleShare = beams_.share(settings.maxLevel);
+                for (const Node& n : levelNodes) {
+                    const Item* occluders = items.data() + n.first;
+                    if (settings.jitter) {
+                        beams_.forEachDescendant(n.piece, toMax, [&](const LightPiece& piece) {
+                            pointSample(piece, occluders, n.count, sampleShare);
+                        });
+                    } else {
+                        beams_.forEachCentralRay(n.piece, toMax, [&](const BeamRay& ray) {
+                            c_.countShadowPyray(settings.maxLevel);
+                            sampleRay(ray, occluders, n.count, sampleShare);
+                        });
+                    }
+                }
                 break;
             }
 
@@ -227,12 +237,28 @@ private:
     // A MAX-beam: one point sample, its central ray or with jitter a random
     // ray inside it, decided against its parent's occluders. A ray below
     // the surface's horizon would light nothing: it is not traced.
-    void pointSample(const LightPiece& piece, const std::vector<Item>& items, std::uint32_t first,
-                     std::uint32_t count) {
+    void pointSample(const LightPiece& piece, const Item* occluders, std::uint32_t count, double share) {
         c_.countShadowPyray(piece.level);
         const BeamRay ray = model_.asos.jitter ? beams_.sample(piece, randomPoint(piece)) : piece.central;
+        sampleRay(ray, occluders, count, share);
+    }
+    void sampleRay(const BeamRay& ray, const Item* occluders, std::uint32_t count, double share) {
         if (glm::dot(q_.normal, ray.ray.dir) < kPovEpsilon) return;
-        if (!rayBlocked(ray, items, first, count, nullptr)) emit(ray, beams_.share(piece.level));
+        if (!sampleBlocked(ray, occluders, count)) emitAbove(ray, share);
+    }
+
+    // rayBlocked without marks, for point samples: stops at the first
+    // occluder met.
+    bool sampleBlocked(const BeamRay& ray, const Item* occluders, std::uint32_t count) {
+        ++c_.shadowRays;
+        const double t0 = origin_.rayStart(ray.ray.dir);
+        const double t1 = ray.distance - kTolerance;
+        if (!(t0 < t1)) return origin_.behind;
+        for (std::uint32_t i = 0; i < count; ++i) {
+            ++c_.rayTests;
+            if (scene_.primitive(occluders[i].object).intersectAny(ray.ray, t0, t1)) return true;
+        }
+        return false;
     }
 
     // How many levels above MAX a marginal beam's descendants may be left
@@ -314,19 +340,17 @@ private:
     // I A cos(theta) = colour x share x cos(theta) (rectangle), I A (sphere),
     // I L (segment).
     void emit(const BeamRay& ray, double share) {
+        if (glm::dot(q_.normal, ray.ray.dir) < kPovEpsilon) return;  // it would light nothing
+        emitAbove(ray, share);
+    }
+    // emit, for a ray known to be above the horizon.
+    void emitAbove(const BeamRay& ray, double share) {
         const Vec3& dir = ray.ray.dir;
-        if (glm::dot(q_.normal, dir) < kPovEpsilon) return;  // it would light nothing
         const double distance = ray.distance - origin_.surfaceDistance(dir);
         const LightSample sample{dir, std::max(distance, 0.0), model_.color * (share * beams_.emission(dir))};
         // Diffuse only: summed as made (the same sum as mergeDiffuse's).
         if (q_.diffuseOnly) s_.diffuseSum.add(sample);
         else s_.samples.push_back(sample);
-    }
-
-    // How much of the diffuse light a direction carries: the emitter's
-    // weighting times the cosine of incidence.
-    double carried(const Vec3& dir) const {
-        return beams_.emission(dir) * std::max(0.0, glm::dot(q_.normal, dir));
     }
 
     // A sub-beam that reaches the light unobstructed (no ray needed). The
@@ -341,13 +365,21 @@ private:
     void refineLit(const LightPiece& piece) {
         BeamRay probes[4];
         const int n = beams_.probeRays(piece, probes);
-        const double centre = carried(piece.central.ray.dir);
+        // Each direction's emitter weight and cosine of incidence, computed
+        // once: the criterion and the samples both use them.
+        double weight[5], cosine[5];
+        const auto measure = [&](int i, const Vec3& dir) {
+            weight[i] = beams_.emission(dir);
+            cosine[i] = glm::dot(q_.normal, dir);
+            return weight[i] * std::max(0.0, cosine[i]);
+        };
+        const double centre = measure(4, piece.central.ray.dir);
         double differences = 0.0;
         for (int i = 0; i < n; i += 2)
-            differences += std::abs(0.5 * (carried(probes[i].ray.dir) + carried(probes[i + 1].ray.dir)) - centre);
+            differences += std::abs(0.5 * (measure(i, probes[i].ray.dir) + measure(i + 1, probes[i + 1].ray.dir)) - centre);
         const double share = beams_.share(piece.level);
         if (differences / 3.0 <= model_.asos.eps / 64.0) {
-            emit(piece.central, share);
+            emitMeasured(piece.central, share, weight[4], cosine[4]);
             return;
         }
         if (piece.level < model_.asos.maxLevel && 0.5 * differences > model_.asos.eps) {
@@ -360,8 +392,19 @@ private:
             return;
         }
         const auto [centreWeight, probeWeight] = beams_.ruleWeights(piece);
-        emit(piece.central, share * centreWeight);
-        for (int i = 0; i < n; ++i) emit(probes[i], share * probeWeight);
+        emitMeasured(piece.central, share * centreWeight, weight[4], cosine[4]);
+        for (int i = 0; i < n; ++i) emitMeasured(probes[i], share * probeWeight, weight[i], cosine[i]);
+    }
+
+    // emit, with the direction's emitter weight and cosine of incidence
+    // already known (the same values emit would compute).
+    void emitMeasured(const BeamRay& ray, double share, double emission, double cosine) {
+        if (cosine < kPovEpsilon) return;  // it would light nothing
+        const Vec3& dir = ray.ray.dir;
+        const double distance = ray.distance - origin_.surfaceDistance(dir);
+        const LightSample sample{dir, std::max(distance, 0.0), model_.color * (share * emission)};
+        if (q_.diffuseOnly) s_.diffuseSum.add(sample);
+        else s_.samples.push_back(sample);
     }
 
     // Two numbers in [0, 1) for a piece: its level and position decide them.

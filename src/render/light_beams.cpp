@@ -104,12 +104,6 @@ LightBeams::LightBeams(const LightModel& model, const Vec3& apex, double tMin)
     }
 }
 
-BeamRay LightBeams::toward(const Vec3& target) const {
-    const Vec3 offset = target - apex_;
-    const double distance = glm::length(offset);
-    return {Ray{apex_, offset / distance}, distance};
-}
-
 Vec3 LightBeams::discDirection(double r, double phi) const {
     const double x = r * std::cos(phi), y = r * std::sin(phi);
     return glm::normalize(frame_.toWorld(tanAlpha_ * x, tanAlpha_ * y, 1.0));
@@ -400,10 +394,6 @@ std::pair<double, double> LightBeams::ruleWeights(const LightPiece& p) const {
     if (shape_ == LightShape::Segment) return {2.0 / 3.0, 1.0 / 6.0};
     if (shape_ == LightShape::Sphere && p.level == 0) return {0.5, 0.125};
     return {1.0 / 3.0, 1.0 / 6.0};
-}
-
-double LightBeams::emission(const Vec3& dir) const {
-    return shape_ == LightShape::Rectangle ? std::abs(glm::dot(normal_, dir)) : 1.0;
 }
 
 }  // namespace asos

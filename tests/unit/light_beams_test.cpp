@@ -6,6 +6,7 @@
 
 #include <cmath>
 #include <random>
+#include <vector>
 
 #include "asos/geometry/beam_rect.hpp"
 #include "asos/geometry/beam_segment.hpp"
@@ -151,4 +152,59 @@ TEST_CASE("Sphere beams: the tangent cone's equal-area pieces", "[lights]") {
     m.position = Vec3(0.0);
     m.radius = 1.0;
     CHECK_FALSE(LightBeams(m, Vec3(0.5, 0, 0), 0.0).valid());
+}
+
+TEST_CASE("Central rays of descendants: the pieces' of repeated splits, in order, bit for bit", "[lights]") {
+    std::mt19937_64 rng(57);
+    std::uniform_real_distribution<double> u01(0.0, 1.0);
+    // The pieces `depth` levels below `p` by repeated split(), in order.
+    const auto bySplits = [](const LightBeams& beams, const LightPiece& p, int depth) {
+        std::vector<LightPiece> pieces{p};
+        for (int d = 0; d < depth; ++d) {
+            std::vector<LightPiece> next;
+            for (const LightPiece& q : pieces) {
+                LightPiece children[LightBeams::kMaxChildren];
+                const int n = beams.split(q, children, false);
+                next.insert(next.end(), children, children + n);
+            }
+            pieces = next;
+        }
+        return pieces;
+    };
+    for (int trial = 0; trial < 40; ++trial) {
+        LightModel m;
+        if (trial % 4 == 3) {
+            m.shape = LightShape::Segment;
+            m.start = Vec3(u01(rng), 5, u01(rng));
+            m.end = m.start + randomUnit(rng) * (0.1 + 3 * u01(rng));
+        } else {
+            m.shape = LightShape::Rectangle;
+            const Vec3 a = randomUnit(rng) * (0.1 + 3 * u01(rng));
+            Vec3 b = glm::normalize(glm::cross(a, randomUnit(rng))) * (0.1 + 3 * u01(rng));
+            if (trial % 4 == 2) b += 0.3 * a;
+            m.rectangle = {Vec3(u01(rng), 5, u01(rng)), a, b};
+        }
+        const Vec3 apex = Vec3(u01(rng), 5, u01(rng)) + randomUnit(rng) * (0.5 + 5.0 * u01(rng));
+        const LightBeams beams(m, apex, 1e-4);
+        if (!beams.valid()) continue;
+        LightPiece p = beams.root();
+        for (int level = 0; level <= 3; ++level) {
+            for (int depth = 0; depth <= 3; ++depth) {
+                const std::vector<LightPiece> expected = bySplits(beams, p, depth);
+                std::size_t k = 0;
+                bool same = true;
+                beams.forEachCentralRay(p, depth, [&](const BeamRay& r) {
+                    same = same && k < expected.size() && r.ray.dir == expected[k].central.ray.dir &&
+                           r.ray.origin == expected[k].central.ray.origin &&
+                           r.distance == expected[k].central.distance;
+                    ++k;
+                });
+                CHECK(same);
+                CHECK(k == expected.size());
+            }
+            LightPiece children[LightBeams::kMaxChildren];
+            const int n = beams.split(p, children);
+            p = children[int(rng() % std::uint64_t(n))];
+        }
+    }
 }

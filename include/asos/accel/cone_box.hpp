@@ -53,6 +53,7 @@ private:
     Cone cone_;
     double cos_ = 1.0;
     double sin_ = 0.0;
+    double cosWide_ = 1.0;    // cos(θ + kAngleSlack), lowered by a rounding slack (-1 past π)
     bool valid_ = true;       // false: NaN input, the test then accepts every box
     bool empty_ = false;      // tMin > tMax: the cone has no point
     double axialLo_ = 0.0;    // bounds on (x - apex) . axis over the cone

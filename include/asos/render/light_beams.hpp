@@ -14,6 +14,7 @@
 // sphere piece, because the central ray lies within the piece's angular
 // range (docs/accel.md, "Sphere pieces").
 #include <bit>
+#include <cmath>
 #include <cstdint>
 #include <limits>
 #include <optional>
@@ -135,6 +136,39 @@ public:
         }
     }
 
+    // The central rays of the pieces forEachDescendant would give, in the
+    // same order and bit for bit, without the pieces. A rectangle's are
+    // made straight from the lattice of their centres: every coordinate of
+    // a piece is a dyadic fraction of few bits, so a0 + (i + 1/2) ds is
+    // exactly the midpoint that repeated splits compute; the order is
+    // forEachDescendant's (quarter q = i + 2 j at each level: Morton order).
+    template <class F>
+    void forEachCentralRay(const LightPiece& piece, int depth, F&& f) const {
+        if (shape_ != LightShape::Rectangle || depth > 4) {
+            forEachDescendant(piece, depth, [&](const LightPiece& p) { f(p.central); });
+            return;
+        }
+        const double scale = std::bit_cast<double>(std::uint64_t(1023 - depth) << 52);  // 2^-depth
+        const double ds = (piece.a1 - piece.a0) * scale, dt = (piece.b1 - piece.b0) * scale;
+        const int side = 1 << depth;
+        double sc[16], tc[16];
+        for (int k = 0; k < side; ++k) {
+            sc[k] = piece.a0 + (double(k) + 0.5) * ds;
+            tc[k] = piece.b0 + (double(k) + 0.5) * dt;
+        }
+        // The even and odd bits of a Morton index (at most 8 bits here).
+        const auto compact = [](std::uint32_t x) {
+            x &= 0x55u;
+            x = (x | (x >> 1)) & 0x33u;
+            return (x | (x >> 2)) & 0x0fu;
+        };
+        const std::uint32_t count = 1u << (2 * depth);
+        for (std::uint32_t m = 0; m < count; ++m) {
+            const BeamRay ray = toward(rectPoint(sc[compact(m)], tc[compact(m >> 1)]));
+            f(ray);
+        }
+    }
+
     // A ray inside the piece from two numbers in [0, 1) (a segment uses the
     // first), uniform over the piece's area (length, disc area).
     BeamRay sample(const LightPiece& piece, const Vec2& xi) const;
@@ -160,7 +194,10 @@ public:
     std::pair<double, double> ruleWeights(const LightPiece& piece) const;
     // The emitter's weighting along a direction: |cos theta| between the
     // rectangle's normal and the direction; 1 for segments and spheres.
-    double emission(const Vec3& dir) const;
+    // Inline: it is asked for every sample.
+    double emission(const Vec3& dir) const {
+        return shape_ == LightShape::Rectangle ? std::abs(glm::dot(normal_, dir)) : 1.0;
+    }
     // Whether the paper's "Proximity to One Edge" halving holds for this
     // split: for quarters of a rectangle and halves of a segment (a straight
     // occluder edge is a straight line in the light's plane); not for the
@@ -224,7 +261,12 @@ private:
     LightPiece makeDiscPiece(const DiscPieceTable::Piece& d, int level, std::uint64_t path, bool cone) const;
     double sphereDistance(const Vec3& dir) const;
     double sphereDistanceAtRadius(double r, double widen) const;
-    BeamRay toward(const Vec3& target) const;
+    // Inline: forEachDescendant makes one per point sample.
+    BeamRay toward(const Vec3& target) const {
+        const Vec3 offset = target - apex_;
+        const double distance = glm::length(offset);
+        return {Ray{apex_, offset / distance}, distance};
+    }
     // The cone about unit `axis` through the widest of `directions` (of any
     // length), reaching `farthest`.
     Cone coneAbout(const Vec3& axis, const Vec3* directions, int count, double farthest,
