@@ -37,6 +37,7 @@
 #include "asos/image/image_io.hpp"
 #include "asos/lang/interpreter.hpp"
 #include "asos/render/renderer.hpp"
+#include "cli/arguments.hpp"
 #include "cli/commands.hpp"
 
 namespace asos::cli {
@@ -71,22 +72,6 @@ std::vector<std::string> splitList(const std::string& text) {
     for (std::string item; std::getline(in, item, ',');)
         if (!item.empty()) out.push_back(item);
     return out;
-}
-
-std::optional<double> parseFraction(const std::string& text) {
-    try {
-        std::size_t used = 0;
-        const auto slash = text.find('/');
-        if (slash == std::string::npos) {
-            const double v = std::stod(text, &used);
-            return used == text.size() ? std::optional<double>(v) : std::nullopt;
-        }
-        const double a = std::stod(text.substr(0, slash));
-        const double b = std::stod(text.substr(slash + 1));
-        return b != 0.0 ? std::optional<double>(a / b) : std::nullopt;
-    } catch (const std::exception&) {
-        return std::nullopt;
-    }
 }
 
 struct Run {
@@ -145,7 +130,7 @@ int runBenchLights(const BenchLightsArgs& args) {
     }
     std::vector<int> grids;
     for (const std::string& g : splitList(args.grids)) {
-        const std::optional<double> n = parseFraction(g);
+        const std::optional<double> n = parseNumber(g);
         if (!n || *n < 1 || *n > kMaxLightSamplesPerSide || *n != std::floor(*n)) {
             std::cerr << "asos bench lights: error: --grids takes whole numbers, not '" << g << "'\n";
             return 1;

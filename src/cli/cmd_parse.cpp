@@ -9,8 +9,8 @@
 
 #include "asos/diag/diagnostics.hpp"
 #include "asos/lang/interpreter.hpp"
-#include "asos/lang/words.hpp"
 #include "asos/scene/dump.hpp"
+#include "cli/arguments.hpp"
 #include "cli/commands.hpp"
 
 namespace asos::cli {
@@ -26,26 +26,18 @@ struct ParseArgs {
     bool noLocations = false;
 };
 
-bool isIdentifier(const std::string& s) {
-    if (s.empty() || !(std::isalpha(static_cast<unsigned char>(s[0])) || s[0] == '_')) return false;
-    for (char c : s)
-        if (!(std::isalnum(static_cast<unsigned char>(c)) || c == '_')) return false;
-    return !lang::isReservedWord(s);
-}
-
 int runParse(const ParseArgs& args) {
     lang::InterpreterOptions options;
     for (const auto& dir : args.includePaths) options.includePaths.emplace_back(dir);
-    for (const auto& define : args.defines) {
-        const auto eq = define.find('=');
-        const std::string name = define.substr(0, eq);
-        if (eq == std::string::npos || !isIdentifier(name)) {
+    for (const auto& text : args.defines) {
+        std::optional<lang::Define> define = parseDefine(text);
+        if (!define) {
             std::cerr << "asos parse: error: -D wants NAME=VALUE with NAME an identifier that is not a "
                          "keyword, not '"
-                      << define << "'\n";
+                      << text << "'\n";
             return 1;
         }
-        options.defines.push_back({name, define.substr(eq + 1)});
+        options.defines.push_back(std::move(*define));
     }
     options.clock = args.clock;
 

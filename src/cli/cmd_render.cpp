@@ -11,7 +11,6 @@
 #include <unistd.h>
 
 #include <algorithm>
-#include <charconv>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -25,9 +24,9 @@
 #include "asos/diag/diagnostics.hpp"
 #include "asos/image/image_io.hpp"
 #include "asos/lang/interpreter.hpp"
-#include "asos/lang/words.hpp"
 #include "asos/render/aov.hpp"
 #include "asos/render/renderer.hpp"
+#include "cli/arguments.hpp"
 #include "cli/commands.hpp"
 
 namespace asos::cli {
@@ -63,30 +62,6 @@ struct RenderArgs {
 };
 
 void fail(const std::string& message) { std::cerr << "asos render: error: " << message << '\n'; }
-
-bool isIdentifier(const std::string& s) {
-    if (s.empty() || !(std::isalpha(static_cast<unsigned char>(s[0])) || s[0] == '_')) return false;
-    for (char c : s)
-        if (!(std::isalnum(static_cast<unsigned char>(c)) || c == '_')) return false;
-    return !lang::isReservedWord(s);
-}
-
-std::optional<double> parseNumber(std::string_view text) {
-    double v = 0.0;
-    const auto r = std::from_chars(text.data(), text.data() + text.size(), v);
-    if (r.ec != std::errc() || r.ptr != text.data() + text.size()) return std::nullopt;
-    return v;
-}
-
-// "0.015", "1/64".
-std::optional<double> parseEps(const std::string& text) {
-    const auto slash = text.find('/');
-    if (slash == std::string::npos) return parseNumber(text);
-    const auto a = parseNumber(std::string_view(text).substr(0, slash));
-    const auto b = parseNumber(std::string_view(text).substr(slash + 1));
-    if (!a || !b || *b == 0.0) return std::nullopt;
-    return *a / *b;
-}
 
 // A progress bar on stderr, redrawn at most ten times a second.
 class ProgressBar {
@@ -126,7 +101,7 @@ int runRender(const RenderArgs& args) {
     settings.width = args.width;
     settings.height = args.height;
     if (args.eps) {
-        const std::optional<double> eps = parseEps(*args.eps);
+        const std::optional<double> eps = parseFraction(*args.eps);
         if (!eps) problems.push_back("--eps wants a number or a fraction A/B, not '" + *args.eps + "'");
         else settings.asos.eps = *eps;
     }
@@ -183,14 +158,12 @@ int runRender(const RenderArgs& args) {
     }
     lang::InterpreterOptions options;
     for (const auto& dir : args.includePaths) options.includePaths.emplace_back(dir);
-    for (const auto& define : args.defines) {
-        const auto eq = define.find('=');
-        const std::string name = define.substr(0, eq);
-        if (eq == std::string::npos || !isIdentifier(name))
-            problems.push_back("-D wants NAME=VALUE with NAME an identifier that is not a keyword, not '" +
-                               define + "'");
+    for (const auto& text : args.defines) {
+        if (std::optional<lang::Define> define = parseDefine(text))
+            options.defines.push_back(std::move(*define));
         else
-            options.defines.push_back({name, define.substr(eq + 1)});
+            problems.push_back("-D wants NAME=VALUE with NAME an identifier that is not a keyword, not '" +
+                               text + "'");
     }
     options.clock = args.clock;
     options.imageWidth = settings.width;
