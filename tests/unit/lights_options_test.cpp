@@ -2,16 +2,14 @@
 // --light-method, --light-samples, --shadow-apex; their defaults and errors.
 #include <catch2/catch.hpp>
 
-#include <sys/wait.h>
-
-#include <cstdlib>
 #include <filesystem>
 #include <fstream>
-#include <sstream>
 #include <string>
+#include <vector>
 
 #include "asos/render/renderer.hpp"
 #include "render_scenes.hpp"
+#include "run_asos.hpp"
 
 namespace fs = std::filesystem;
 using namespace asos;
@@ -27,22 +25,33 @@ fs::path scratchDir() {
 
 // Runs `asos render` on a small scene with an area light; returns the exit
 // status and what it wrote on stderr.
-std::pair<int, std::string> renderWith(const std::string& name, const std::string& options) {
+std::pair<int, std::string> renderWith(const std::string& name, std::vector<std::string> options) {
     const fs::path dir = scratchDir();
-    const fs::path scene = dir / "area.pov";
-    std::ofstream(scene) << "camera { location <0, 3, -6> look_at 0 }\n"
-                            "light_source { <0, 5, 0>, 1 area_light <2, 0, 0>, <0, 0, 2>, 3, 3 }\n"
-                            "plane { y, 0 pigment { color rgb 1 } }\n"
-                            "sphere { <0, 1, 0>, 0.8 pigment { color rgb 1 } }\n";
-    const fs::path err = dir / (name + ".err");
-    const std::string command = std::string(ASOS_EXE) + " render '" + scene.string() + "' -o '" +
-                                (dir / (name + ".png")).string() + "' -W 16 -H 12 --quiet " + options +
-                                " 2> '" + err.string() + "'";
-    const int status = std::system(command.c_str());
-    std::ifstream in(err);
-    std::ostringstream text;
-    text << in.rdbuf();
-    return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, text.str()};
+    std::ofstream(dir / "area.pov") << "camera { location <0, 3, -6> look_at 0 }\n"
+                                       "light_source { <0, 5, 0>, 1 area_light <2, 0, 0>, <0, 0, 2>, 3, 3 }\n"
+                                       "plane { y, 0 pigment { color rgb 1 } }\n"
+                                       "sphere { <0, 1, 0>, 0.8 pigment { color rgb 1 } }\n";
+    std::vector<std::string> args{"render", "area.pov", "-o", name + ".png", "-W", "16", "-H", "12", "--quiet"};
+    args.insert(args.end(), options.begin(), options.end());
+    const asos::test::ProgramResult r = asos::test::runAsos(dir, std::move(args));
+    return {r.exitCode, r.err};
+}
+
+// A white sphere on a white plane under a 2 x 2 area light of size x size
+// points.
+SceneDescription sphereUnderAreaLight(int size) {
+    SceneDescription d;
+    d.camera = lookAtCamera({0, 3, -6}, {0, 0.5, 0}, 50);
+    d.objects.push_back(makeObject(PlaneShape{{0, 1, 0}, 0.0}, litTexture(Vec3(1.0))));
+    d.objects.push_back(makeObject(SphereShape{{0, 1, 0}, 0.8}, litTexture(Vec3(1.0))));
+    Light light = pointLight({0.5, 5, -0.5});
+    AreaLight area;
+    area.axis1 = {2, 0, 0};
+    area.axis2 = {0, 0, 2};
+    area.size1 = area.size2 = size;
+    light.area = area;
+    d.lights.push_back(light);
+    return d;
 }
 
 }  // namespace
@@ -68,17 +77,7 @@ TEST_CASE("Area lights default to ASOS beams under ASOS, the grid under the clas
 }
 
 TEST_CASE("Every method renders an area light, to nearly the same image", "[lights]") {
-    SceneDescription d;
-    d.camera = lookAtCamera({0, 3, -6}, {0, 0.5, 0}, 50);
-    d.objects.push_back(makeObject(PlaneShape{{0, 1, 0}, 0.0}, litTexture(Vec3(1.0))));
-    d.objects.push_back(makeObject(SphereShape{{0, 1, 0}, 0.8}, litTexture(Vec3(1.0))));
-    Light light = pointLight({0.5, 5, -0.5});
-    AreaLight area;
-    area.axis1 = {2, 0, 0};
-    area.axis2 = {0, 0, 2};
-    area.size1 = area.size2 = 8;
-    light.area = area;
-    d.lights.push_back(light);
+    const SceneDescription d = sphereUnderAreaLight(8);
     auto rendered = [&](RenderSettings s) {
         s.width = 32;
         s.height = 24;
@@ -112,34 +111,25 @@ TEST_CASE("Every method renders an area light, to nearly the same image", "[ligh
 }
 
 TEST_CASE("asos render: area light options, and their errors", "[lights][cli]") {
-    CHECK(renderWith("default", "").first == 0);
-    CHECK(renderWith("grid", "--method jitter --samples 2 --light-method grid --light-samples 3").first == 0);
-    CHECK(renderWith("behind", "--shadow-apex behind").first == 0);
-    const auto [badMethod, badMethodText] = renderWith("bad_method", "--light-method stochastic");
+    CHECK(renderWith("default", {}).first == 0);
+    CHECK(renderWith("grid", {"--method", "jitter", "--samples", "2", "--light-method", "grid", "--light-samples", "3"}).first == 0);
+    CHECK(renderWith("behind", {"--shadow-apex", "behind"}).first == 0);
+    const auto [badMethod, badMethodText] = renderWith("bad_method", {"--light-method", "stochastic"});
     CHECK(badMethod == 1);
     CHECK_THAT(badMethodText, Catch::Contains("--light-method"));
-    const auto [badApex, badApexText] = renderWith("bad_apex", "--method single --shadow-apex behind");
+    const auto [badApex, badApexText] = renderWith("bad_apex", {"--method", "single", "--shadow-apex", "behind"});
     CHECK(badApex == 1);
     CHECK_THAT(badApexText, Catch::Contains("behind"));
     CHECK_FALSE(fs::exists(scratchDir() / "bad_apex.png"));
-    CHECK(renderWith("bad_samples", "--light-samples 0").first == 1);
+    CHECK(renderWith("bad_samples", {"--light-samples", "0"}).first == 1);
 }
 
 TEST_CASE("Area light renders are deterministic over threads and regions", "[lights]") {
-    SceneDescription d;
-    d.camera = lookAtCamera({0, 3, -6}, {0, 0.5, 0}, 50);
-    d.objects.push_back(makeObject(PlaneShape{{0, 1, 0}, 0.0}, litTexture(Vec3(1.0))));
-    d.objects.push_back(makeObject(SphereShape{{0, 1, 0}, 0.8}, litTexture(Vec3(1.0))));
-    Light light = pointLight({0.5, 5, -0.5});
-    AreaLight area;
-    area.axis1 = {2, 0, 0};
-    area.axis2 = {0, 0, 2};
-    area.size1 = area.size2 = 4;
-    area.jitter = true;
-    light.area = area;
+    SceneDescription d = sphereUnderAreaLight(4);
+    Light& light = d.lights.back();
+    light.area->jitter = true;
     light.asos.jitter = true;
     light.asos.maxLevel = 3;
-    d.lights.push_back(light);
     for (LightMethod method : {LightMethod::Asos, LightMethod::Grid}) {
         auto rendered = [&](int threads, std::optional<PixelRegion> region) {
             RenderSettings s;
