@@ -89,6 +89,42 @@ inline float roundUpToFloatNonNegative(double x) {
 // worst relative error of the float roundings in (plane - origin) * inverse.
 inline constexpr double kFarScale = 1.0 + 0x1p-20;
 
+// One axis of a ray's set-up: the origin shifted toward the far side of each
+// plane it is compared with, the near and far inverse directions, and the
+// side of the slab entered first. `degenerate` marks a component below 1e-30
+// in magnitude (or NaN), whose inverse is infinite or overflows a float.
+struct AxisPrep {
+    float oNear, oFar, invNear, invFar;
+    int side;  // 0: the low plane is entered first (direction >= 0)
+    bool degenerate;
+};
+
+inline AxisPrep prepareAxis(double o, double d) {
+    constexpr float inf = std::numeric_limits<float>::infinity();
+    // Strictly beyond o on either side, after rounding to float.
+    const double shift = std::abs(o) * 0x1p-22 + 1e-30;
+    const auto above = static_cast<float>(o + shift), below = static_cast<float>(o - shift);
+    const int side = std::signbit(d) ? 1 : 0;
+    if (std::abs(d) >= 1e-30) [[likely]] {
+        // One division: kFarScale * (1 / d) in double is within
+        // 2^-52 of kFarScale / d, far below the margin kFarScale leaves.
+        const double inv = 1.0 / d;
+        return {side ? below : above, side ? above : below, static_cast<float>(inv),
+                static_cast<float>(kFarScale * inv), side, false};
+    }
+    if (d == 0.0) {
+        // Parallel: an infinite inverse gives -inf or +inf per plane;
+        // 0 * inf (NaN) can only occur for a plane strictly outside,
+        // where either answer is right.
+        const float i = side ? -inf : inf;
+        return {side ? below : above, side ? above : below, i, i, side, true};
+    }
+    // 1/d overflows a float (or d is NaN): drop this axis's constraint
+    // (conservative; a unit direction has another, larger component that
+    // still culls).
+    return {inf, -inf, inf, inf, 0, true};
+}
+
 struct RayPrep {
     Float4 oNear[3];
     Float4 oFar[3];
@@ -99,44 +135,13 @@ struct RayPrep {
     Float4 tMax;      // scaled by kFarScale, like the far distances
 
     RayPrep(const Ray& ray, double tMinD, double tMaxD) {
-        constexpr float inf = std::numeric_limits<float>::infinity();
         for (int i = 0; i < 3; ++i) {
-            const double d = ray.dir[i];
-            const double o = ray.origin[i];
-            // Strictly beyond o on either side, after rounding to float.
-            const double shift = std::abs(o) * 0x1p-22 + 1e-30;
-            const auto above = static_cast<float>(o + shift), below = static_cast<float>(o - shift);
-            float nearInv, farInv, oN, oF;
-            int side = std::signbit(d) ? 1 : 0;
-            if (std::abs(d) >= 1e-30) [[likely]] {
-                // One division: kFarScale * (1 / d) in double is within
-                // 2^-52 of kFarScale / d, far below the margin kFarScale leaves.
-                const double inv = 1.0 / d;
-                nearInv = static_cast<float>(inv);
-                farInv = static_cast<float>(kFarScale * inv);
-                oN = side ? below : above;
-                oF = side ? above : below;
-            } else if (d == 0.0) {
-                // Parallel: an infinite inverse gives -inf or +inf per plane;
-                // 0 * inf (NaN) can only occur for a plane strictly outside,
-                // where either answer is right.
-                nearInv = farInv = side ? -inf : inf;
-                oN = side ? below : above;
-                oF = side ? above : below;
-            } else {
-                // 1/d overflows a float (or d is NaN): drop this axis's
-                // constraint (conservative; a unit direction has another,
-                // larger component that still culls).
-                side = 0;
-                nearInv = farInv = inf;
-                oN = inf;
-                oF = -inf;
-            }
-            nearSide[i] = side;
-            oNear[i] = Float4{oN, oN, oN, oN};
-            oFar[i] = Float4{oF, oF, oF, oF};
-            invNear[i] = Float4{nearInv, nearInv, nearInv, nearInv};
-            invFar[i] = Float4{farInv, farInv, farInv, farInv};
+            const AxisPrep a = prepareAxis(ray.origin[i], ray.dir[i]);
+            nearSide[i] = a.side;
+            oNear[i] = Float4{a.oNear, a.oNear, a.oNear, a.oNear};
+            oFar[i] = Float4{a.oFar, a.oFar, a.oFar, a.oFar};
+            invNear[i] = Float4{a.invNear, a.invNear, a.invNear, a.invNear};
+            invFar[i] = Float4{a.invFar, a.invFar, a.invFar, a.invFar};
         }
         setRange(tMinD, tMaxD);
     }
@@ -244,6 +249,31 @@ struct StackEntry {
 inline constexpr int kMaxDepth = 96;
 inline constexpr int kStackSize = 3 * kMaxDepth + 4;
 
+// Packets of rays (Bvh::traversePacket; docs/accel.md, "Packet traversal"):
+// up to kPacketSize rays of one direction octant, one lane each, in groups of
+// four lanes. A lane holds a ray's set-up exactly as RayPrep has it. Lanes
+// past `count` copy lane 0's origin and inverses (so that bounds over all
+// lanes are bounds over the rays) with an empty t-range, so no box accepts them.
+inline constexpr int kPacketSize = 64;
+inline constexpr int kPacketGroups = kPacketSize / 4;
+
+struct PacketPrep {
+    Float4 oNear[3][kPacketGroups];
+    Float4 oFar[3][kPacketGroups];
+    Float4 invNear[3][kPacketGroups];
+    Float4 invFar[3][kPacketGroups];
+    Float4 tLo[kPacketGroups];
+    Float4 tHi[kPacketGroups];  // scaled by kFarScale, like RayPrep::tMax
+    std::uint32_t ray[kPacketSize];  // the caller's index of each lane's ray
+    int count = 0;
+};
+
+struct PacketStackEntry {
+    std::uint32_t ref;
+    float tNear;
+    std::uint32_t box;  // parent node * 4 + child slot: where the child's box is
+};
+
 template <class F, class... Args>
 using ResultOf = std::invoke_result_t<F&, Args...>;
 
@@ -299,6 +329,22 @@ public:
     template <bool Ordered, class Leaf>
     void traverse(const Ray& ray, double tMin, double tMax, Leaf&& leaf) const;
 
+    // The traversal of `traverse<true>` for many rays at once, for a caller
+    // whose rays are coherent (pixel tiles of a pinhole camera). Ray i is
+    // searched over [tMin, tMax[i]] (0 <= tMin); leaf(i, first, count) tests
+    // the items in leaf slots [first, first + count) for ray i and returns
+    // its far limit from then on (the current one, or nearer). Every leaf
+    // whose box ray i's own traversal would accept at its current far limit
+    // is handed to ray i (possibly with others, in another order), so a
+    // nearest-hit search whose answer does not depend on the order of its
+    // item tests gives each ray the answer of traverse<true>. Rays are taken
+    // kPacketSize at a time and grouped by direction octant; a ray with a
+    // direction component below 1e-30 in magnitude, or a far-off origin, is
+    // traversed alone.
+    template <class Leaf>
+    void traversePacket(std::span<const Ray> rays, double tMin, std::span<const double> tMax,
+                        Leaf&& leaf) const;
+
 private:
     friend struct BvhBuilder;
     // The traversal for one octant of ray directions (SX, SY, SZ: 1 where the
@@ -306,6 +352,10 @@ private:
     // entered first is known at compile time.
     template <int SX, int SY, int SZ, bool Ordered, class Leaf>
     void traverseOctant(const bvh_detail::RayPrep& prep, Leaf& leaf) const;
+
+    // The packet traversal for one octant (all lanes' directions in it).
+    template <int SX, int SY, int SZ, class Leaf>
+    void traversePacketOctant(bvh_detail::PacketPrep& packet, Leaf& leaf) const;
 
     std::vector<bvh_detail::Node> nodes_;  // nodes_[0] is the root
     std::vector<std::uint32_t> order_;     // item index per leaf slot
@@ -413,6 +463,251 @@ void Bvh::traverseOctant(const bvh_detail::RayPrep& prep, Leaf& leaf) const {
             const StackEntry& e = stack[--top];
             if (e.tNear <= farLimit) {
                 ref = e.ref;
+                break;
+            }
+        }
+    }
+}
+
+template <class Leaf>
+void Bvh::traversePacket(std::span<const Ray> rays, double tMin, std::span<const double> tMax,
+                         Leaf&& leaf) const {
+    using namespace bvh_detail;
+    if (nodes_.empty()) return;
+    PacketPrep packet;
+    const float tLo = roundDownToFloat(tMin > 0.0 ? tMin : 0.0);
+    for (std::size_t start = 0; start < rays.size(); start += kPacketSize) {
+        const int n = static_cast<int>(std::min<std::size_t>(kPacketSize, rays.size() - start));
+        AxisPrep prep[kPacketSize][3];
+        int octant[kPacketSize];
+        unsigned present = 0;
+        for (int i = 0; i < n; ++i) {
+            const Ray& ray = rays[start + i];
+            bool alone = false;
+            for (int a = 0; a < 3; ++a) {
+                const AxisPrep p = prepareAxis(ray.origin[a], ray.dir[a]);
+                prep[i][a] = p;
+                // The interval bounds need finite, non-zero lanes.
+                alone = alone || p.degenerate || !std::isfinite(p.oNear) ||
+                        !std::isfinite(p.oFar) || p.invNear == 0.0f || p.invFar == 0.0f ||
+                        !std::isfinite(p.invFar);
+            }
+            if (alone) {
+                octant[i] = -1;
+                const auto index = static_cast<std::uint32_t>(start + i);
+                traverse<true>(ray, tMin, tMax[index], [&](std::uint32_t first, std::uint32_t count) {
+                    return leaf(index, first, count);
+                });
+                continue;
+            }
+            octant[i] = prep[i][0].side | prep[i][1].side << 1 | prep[i][2].side << 2;
+            present |= 1u << octant[i];
+        }
+        while (present != 0) {
+            const int o = std::countr_zero(present);
+            present &= present - 1;
+            int lanes = 0;
+            int firstRay = -1;
+            for (int i = 0; i < n; ++i) {
+                if (octant[i] != o) continue;
+                if (firstRay < 0) firstRay = i;
+                const auto index = static_cast<std::uint32_t>(start + i);
+                packet.ray[lanes] = index;
+                const int g = lanes / 4, l = lanes % 4;
+                for (int a = 0; a < 3; ++a) {
+                    packet.oNear[a][g][l] = prep[i][a].oNear;
+                    packet.oFar[a][g][l] = prep[i][a].oFar;
+                    packet.invNear[a][g][l] = prep[i][a].invNear;
+                    packet.invFar[a][g][l] = prep[i][a].invFar;
+                }
+                packet.tLo[g][l] = tLo;
+                packet.tHi[g][l] = roundUpToFloatNonNegative(tMax[index] * kFarScale);
+                ++lanes;
+            }
+            packet.count = lanes;
+            for (; lanes % 4 != 0; ++lanes) {
+                const int g = lanes / 4, l = lanes % 4;
+                for (int a = 0; a < 3; ++a) {
+                    packet.oNear[a][g][l] = prep[firstRay][a].oNear;
+                    packet.oFar[a][g][l] = prep[firstRay][a].oFar;
+                    packet.invNear[a][g][l] = prep[firstRay][a].invNear;
+                    packet.invFar[a][g][l] = prep[firstRay][a].invFar;
+                }
+                packet.tLo[g][l] = std::numeric_limits<float>::infinity();
+                packet.tHi[g][l] = -std::numeric_limits<float>::infinity();
+            }
+            switch (o) {
+            case 0: traversePacketOctant<0, 0, 0>(packet, leaf); break;
+            case 1: traversePacketOctant<1, 0, 0>(packet, leaf); break;
+            case 2: traversePacketOctant<0, 1, 0>(packet, leaf); break;
+            case 3: traversePacketOctant<1, 1, 0>(packet, leaf); break;
+            case 4: traversePacketOctant<0, 0, 1>(packet, leaf); break;
+            case 5: traversePacketOctant<1, 0, 1>(packet, leaf); break;
+            case 6: traversePacketOctant<0, 1, 1>(packet, leaf); break;
+            default: traversePacketOctant<1, 1, 1>(packet, leaf); break;
+            }
+        }
+    }
+}
+
+template <int SX, int SY, int SZ, class Leaf>
+void Bvh::traversePacketOctant(bvh_detail::PacketPrep& packet, Leaf& leaf) const {
+    using namespace bvh_detail;
+    const int groups = (packet.count + 3) / 4;
+    const auto splat = [](float f) { return Float4{f, f, f, f}; };
+    const auto min4 = [](Float4 a, Float4 b) { return a < b ? a : b; };
+    const auto max4 = [](Float4 a, Float4 b) { return a > b ? a : b; };
+    const auto hmin = [](Float4 v) { return std::min(std::min(v[0], v[1]), std::min(v[2], v[3])); };
+    const auto hmax = [](Float4 v) { return std::max(std::max(v[0], v[1]), std::max(v[2], v[3])); };
+
+    // Bounds over the packet (docs/accel.md): for axis a, every lane's entry
+    // distance (plane - oNear) * invNear is at least the least of the
+    // products of the extreme origin on the entry side with the two extreme
+    // inverses, and its exit distance at most the greatest such product on
+    // the exit side (float subtraction and multiplication are monotonic).
+    Float4 entryOrigin[3], exitOrigin[3], nearInvA[3], nearInvB[3], farInvA[3], farInvB[3];
+    const int sides[3] = {SX, SY, SZ};
+    Float4 tLoMin = packet.tLo[0], tHiMax = packet.tHi[0];
+    for (int g = 1; g < groups; ++g) {
+        tLoMin = min4(tLoMin, packet.tLo[g]);
+        tHiMax = max4(tHiMax, packet.tHi[g]);
+    }
+    for (int a = 0; a < 3; ++a) {
+        Float4 oNearLo = packet.oNear[a][0], oNearHi = oNearLo;
+        Float4 oFarLo = packet.oFar[a][0], oFarHi = oFarLo;
+        Float4 nLo = packet.invNear[a][0], nHi = nLo, fLo = packet.invFar[a][0], fHi = fLo;
+        for (int g = 1; g < groups; ++g) {
+            oNearLo = min4(oNearLo, packet.oNear[a][g]);
+            oNearHi = max4(oNearHi, packet.oNear[a][g]);
+            oFarLo = min4(oFarLo, packet.oFar[a][g]);
+            oFarHi = max4(oFarHi, packet.oFar[a][g]);
+            nLo = min4(nLo, packet.invNear[a][g]);
+            nHi = max4(nHi, packet.invNear[a][g]);
+            fLo = min4(fLo, packet.invFar[a][g]);
+            fHi = max4(fHi, packet.invFar[a][g]);
+        }
+        // Positive direction: the entry distance grows with the plane minus
+        // the origin, so its least value has the greatest origin; negative:
+        // the least origin. The exit distance the other way round.
+        entryOrigin[a] = splat(sides[a] ? hmin(oNearLo) : hmax(oNearHi));
+        exitOrigin[a] = splat(sides[a] ? hmax(oFarHi) : hmin(oFarLo));
+        nearInvA[a] = splat(hmin(nLo));
+        nearInvB[a] = splat(hmax(nHi));
+        farInvA[a] = splat(hmin(fLo));
+        farInvB[a] = splat(hmax(fHi));
+    }
+    const Float4 tLo = splat(hmin(tLoMin));
+    float farLimit = hmax(tHiMax);
+    Float4 tHi = splat(farLimit);
+    const Node* const nodes = nodes_.data();
+
+    PacketStackEntry stack[kStackSize];
+    int top = 0;
+    std::uint32_t ref = 0, box = 0;
+    for (;;) {
+        while (!isLeaf(ref)) {
+            const Node& node = nodes[ref];
+            const std::uint32_t at = ref * 4;
+            const auto entry = [&](int a, const Float4& plane) {
+                const Float4 d = plane - entryOrigin[a];
+                return min4(d * nearInvA[a], d * nearInvB[a]);
+            };
+            const auto exit = [&](int a, const Float4& plane) {
+                const Float4 d = plane - exitOrigin[a];
+                return max4(d * farInvA[a], d * farInvB[a]);
+            };
+            const Float4 n0 = entry(0, node.box[SX][0]);
+            const Float4 n1 = entry(1, node.box[SY][1]);
+            const Float4 n2 = entry(2, node.box[SZ][2]);
+            const Float4 f0 = exit(0, node.box[1 - SX][0]);
+            const Float4 f1 = exit(1, node.box[1 - SY][1]);
+            const Float4 f2 = exit(2, node.box[1 - SZ][2]);
+            const Float4 lo = max4(max4(n0, tLo), max4(n1, n2));
+            const Float4 hi = min4(min4(f0, tHi), min4(f1, f2));
+            unsigned mask = moveMask(lo <= hi);
+            if (mask == 0) goto pop;
+            {
+                const int first = std::countr_zero(mask);
+                mask &= mask - 1;
+                if (mask == 0) {
+                    ref = node.child[first];
+                    box = at + first;
+                    continue;
+                }
+                const int second = std::countr_zero(mask);
+                mask &= mask - 1;
+                if (mask == 0) {
+                    const bool swap = lo[second] < lo[first];
+                    const int nearK = swap ? second : first, farK = swap ? first : second;
+                    stack[top++] = {node.child[farK], lo[farK], at + farK};
+                    ref = node.child[nearK];
+                    box = at + nearK;
+                    continue;
+                }
+                const int base = top;
+                stack[top++] = {node.child[first], lo[first], at + first};
+                stack[top++] = {node.child[second], lo[second], at + second};
+                while (mask != 0) {
+                    const int k = std::countr_zero(mask);
+                    mask &= mask - 1;
+                    stack[top++] = {node.child[k], lo[k], at + k};
+                }
+                for (int i = base + 1; i < top; ++i) {
+                    const PacketStackEntry e = stack[i];
+                    int j = i;
+                    while (j > base && stack[j - 1].tNear < e.tNear) {
+                        stack[j] = stack[j - 1];
+                        --j;
+                    }
+                    stack[j] = e;
+                }
+                --top;
+                ref = stack[top].ref;
+                box = stack[top].box;
+            }
+        }
+        if (const std::uint32_t count = leafCount(ref); count != 0) {
+            // Each lane's own box test (RayPrep's arithmetic, four lanes at
+            // once) decides which rays test the leaf's items.
+            const Node& parent = nodes[box / 4];
+            const int k = static_cast<int>(box % 4);
+            const Float4 near0 = splat(parent.box[SX][0][k]), far0 = splat(parent.box[1 - SX][0][k]);
+            const Float4 near1 = splat(parent.box[SY][1][k]), far1 = splat(parent.box[1 - SY][1][k]);
+            const Float4 near2 = splat(parent.box[SZ][2][k]), far2 = splat(parent.box[1 - SZ][2][k]);
+            const std::uint32_t first = leafFirst(ref);
+            bool changed = false;
+            for (int g = 0; g < groups; ++g) {
+                const Float4 n0 = (near0 - packet.oNear[0][g]) * packet.invNear[0][g];
+                const Float4 n1 = (near1 - packet.oNear[1][g]) * packet.invNear[1][g];
+                const Float4 n2 = (near2 - packet.oNear[2][g]) * packet.invNear[2][g];
+                const Float4 f0 = (far0 - packet.oFar[0][g]) * packet.invFar[0][g];
+                const Float4 f1 = (far1 - packet.oFar[1][g]) * packet.invFar[1][g];
+                const Float4 f2 = (far2 - packet.oFar[2][g]) * packet.invFar[2][g];
+                const Float4 lo = max4(max4(n0, packet.tLo[g]), max4(n1, n2));
+                const Float4 hi = min4(min4(f0, packet.tHi[g]), min4(f1, f2));
+                unsigned mask = moveMask(lo <= hi);
+                while (mask != 0) {
+                    const int l = std::countr_zero(mask);
+                    mask &= mask - 1;
+                    const double next = leaf(packet.ray[g * 4 + l], first, count);
+                    packet.tHi[g][l] = roundUpToFloatNonNegative(next * kFarScale);
+                    changed = true;
+                }
+            }
+            if (changed) {
+                Float4 m = packet.tHi[0];
+                for (int g = 1; g < groups; ++g) m = max4(m, packet.tHi[g]);
+                farLimit = hmax(m);
+                tHi = splat(farLimit);
+            }
+        }
+    pop:
+        for (;;) {
+            if (top == 0) return;
+            const PacketStackEntry& e = stack[--top];
+            if (e.tNear <= farLimit) {
+                ref = e.ref;
+                box = e.box;
                 break;
             }
         }
