@@ -252,8 +252,9 @@ inline constexpr int kStackSize = 3 * kMaxDepth + 4;
 // Packets of rays (Bvh::traversePacket; docs/accel.md, "Packet traversal"):
 // up to kPacketSize rays of one direction octant, one lane each, in groups of
 // four lanes. A lane holds a ray's set-up exactly as RayPrep has it. Lanes
-// past `count` copy lane 0's origin and inverses (so that bounds over all
-// lanes are bounds over the rays) with an empty t-range, so no box accepts them.
+// from `count` to the next multiple of four copy lane 0's origin and
+// inverses (so that bounds over all lanes are bounds over the rays) with an
+// empty t-range, so no box accepts them.
 inline constexpr int kPacketSize = 64;
 inline constexpr int kPacketGroups = kPacketSize / 4;
 
@@ -267,6 +268,40 @@ struct PacketPrep {
     std::uint32_t ray[kPacketSize];  // the caller's index of each lane's ray
     int count = 0;
 };
+
+// A box's planes as the lanes of one octant meet them: along axis a, the
+// plane entered first and the plane left last.
+struct PacketBox {
+    float nearPlane[3];
+    float farPlane[3];
+};
+
+// Bit l set for each lane l whose own box test (RayPrep's arithmetic, as
+// traverseOctant does it, four lanes at once) accepts the box. (Eight or
+// sixteen lanes at once with AVX2 or AVX-512, dispatched at run time, were no
+// faster: docs/accel.md.)
+inline std::uint64_t packetLanesHit(const PacketPrep& p, const PacketBox& b) {
+    const int groups = (p.count + 3) / 4;
+    const auto splat = [](float f) { return Float4{f, f, f, f}; };
+    const auto min4 = [](Float4 x, Float4 y) { return x < y ? x : y; };
+    const auto max4 = [](Float4 x, Float4 y) { return x > y ? x : y; };
+    const Float4 near0 = splat(b.nearPlane[0]), far0 = splat(b.farPlane[0]);
+    const Float4 near1 = splat(b.nearPlane[1]), far1 = splat(b.farPlane[1]);
+    const Float4 near2 = splat(b.nearPlane[2]), far2 = splat(b.farPlane[2]);
+    std::uint64_t mask = 0;
+    for (int g = 0; g < groups; ++g) {
+        const Float4 n0 = (near0 - p.oNear[0][g]) * p.invNear[0][g];
+        const Float4 n1 = (near1 - p.oNear[1][g]) * p.invNear[1][g];
+        const Float4 n2 = (near2 - p.oNear[2][g]) * p.invNear[2][g];
+        const Float4 f0 = (far0 - p.oFar[0][g]) * p.invFar[0][g];
+        const Float4 f1 = (far1 - p.oFar[1][g]) * p.invFar[1][g];
+        const Float4 f2 = (far2 - p.oFar[2][g]) * p.invFar[2][g];
+        const Float4 lo = max4(max4(n0, p.tLo[g]), max4(n1, n2));
+        const Float4 hi = min4(min4(f0, p.tHi[g]), min4(f1, f2));
+        mask |= static_cast<std::uint64_t>(moveMask(lo <= hi)) << (4 * g);
+    }
+    return mask;
+}
 
 struct PacketStackEntry {
     std::uint32_t ref;
@@ -380,7 +415,7 @@ void Bvh::traverse(const Ray& ray, double tMin, double tMax, Leaf&& leaf) const 
 }
 
 template <int SX, int SY, int SZ, bool Ordered, class Leaf>
-void Bvh::traverseOctant(const bvh_detail::RayPrep& prep, Leaf& leaf) const {
+__attribute__((always_inline)) inline void Bvh::traverseOctant(const bvh_detail::RayPrep& prep, Leaf& leaf) const {
     using namespace bvh_detail;
     // Locals, so that the loop keeps them in registers.
     const Float4 oNear0 = prep.oNear[0], oNear1 = prep.oNear[1], oNear2 = prep.oNear[2];
@@ -474,78 +509,107 @@ void Bvh::traversePacket(std::span<const Ray> rays, double tMin, std::span<const
                          Leaf&& leaf) const {
     using namespace bvh_detail;
     if (nodes_.empty()) return;
-    PacketPrep packet;
+    constexpr float kMaxFloat = std::numeric_limits<float>::max();
     const float tLo = roundDownToFloat(tMin > 0.0 ? tMin : 0.0);
+    // `all` holds the chunk's rays in order, one lane each; when they do not
+    // share one octant, `part` gathers each octant's lanes in turn.
+    PacketPrep all, part;
+    const auto run = [&](PacketPrep& packet, int octant) {
+        const int count = packet.count;
+        for (int lane = count; lane % 4 != 0; ++lane) {
+            const int g = lane / 4, l = lane % 4;
+            for (int a = 0; a < 3; ++a) {
+                packet.oNear[a][g][l] = packet.oNear[a][0][0];
+                packet.oFar[a][g][l] = packet.oFar[a][0][0];
+                packet.invNear[a][g][l] = packet.invNear[a][0][0];
+                packet.invFar[a][g][l] = packet.invFar[a][0][0];
+            }
+            packet.tLo[g][l] = std::numeric_limits<float>::infinity();
+            packet.tHi[g][l] = -std::numeric_limits<float>::infinity();
+        }
+        switch (octant) {
+        case 0: traversePacketOctant<0, 0, 0>(packet, leaf); break;
+        case 1: traversePacketOctant<1, 0, 0>(packet, leaf); break;
+        case 2: traversePacketOctant<0, 1, 0>(packet, leaf); break;
+        case 3: traversePacketOctant<1, 1, 0>(packet, leaf); break;
+        case 4: traversePacketOctant<0, 0, 1>(packet, leaf); break;
+        case 5: traversePacketOctant<1, 0, 1>(packet, leaf); break;
+        case 6: traversePacketOctant<0, 1, 1>(packet, leaf); break;
+        default: traversePacketOctant<1, 1, 1>(packet, leaf); break;
+        }
+    };
     for (std::size_t start = 0; start < rays.size(); start += kPacketSize) {
         const int n = static_cast<int>(std::min<std::size_t>(kPacketSize, rays.size() - start));
-        AxisPrep prep[kPacketSize][3];
-        int octant[kPacketSize];
+        std::int8_t octant[kPacketSize];
         unsigned present = 0;
+        bool anyAlone = false;
         for (int i = 0; i < n; ++i) {
+            // prepareAxis's values for a component of at least 1e-30, written
+            // straight into the lanes (a returned struct would be assembled
+            // and reloaded through memory).
             const Ray& ray = rays[start + i];
+            const int g = i / 4, l = i % 4;
             bool alone = false;
+            int oct = 0;
             for (int a = 0; a < 3; ++a) {
-                const AxisPrep p = prepareAxis(ray.origin[a], ray.dir[a]);
-                prep[i][a] = p;
-                // The interval bounds need finite, non-zero lanes.
-                alone = alone || p.degenerate || !std::isfinite(p.oNear) ||
-                        !std::isfinite(p.oFar) || p.invNear == 0.0f || p.invFar == 0.0f ||
-                        !std::isfinite(p.invFar);
+                const double d = ray.dir[a], o = ray.origin[a];
+                const double shift = std::abs(o) * 0x1p-22 + 1e-30;
+                const auto above = static_cast<float>(o + shift), below = static_cast<float>(o - shift);
+                const bool negative = std::signbit(d);
+                const double inv = 1.0 / d;
+                const auto nearInv = static_cast<float>(inv), farInv = static_cast<float>(kFarScale * inv);
+                all.oNear[a][g][l] = negative ? below : above;
+                all.oFar[a][g][l] = negative ? above : below;
+                all.invNear[a][g][l] = nearInv;
+                all.invFar[a][g][l] = farInv;
+                // The interval bounds need finite origins and finite,
+                // non-zero inverses; prepareAxis's degenerate cases go alone.
+                alone = alone || !(std::abs(d) >= 1e-30) || !(std::abs(above) <= kMaxFloat) ||
+                        !(std::abs(below) <= kMaxFloat) || nearInv == 0.0f || farInv == 0.0f ||
+                        !(std::abs(farInv) <= kMaxFloat);
+                oct |= static_cast<int>(negative) << a;
             }
-            if (alone) {
-                octant[i] = -1;
-                const auto index = static_cast<std::uint32_t>(start + i);
-                traverse<true>(ray, tMin, tMax[index], [&](std::uint32_t first, std::uint32_t count) {
-                    return leaf(index, first, count);
-                });
-                continue;
-            }
-            octant[i] = prep[i][0].side | prep[i][1].side << 1 | prep[i][2].side << 2;
-            present |= 1u << octant[i];
+            const auto index = static_cast<std::uint32_t>(start + i);
+            all.ray[i] = index;
+            all.tLo[g][l] = tLo;
+            all.tHi[g][l] = roundUpToFloatNonNegative(tMax[index] * kFarScale);
+            octant[i] = static_cast<std::int8_t>(alone ? -1 : oct);
+            anyAlone = anyAlone || alone;
+            if (!alone) present |= 1u << oct;
+        }
+        if (!anyAlone && std::has_single_bit(present)) {
+            // One octant, no ray alone: the common case of a pixel tile.
+            all.count = n;
+            run(all, std::countr_zero(present));
+            continue;
+        }
+        for (int i = 0; i < n; ++i) {
+            if (octant[i] >= 0) continue;
+            const auto index = static_cast<std::uint32_t>(start + i);
+            traverse<true>(rays[index], tMin, tMax[index], [&](std::uint32_t first, std::uint32_t count) {
+                return leaf(index, first, count);
+            });
         }
         while (present != 0) {
             const int o = std::countr_zero(present);
             present &= present - 1;
             int lanes = 0;
-            int firstRay = -1;
             for (int i = 0; i < n; ++i) {
                 if (octant[i] != o) continue;
-                if (firstRay < 0) firstRay = i;
-                const auto index = static_cast<std::uint32_t>(start + i);
-                packet.ray[lanes] = index;
-                const int g = lanes / 4, l = lanes % 4;
+                const int g = i / 4, l = i % 4, pg = lanes / 4, pl = lanes % 4;
                 for (int a = 0; a < 3; ++a) {
-                    packet.oNear[a][g][l] = prep[i][a].oNear;
-                    packet.oFar[a][g][l] = prep[i][a].oFar;
-                    packet.invNear[a][g][l] = prep[i][a].invNear;
-                    packet.invFar[a][g][l] = prep[i][a].invFar;
+                    part.oNear[a][pg][pl] = all.oNear[a][g][l];
+                    part.oFar[a][pg][pl] = all.oFar[a][g][l];
+                    part.invNear[a][pg][pl] = all.invNear[a][g][l];
+                    part.invFar[a][pg][pl] = all.invFar[a][g][l];
                 }
-                packet.tLo[g][l] = tLo;
-                packet.tHi[g][l] = roundUpToFloatNonNegative(tMax[index] * kFarScale);
+                part.tLo[pg][pl] = all.tLo[g][l];
+                part.tHi[pg][pl] = all.tHi[g][l];
+                part.ray[lanes] = all.ray[i];
                 ++lanes;
             }
-            packet.count = lanes;
-            for (; lanes % 4 != 0; ++lanes) {
-                const int g = lanes / 4, l = lanes % 4;
-                for (int a = 0; a < 3; ++a) {
-                    packet.oNear[a][g][l] = prep[firstRay][a].oNear;
-                    packet.oFar[a][g][l] = prep[firstRay][a].oFar;
-                    packet.invNear[a][g][l] = prep[firstRay][a].invNear;
-                    packet.invFar[a][g][l] = prep[firstRay][a].invFar;
-                }
-                packet.tLo[g][l] = std::numeric_limits<float>::infinity();
-                packet.tHi[g][l] = -std::numeric_limits<float>::infinity();
-            }
-            switch (o) {
-            case 0: traversePacketOctant<0, 0, 0>(packet, leaf); break;
-            case 1: traversePacketOctant<1, 0, 0>(packet, leaf); break;
-            case 2: traversePacketOctant<0, 1, 0>(packet, leaf); break;
-            case 3: traversePacketOctant<1, 1, 0>(packet, leaf); break;
-            case 4: traversePacketOctant<0, 0, 1>(packet, leaf); break;
-            case 5: traversePacketOctant<1, 0, 1>(packet, leaf); break;
-            case 6: traversePacketOctant<0, 1, 1>(packet, leaf); break;
-            default: traversePacketOctant<1, 1, 1>(packet, leaf); break;
-            }
+            part.count = lanes;
+            run(part, o);
         }
     }
 }
@@ -667,32 +731,20 @@ void Bvh::traversePacketOctant(bvh_detail::PacketPrep& packet, Leaf& leaf) const
             }
         }
         if (const std::uint32_t count = leafCount(ref); count != 0) {
-            // Each lane's own box test (RayPrep's arithmetic, four lanes at
-            // once) decides which rays test the leaf's items.
+            // Each lane's own box test decides which rays test the leaf's items.
             const Node& parent = nodes[box / 4];
             const int k = static_cast<int>(box % 4);
-            const Float4 near0 = splat(parent.box[SX][0][k]), far0 = splat(parent.box[1 - SX][0][k]);
-            const Float4 near1 = splat(parent.box[SY][1][k]), far1 = splat(parent.box[1 - SY][1][k]);
-            const Float4 near2 = splat(parent.box[SZ][2][k]), far2 = splat(parent.box[1 - SZ][2][k]);
+            const PacketBox planes{{parent.box[SX][0][k], parent.box[SY][1][k], parent.box[SZ][2][k]},
+                                   {parent.box[1 - SX][0][k], parent.box[1 - SY][1][k],
+                                    parent.box[1 - SZ][2][k]}};
             const std::uint32_t first = leafFirst(ref);
-            bool changed = false;
-            for (int g = 0; g < groups; ++g) {
-                const Float4 n0 = (near0 - packet.oNear[0][g]) * packet.invNear[0][g];
-                const Float4 n1 = (near1 - packet.oNear[1][g]) * packet.invNear[1][g];
-                const Float4 n2 = (near2 - packet.oNear[2][g]) * packet.invNear[2][g];
-                const Float4 f0 = (far0 - packet.oFar[0][g]) * packet.invFar[0][g];
-                const Float4 f1 = (far1 - packet.oFar[1][g]) * packet.invFar[1][g];
-                const Float4 f2 = (far2 - packet.oFar[2][g]) * packet.invFar[2][g];
-                const Float4 lo = max4(max4(n0, packet.tLo[g]), max4(n1, n2));
-                const Float4 hi = min4(min4(f0, packet.tHi[g]), min4(f1, f2));
-                unsigned mask = moveMask(lo <= hi);
-                while (mask != 0) {
-                    const int l = std::countr_zero(mask);
-                    mask &= mask - 1;
-                    const double next = leaf(packet.ray[g * 4 + l], first, count);
-                    packet.tHi[g][l] = roundUpToFloatNonNegative(next * kFarScale);
-                    changed = true;
-                }
+            std::uint64_t lanes = packetLanesHit(packet, planes);
+            const bool changed = lanes != 0;
+            while (lanes != 0) {
+                const int l = std::countr_zero(lanes);
+                lanes &= lanes - 1;
+                const double next = leaf(packet.ray[l], first, count);
+                packet.tHi[l / 4][l % 4] = roundUpToFloatNonNegative(next * kFarScale);
             }
             if (changed) {
                 Float4 m = packet.tHi[0];
