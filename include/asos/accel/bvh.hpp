@@ -89,42 +89,6 @@ inline float roundUpToFloatNonNegative(double x) {
 // worst relative error of the float roundings in (plane - origin) * inverse.
 inline constexpr double kFarScale = 1.0 + 0x1p-20;
 
-// One axis of a ray's set-up: the origin shifted toward the far side of each
-// plane it is compared with, the near and far inverse directions, and the
-// side of the slab entered first. `degenerate` marks a component below 1e-30
-// in magnitude (or NaN), whose inverse is infinite or overflows a float.
-struct AxisPrep {
-    float oNear, oFar, invNear, invFar;
-    int side;  // 0: the low plane is entered first (direction >= 0)
-    bool degenerate;
-};
-
-inline AxisPrep prepareAxis(double o, double d) {
-    constexpr float inf = std::numeric_limits<float>::infinity();
-    // Strictly beyond o on either side, after rounding to float.
-    const double shift = std::abs(o) * 0x1p-22 + 1e-30;
-    const auto above = static_cast<float>(o + shift), below = static_cast<float>(o - shift);
-    const int side = std::signbit(d) ? 1 : 0;
-    if (std::abs(d) >= 1e-30) [[likely]] {
-        // One division: kFarScale * (1 / d) in double is within
-        // 2^-52 of kFarScale / d, far below the margin kFarScale leaves.
-        const double inv = 1.0 / d;
-        return {side ? below : above, side ? above : below, static_cast<float>(inv),
-                static_cast<float>(kFarScale * inv), side, false};
-    }
-    if (d == 0.0) {
-        // Parallel: an infinite inverse gives -inf or +inf per plane;
-        // 0 * inf (NaN) can only occur for a plane strictly outside,
-        // where either answer is right.
-        const float i = side ? -inf : inf;
-        return {side ? below : above, side ? above : below, i, i, side, true};
-    }
-    // 1/d overflows a float (or d is NaN): drop this axis's constraint
-    // (conservative; a unit direction has another, larger component that
-    // still culls).
-    return {inf, -inf, inf, inf, 0, true};
-}
-
 struct RayPrep {
     Float4 oNear[3];
     Float4 oFar[3];
@@ -135,13 +99,44 @@ struct RayPrep {
     Float4 tMax;      // scaled by kFarScale, like the far distances
 
     RayPrep(const Ray& ray, double tMinD, double tMaxD) {
+        constexpr float inf = std::numeric_limits<float>::infinity();
         for (int i = 0; i < 3; ++i) {
-            const AxisPrep a = prepareAxis(ray.origin[i], ray.dir[i]);
-            nearSide[i] = a.side;
-            oNear[i] = Float4{a.oNear, a.oNear, a.oNear, a.oNear};
-            oFar[i] = Float4{a.oFar, a.oFar, a.oFar, a.oFar};
-            invNear[i] = Float4{a.invNear, a.invNear, a.invNear, a.invNear};
-            invFar[i] = Float4{a.invFar, a.invFar, a.invFar, a.invFar};
+            const double d = ray.dir[i];
+            const double o = ray.origin[i];
+            // Strictly beyond o on either side, after rounding to float.
+            const double shift = std::abs(o) * 0x1p-22 + 1e-30;
+            const auto above = static_cast<float>(o + shift), below = static_cast<float>(o - shift);
+            float nearInv, farInv, oN, oF;
+            int side = std::signbit(d) ? 1 : 0;
+            if (std::abs(d) >= 1e-30) [[likely]] {
+                // One division: kFarScale * (1 / d) in double is within
+                // 2^-52 of kFarScale / d, far below the margin kFarScale leaves.
+                const double inv = 1.0 / d;
+                nearInv = static_cast<float>(inv);
+                farInv = static_cast<float>(kFarScale * inv);
+                oN = side ? below : above;
+                oF = side ? above : below;
+            } else if (d == 0.0) {
+                // Parallel: an infinite inverse gives -inf or +inf per plane;
+                // 0 * inf (NaN) can only occur for a plane strictly outside,
+                // where either answer is right.
+                nearInv = farInv = side ? -inf : inf;
+                oN = side ? below : above;
+                oF = side ? above : below;
+            } else {
+                // 1/d overflows a float (or d is NaN): drop this axis's
+                // constraint (conservative; a unit direction has another,
+                // larger component that still culls).
+                side = 0;
+                nearInv = farInv = inf;
+                oN = inf;
+                oF = -inf;
+            }
+            nearSide[i] = side;
+            oNear[i] = Float4{oN, oN, oN, oN};
+            oFar[i] = Float4{oF, oF, oF, oF};
+            invNear[i] = Float4{nearInv, nearInv, nearInv, nearInv};
+            invFar[i] = Float4{farInv, farInv, farInv, farInv};
         }
         setRange(tMinD, tMaxD);
     }
@@ -544,7 +539,7 @@ void Bvh::traversePacket(std::span<const Ray> rays, double tMin, std::span<const
         unsigned present = 0;
         bool anyAlone = false;
         for (int i = 0; i < n; ++i) {
-            // prepareAxis's values for a component of at least 1e-30, written
+            // RayPrep's values for a component of at least 1e-30, written
             // straight into the lanes (a returned struct would be assembled
             // and reloaded through memory).
             const Ray& ray = rays[start + i];
@@ -563,7 +558,7 @@ void Bvh::traversePacket(std::span<const Ray> rays, double tMin, std::span<const
                 all.invNear[a][g][l] = nearInv;
                 all.invFar[a][g][l] = farInv;
                 // The interval bounds need finite origins and finite,
-                // non-zero inverses; prepareAxis's degenerate cases go alone.
+                // non-zero inverses; RayPrep's special cases go alone.
                 alone = alone || !(std::abs(d) >= 1e-30) || !(std::abs(above) <= kMaxFloat) ||
                         !(std::abs(below) <= kMaxFloat) || nearInv == 0.0f || farInv == 0.0f ||
                         !(std::abs(farInv) <= kMaxFloat);
