@@ -264,6 +264,15 @@ struct PacketPrep {
     int count = 0;
 };
 
+// A lane's far limit: as the single-ray loop's, except that a NaN limit
+// returned by a leaf (after which a lone ray pops nothing more) becomes -inf,
+// which accepts nothing either and leaves the packet's greatest limit to the
+// other lanes. (A ray whose search starts with a NaN limit goes alone.)
+inline float laneFarLimit(double tMax) {
+    const float f = roundUpToFloatNonNegative(tMax * kFarScale);
+    return f == f ? f : -std::numeric_limits<float>::infinity();
+}
+
 // A box's planes as the lanes of one octant meet them: along axis a, the
 // plane entered first and the plane left last.
 struct PacketBox {
@@ -565,9 +574,10 @@ void Bvh::traversePacket(std::span<const Ray> rays, double tMin, std::span<const
                 oct |= static_cast<int>(negative) << a;
             }
             const auto index = static_cast<std::uint32_t>(start + i);
+            alone = alone || std::isnan(tMax[index]);
             all.ray[i] = index;
             all.tLo[g][l] = tLo;
-            all.tHi[g][l] = roundUpToFloatNonNegative(tMax[index] * kFarScale);
+            all.tHi[g][l] = laneFarLimit(tMax[index]);
             octant[i] = static_cast<std::int8_t>(alone ? -1 : oct);
             anyAlone = anyAlone || alone;
             if (!alone) present |= 1u << oct;
@@ -739,7 +749,7 @@ void Bvh::traversePacketOctant(bvh_detail::PacketPrep& packet, Leaf& leaf) const
                 const int l = std::countr_zero(lanes);
                 lanes &= lanes - 1;
                 const double next = leaf(packet.ray[l], first, count);
-                packet.tHi[l / 4][l % 4] = roundUpToFloatNonNegative(next * kFarScale);
+                packet.tHi[l / 4][l % 4] = laneFarLimit(next);
             }
             if (changed) {
                 Float4 m = packet.tHi[0];
