@@ -41,9 +41,6 @@ LightContext sampleContext(AreaLightScratch& scratch, std::uint64_t seed, const 
     return {&scratch, PixelRandom(seed, sample.pixelX, sample.pixelY), sample.index, nullptr};
 }
 
-// The classic methods: every primary ray is an eye ray traced with plain
-// shadow rays toward point lights (docs/rendering.md, "Classic anti-aliasing
-// methods") and the lights' method toward area lights.
 // The radiance of eye rays for the classic methods; the grid and jitter
 // estimators hand it a pixel's rays in batches, whose hits one packet search
 // finds (the same hits as one by one, so the same image).
@@ -72,6 +69,9 @@ struct EyeRadiance {
     }
 };
 
+// The classic methods: every primary ray is an eye ray traced with plain
+// shadow rays toward point lights (docs/rendering.md, "Classic anti-aliasing
+// methods") and the lights' method toward area lights.
 TileRenderResult renderClassic(const RayTracer& tracer, const CameraModel& camera,
                                const RenderSettings& s, const TileRenderOptions& options) {
     tbb::enumerable_thread_specific<AreaLightScratch> scratch;
