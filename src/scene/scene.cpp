@@ -1,6 +1,7 @@
 #include "asos/scene/scene.hpp"
 
 #include <algorithm>
+#include <memory>
 #include <stdexcept>
 
 namespace asos {
@@ -136,19 +137,37 @@ struct Scene::NearestSearch {
         return far;
     }
 
-    std::optional<SurfaceHit> result() {
-        if (bestSlot < 0) return std::nullopt;
-        const auto slot = static_cast<std::uint32_t>(bestSlot);
+    // The winner's local hit, for a leaf sphere made now (bestSlot >= 0).
+    void finishLocal() {
         if (bestIsLeafSphere) {
             // Sphere::intersect's hit, from the same ray and t.
             const auto base = static_cast<std::uint32_t>(scene->unbounded_.size());
+            const auto slot = static_cast<std::uint32_t>(bestSlot);
             const Ray local{ray->origin + scene->leafSpheres_[slot - base].localOffset, ray->dir};
             const Vec3 p = local.at(far);
             bestLocal = LocalHit{far, p, p};
         }
+    }
+
+    std::optional<SurfaceHit> result() {
+        if (bestSlot < 0) return std::nullopt;
+        const auto slot = static_cast<std::uint32_t>(bestSlot);
+        finishLocal();
         SurfaceHit hit = scene->primitives_[slot].surfaceHit(*ray, bestLocal);
         hit.objectIndex = static_cast<int>(scene->objectOf_[slot]);
         return hit;
+    }
+
+    // The same, written into `out` (the packet search: no temporary to copy).
+    void writeResult(std::optional<SurfaceHit>& out) {
+        if (bestSlot < 0) {
+            out.reset();
+            return;
+        }
+        const auto slot = static_cast<std::uint32_t>(bestSlot);
+        finishLocal();
+        SurfaceHit& hit = out.emplace(scene->primitives_[slot].surfaceHit(*ray, bestLocal));
+        hit.objectIndex = static_cast<int>(scene->objectOf_[slot]);
     }
 };
 
@@ -169,17 +188,22 @@ void Scene::intersect(std::span<const Ray> rays, double tMin, double tMax,
     constexpr std::size_t kChunk = bvh_detail::kPacketSize;
     for (std::size_t start = 0; start < rays.size(); start += kChunk) {
         const std::size_t n = std::min(kChunk, rays.size() - start);
-        NearestSearch searches[kChunk];
+        // Left uninitialised, each search made in place (default-made ones
+        // would cost clearing 6.6 KB a packet); trivially destructible.
+        union Searches {
+            Searches() {}
+            NearestSearch at[kChunk];
+        } searches;
         double far[kChunk];
         for (std::size_t i = 0; i < n; ++i) {
-            searches[i] = NearestSearch(*this, rays[start + i], tMin, tMax);
-            searches[i].unbounded();
-            far[i] = searches[i].far;
+            NearestSearch* s = std::construct_at(&searches.at[i], *this, rays[start + i], tMin, tMax);
+            s->unbounded();
+            far[i] = s->far;
         }
         bvh_.traversePacket(rays.subspan(start, n), tMin, std::span<const double>(far, n),
                             [&](std::uint32_t i, std::uint32_t first, std::uint32_t count)
-                                __attribute__((always_inline)) { return searches[i].leaf(first, count); });
-        for (std::size_t i = 0; i < n; ++i) hits[start + i] = searches[i].result();
+                                __attribute__((always_inline)) { return searches.at[i].leaf(first, count); });
+        for (std::size_t i = 0; i < n; ++i) searches.at[i].writeResult(hits[start + i]);
     }
 }
 
