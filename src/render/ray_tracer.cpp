@@ -4,7 +4,11 @@ namespace asos {
 
 Vec3 RayTracer::radiance(const Ray& ray, int depth, double weight, RenderCounters& counters,
                          const LightContext& context) const {
-    const std::optional<SurfaceHit> hit = nearestHit(ray);
+    return radiance(nearestHit(ray), ray, depth, weight, counters, context);
+}
+
+Vec3 RayTracer::radiance(const std::optional<SurfaceHit>& hit, const Ray& ray, int depth,
+                         double weight, RenderCounters& counters, const LightContext& context) const {
     if (!hit) return backgroundColor(description());
     return shade(*hit, ray, depth, weight, counters, context);
 }

@@ -1,6 +1,10 @@
 #include "asos/render/renderer.hpp"
 
+#include <algorithm>
+#include <array>
 #include <chrono>
+#include <optional>
+#include <span>
 #include <stdexcept>
 
 #include <tbb/enumerable_thread_specific.h>
@@ -37,6 +41,34 @@ LightContext sampleContext(AreaLightScratch& scratch, std::uint64_t seed, const 
     return {&scratch, PixelRandom(seed, sample.pixelX, sample.pixelY), sample.index, nullptr};
 }
 
+// The radiance of eye rays for the classic methods; the grid and jitter
+// estimators hand it a pixel's rays in batches, whose hits one packet search
+// finds (the same hits as one by one, so the same image).
+struct EyeRadiance {
+    const RayTracer& tracer;
+    RenderCounters& counters;
+    AreaLightScratch& area;
+    std::uint64_t seed;
+
+    Vec3 operator()(const Ray& ray, const PrimarySample& sample) const {
+        ++counters.eyeRays;
+        return tracer.radiance(ray, 1, 1.0, counters, sampleContext(area, seed, sample));
+    }
+    void batch(std::span<const Ray> rays, std::span<const PrimarySample> samples,
+               std::span<Vec3> colors) const {
+        std::array<std::optional<SurfaceHit>, kPrimaryBatch> hits;
+        for (std::size_t start = 0; start < rays.size(); start += hits.size()) {
+            const std::size_t n = std::min(hits.size(), rays.size() - start);
+            tracer.nearestHits(rays.subspan(start, n), std::span(hits).first(n));
+            for (std::size_t k = 0; k < n; ++k) {
+                ++counters.eyeRays;
+                colors[start + k] = tracer.radiance(hits[k], rays[start + k], 1, 1.0, counters,
+                                                    sampleContext(area, seed, samples[start + k]));
+            }
+        }
+    }
+};
+
 // The classic methods: every primary ray is an eye ray traced with plain
 // shadow rays toward point lights (docs/rendering.md, "Classic anti-aliasing
 // methods") and the lights' method toward area lights.
@@ -44,11 +76,7 @@ TileRenderResult renderClassic(const RayTracer& tracer, const CameraModel& camer
                                const RenderSettings& s, const TileRenderOptions& options) {
     tbb::enumerable_thread_specific<AreaLightScratch> scratch;
     auto eyeRadiance = [&](RenderCounters& counters) {
-        return [&tracer, &counters, &area = scratch.local(), seed = s.seed](const Ray& ray,
-                                                                          const PrimarySample& sample) {
-            ++counters.eyeRays;
-            return tracer.radiance(ray, 1, 1.0, counters, sampleContext(area, seed, sample));
-        };
+        return EyeRadiance{tracer, counters, scratch.local(), s.seed};
     };
     switch (s.method) {
         case RenderMethod::Single:

@@ -1,5 +1,7 @@
 #include "asos/scene/scene.hpp"
 
+#include <algorithm>
+#include <memory>
 #include <stdexcept>
 
 namespace asos {
@@ -68,39 +70,64 @@ std::optional<LocalHit> Scene::intersectSlot(std::uint32_t slot, const Ray& ray,
     return primitives_[slot].intersectLocal(ray, tMin, tMax);
 }
 
-std::optional<SurfaceHit> Scene::intersect(const Ray& ray, double tMin, double tMax) const {
-    // The search keeps the nearest candidate's slot and local hit; the world
-    // record (Primitive::surfaceHit) is made for the winner only. A leaf
-    // sphere keeps only its t: its local hit is made once, at the end.
-    constexpr std::uint32_t kNone = ~0u;
-    std::uint32_t bestSlot = kNone;
+// One ray's nearest-hit search, shared by the single-ray and the packet
+// search so that both do the same arithmetic. It keeps the nearest
+// candidate's slot and local hit; the world record (Primitive::surfaceHit) is
+// made for the winner only. A leaf sphere keeps only its t: its local hit is
+// made once, at the end.
+//
+// Ties: a hit at the current far limit replaces the best one only from a
+// higher slot, so the answer does not depend on the order in which the
+// traversal reaches the leaves (the packet traversal reaches them in another
+// order than a lone ray). Every primitive's hit is the nearest of its
+// candidates at or after tMin, kept if at most tMax, so an item's answer
+// does not depend on the far limit it is tested with either.
+struct Scene::NearestSearch {
+    const Scene* scene = nullptr;
+    const Ray* ray = nullptr;
+    double tMin = 0.0;
+    double far = 0.0;
+    std::int64_t bestSlot = -1;
     bool bestIsLeafSphere = false;
     LocalHit bestLocal;
-    for (std::uint32_t slot = 0; slot < unbounded_.size(); ++slot) {
-        if (auto hit = primitives_[slot].intersectLocal(ray, tMin, tMax)) {
-            tMax = hit->t;
-            bestSlot = slot;
-            bestLocal = *hit;
+
+    NearestSearch() = default;
+    NearestSearch(const Scene& s, const Ray& r, double lo, double hi)
+        : scene(&s), ray(&r), tMin(lo), far(hi) {}
+
+    // t in [tMin, far] found at `slot` beats the best so far.
+    bool wins(double t, std::uint32_t slot) const {
+        return t >= tMin && t <= far && (t < far || static_cast<std::int64_t>(slot) > bestSlot);
+    }
+
+    void unbounded() {
+        for (std::uint32_t slot = 0; slot < scene->unbounded_.size(); ++slot) {
+            if (auto hit = scene->primitives_[slot].intersectLocal(*ray, tMin, far);
+                hit && wins(hit->t, slot)) {
+                far = hit->t;
+                bestSlot = slot;
+                bestLocal = *hit;
+            }
         }
     }
-    // The BVH's items sit at slots base + leaf slot (Scene::build).
-    const auto base = static_cast<std::uint32_t>(unbounded_.size());
-    double far = tMax;
-    // Inlined into the traversal loop: an out-of-line call there would save
-    // and restore the loop's vector registers at every leaf.
-    const auto leaf = [&](std::uint32_t first, std::uint32_t count) __attribute__((always_inline)) {
+
+    // The BVH's items sit at slots base + leaf slot (Scene::build). Inlined
+    // into the traversal loop: an out-of-line call there would save and
+    // restore the loop's vector registers at every leaf.
+    __attribute__((always_inline)) double leaf(std::uint32_t first, std::uint32_t count) {
+        const auto base = static_cast<std::uint32_t>(scene->unbounded_.size());
         for (std::uint32_t k = first; k < first + count; ++k) {
-            const TranslatedSphere& sphere = leafSpheres_[k];
+            const TranslatedSphere& sphere = scene->leafSpheres_[k];
             if (sphere.radius >= 0.0) {
-                const double t = Sphere::nearestRoot(Ray{ray.origin + sphere.localOffset, ray.dir},
+                const double t = Sphere::nearestRoot(Ray{ray->origin + sphere.localOffset, ray->dir},
                                                      sphere.radius, tMin, far);
-                if (t >= tMin && t <= far) {
+                if (wins(t, base + k)) {
                     far = t;
                     bestSlot = base + k;
                     bestIsLeafSphere = true;
                 }
-            } else if (const auto hit = intersectSlot(base + k, ray, tMin, far);
-                       hit && hit->t >= tMin && hit->t <= far) {
+            } else if (const auto hit = scene->intersectSlot(base + k, *ray, tMin, far);
+                       hit && wins(hit->t, base + k)) {
                 far = hit->t;
                 bestSlot = base + k;
                 bestIsLeafSphere = false;
@@ -108,18 +135,76 @@ std::optional<SurfaceHit> Scene::intersect(const Ray& ray, double tMin, double t
             }
         }
         return far;
-    };
-    bvh_.traverse<true>(ray, tMin, tMax, leaf);
-    if (bestSlot == kNone) return std::nullopt;
-    if (bestIsLeafSphere) {
-        // Sphere::intersect's hit, from the same ray and t.
-        const Ray local{ray.origin + leafSpheres_[bestSlot - base].localOffset, ray.dir};
-        const Vec3 p = local.at(far);
-        bestLocal = LocalHit{far, p, p};
     }
-    SurfaceHit hit = primitives_[bestSlot].surfaceHit(ray, bestLocal);
-    hit.objectIndex = static_cast<int>(objectOf_[bestSlot]);
-    return hit;
+
+    // The winner's local hit, for a leaf sphere made now (bestSlot >= 0).
+    void finishLocal() {
+        if (bestIsLeafSphere) {
+            // Sphere::intersect's hit, from the same ray and t.
+            const auto base = static_cast<std::uint32_t>(scene->unbounded_.size());
+            const auto slot = static_cast<std::uint32_t>(bestSlot);
+            const Ray local{ray->origin + scene->leafSpheres_[slot - base].localOffset, ray->dir};
+            const Vec3 p = local.at(far);
+            bestLocal = LocalHit{far, p, p};
+        }
+    }
+
+    std::optional<SurfaceHit> result() {
+        if (bestSlot < 0) return std::nullopt;
+        const auto slot = static_cast<std::uint32_t>(bestSlot);
+        finishLocal();
+        SurfaceHit hit = scene->primitives_[slot].surfaceHit(*ray, bestLocal);
+        hit.objectIndex = static_cast<int>(scene->objectOf_[slot]);
+        return hit;
+    }
+
+    // The same, written into `out` (the packet search: no temporary to copy).
+    void writeResult(std::optional<SurfaceHit>& out) {
+        if (bestSlot < 0) {
+            out.reset();
+            return;
+        }
+        const auto slot = static_cast<std::uint32_t>(bestSlot);
+        finishLocal();
+        SurfaceHit& hit = out.emplace(scene->primitives_[slot].surfaceHit(*ray, bestLocal));
+        hit.objectIndex = static_cast<int>(scene->objectOf_[slot]);
+    }
+};
+
+std::optional<SurfaceHit> Scene::intersect(const Ray& ray, double tMin, double tMax) const {
+    NearestSearch search(*this, ray, tMin, tMax);
+    search.unbounded();
+    bvh_.traverse<true>(ray, tMin, search.far,
+                        [&](std::uint32_t first, std::uint32_t count) __attribute__((always_inline)) {
+                            return search.leaf(first, count);
+                        });
+    return search.result();
+}
+
+void Scene::intersect(std::span<const Ray> rays, double tMin, double tMax,
+                      std::span<std::optional<SurfaceHit>> hits) const {
+    if (hits.size() != rays.size())
+        throw std::invalid_argument("Scene::intersect: as many hits as rays are needed");
+    constexpr std::size_t kChunk = bvh_detail::kPacketSize;
+    for (std::size_t start = 0; start < rays.size(); start += kChunk) {
+        const std::size_t n = std::min(kChunk, rays.size() - start);
+        // Left uninitialised, each search made in place (default-made ones
+        // would cost clearing 6.6 KB a packet); trivially destructible.
+        union Searches {
+            Searches() {}
+            NearestSearch at[kChunk];
+        } searches;
+        double far[kChunk];
+        for (std::size_t i = 0; i < n; ++i) {
+            NearestSearch* s = std::construct_at(&searches.at[i], *this, rays[start + i], tMin, tMax);
+            s->unbounded();
+            far[i] = s->far;
+        }
+        bvh_.traversePacket(rays.subspan(start, n), tMin, std::span<const double>(far, n),
+                            [&](std::uint32_t i, std::uint32_t first, std::uint32_t count)
+                                __attribute__((always_inline)) { return searches.at[i].leaf(first, count); });
+        for (std::size_t i = 0; i < n; ++i) searches.at[i].writeResult(hits[start + i]);
+    }
 }
 
 bool Scene::occluded(const Ray& ray, double tMin, double tMax) const {

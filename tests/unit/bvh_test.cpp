@@ -1,6 +1,7 @@
 #include <catch2/catch.hpp>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <optional>
 #include <random>
@@ -234,6 +235,139 @@ TEST_CASE("BVH keeps hits on the edges of flat boxes (float rounding of the slab
         }
     }
     CHECK(hits > 10000);
+}
+
+namespace {
+
+// A point on a box's boundary: each coordinate at lo, hi or between.
+Vec3 pointOnBoundary(const Bounds3& b, std::mt19937_64& rng) {
+    std::uniform_real_distribution<double> u01(0.0, 1.0);
+    Vec3 p;
+    for (int i = 0; i < 3; ++i) {
+        const int pick = static_cast<int>(rng() % 3);
+        p[i] = pick == 0 ? b.lo[i] : pick == 1 ? b.hi[i] : b.lo[i] + u01(rng) * (b.hi[i] - b.lo[i]);
+    }
+    return p;
+}
+
+// Packets of several kinds: an 8x8 pinhole tile (coherent, one octant or
+// straddling axis planes), rays from one origin or from nearby origins aimed
+// at box edges and corners (mixed octants), and random rays whose directions
+// include exact zeros and axis directions (traversed alone).
+std::vector<Ray> randomPacket(std::mt19937_64& rng, const std::vector<Bounds3>& boxes, int kind, int size) {
+    std::uniform_real_distribution<double> u01(0.0, 1.0);
+    std::vector<Ray> rays;
+    const Vec3 eye = randomUnit(rng) * (5.0 + 20.0 * u01(rng));
+    switch (kind) {
+    case 0: {
+        const Bounds3& target = boxes[rng() % boxes.size()];
+        const Vec3 forward = glm::normalize(target.center() - eye);
+        const Vec3 right = glm::normalize(glm::cross(forward, randomUnit(rng)));
+        const Vec3 up = glm::cross(right, forward);
+        const double step = std::pow(10.0, -4.0 + 3.0 * u01(rng));
+        const int side = static_cast<int>(std::ceil(std::sqrt(size)));
+        for (int i = 0; i < size; ++i)
+            rays.push_back({eye, glm::normalize(forward + (i % side - side / 2) * step * right +
+                                                (i / side - side / 2) * step * up)});
+        break;
+    }
+    case 1:
+    case 2: {
+        // Boxes near one target, so that the rays are somewhat coherent.
+        const Bounds3& target = boxes[rng() % boxes.size()];
+        for (int i = 0; i < size; ++i) {
+            const Bounds3* b = &boxes[rng() % boxes.size()];
+            if (rng() % 4 != 0) b = &target;
+            const Vec3 origin = kind == 1 ? eye : eye + randomUnit(rng) * 0.3 * u01(rng);
+            rays.push_back({origin, glm::normalize(pointOnBoundary(*b, rng) - origin)});
+        }
+        break;
+    }
+    default:
+        for (int i = 0; i < size; ++i) rays.push_back(randomRay(rng, i % 2 == 0));
+        break;
+    }
+    return rays;
+}
+
+}  // namespace
+
+TEST_CASE("BVH packet traversal hands every ray each leaf its own traversal accepts", "[accel][bvh][packet]") {
+    std::mt19937_64 rng(21);
+    std::uniform_real_distribution<double> u01(0.0, 1.0);
+    // Grid boxes (a fifth flat) and flat boxes at arbitrary coordinates.
+    std::vector<std::vector<Bounds3>> scenes{randomBoxes(rng, 2000)};
+    {
+        std::vector<Bounds3> flat(600);
+        for (auto& b : flat) {
+            const Vec3 c = (Vec3(u01(rng), u01(rng), u01(rng)) - 0.5) * 20.0;
+            Vec3 h = Vec3(u01(rng), u01(rng), u01(rng)) * 0.3;
+            h[rng() % 3] = 0.0;
+            b = {c - h, c + h};
+        }
+        scenes.push_back(flat);
+    }
+    int rays = 0, hits = 0;
+    for (const auto& boxes : scenes) {
+        for (int leafSize : {1, 4}) {
+            BvhBuildOptions options;
+            options.maxLeafSize = leafSize;
+            const Bvh bvh = Bvh::build(boxes, options);
+            const auto hit = [&](std::uint32_t i, const Ray& r, double lo, double hi) {
+                return hitBox(boxes[i], r, lo, hi);
+            };
+            for (int trial = 0; trial < 400; ++trial) {
+                const int size = std::array<int, 5>{1, 5, 64, 64, 150}[trial % 5];
+                const auto packet = randomPacket(rng, boxes, trial / 5 % 4, size);
+                const double tMin = trial % 3 == 0 ? 0.5 * u01(rng) : 0.0;
+                std::vector<double> tMax(packet.size());
+                for (auto& t : tMax) t = rng() % 3 == 0 ? tMin + 30.0 * u01(rng) : kInfinity;
+                // A NaN limit (that ray is traversed alone) must not cost
+                // the other rays of the packet their leaves.
+                if (trial % 7 == 6) tMax[rng() % tMax.size()] = std::nan("");
+
+                // A fixed far limit: the leaves a lone ray's traversal
+                // accepts must all reach that ray in the packet.
+                std::vector<std::set<std::uint32_t>> handed(packet.size());
+                bvh.traversePacket(packet, tMin, tMax, [&](std::uint32_t i, std::uint32_t first, std::uint32_t) {
+                    handed[i].insert(first);
+                    return tMax[i];
+                });
+                for (std::size_t i = 0; i < packet.size(); ++i) {
+                    std::set<std::uint32_t> alone;
+                    bvh.traverse<true>(packet[i], tMin, tMax[i], [&](std::uint32_t first, std::uint32_t) {
+                        alone.insert(first);
+                        return tMax[i];
+                    });
+                    for (const std::uint32_t first : alone) REQUIRE(handed[i].count(first) == 1);
+                }
+
+                // A shrinking far limit: each ray's nearest hit.
+                std::vector<std::optional<double>> nearest(packet.size());
+                std::vector<double> far = tMax;
+                bvh.traversePacket(packet, tMin, tMax, [&](std::uint32_t i, std::uint32_t first, std::uint32_t count) {
+                    for (std::uint32_t k = first; k < first + count; ++k) {
+                        if (const auto t = hit(bvh.itemOrder()[k], packet[i], tMin, far[i])) {
+                            far[i] = *t;
+                            nearest[i] = t;
+                        }
+                    }
+                    return far[i];
+                });
+                for (std::size_t i = 0; i < packet.size(); ++i) {
+                    if (std::isnan(tMax[i])) continue;  // no nearest hit to speak of
+                    const auto expected = bruteNearest(boxes.size(), packet[i], tMin, tMax[i], hit);
+                    ++rays;
+                    REQUIRE(expected.has_value() == nearest[i].has_value());
+                    if (expected) {
+                        ++hits;
+                        REQUIRE(*nearest[i] == expected->t);
+                    }
+                }
+            }
+        }
+    }
+    CHECK(hits > rays / 4);
 }
 
 TEST_CASE("BVH handles coincident items, far coordinates and degenerate input", "[accel][bvh]") {

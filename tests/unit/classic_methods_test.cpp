@@ -1,6 +1,8 @@
 #include <catch2/catch.hpp>
 
 #include <cmath>
+#include <cstdint>
+#include <span>
 #include <vector>
 
 #include "asos/render/classic_methods.hpp"
@@ -348,4 +350,62 @@ TEST_CASE("Shared corners and the adaptive pass render deterministically", "[met
         images.push_back(r.color);
     }
     CHECK(images[0] == images[1]);
+}
+
+namespace {
+
+// A radiance function that also takes batches (as the renderer's eye
+// radiance does, to search a pixel's hits as one packet): the estimators
+// must give the same pixel, bit for bit, as from one ray at a time.
+struct Wavy {
+    int w, h;
+    Vec3 operator()(const Ray& r, const PrimarySample& s) const {
+        const Vec2 p = imagePoint(r, w, h);
+        return Vec3(std::sin(3.1 * p.x + 0.7 * p.y), std::cos(1.3 * p.x * p.y), 0.01 * s.index);
+    }
+};
+struct BatchedWavy {
+    Wavy f;
+    int batches = 0, rays = 0;
+    std::uint32_t nextIndex = 0;
+    Vec3 operator()(const Ray&, const PrimarySample&) const {
+        FAIL("the estimators must use the batches");
+        return Vec3(0.0);
+    }
+    void batch(std::span<const Ray> r, std::span<const PrimarySample> s, std::span<Vec3> colors) {
+        REQUIRE(r.size() == s.size());
+        REQUIRE(r.size() == colors.size());
+        REQUIRE(r.size() <= std::size_t(kPrimaryBatch));
+        ++batches;
+        for (std::size_t k = 0; k < r.size(); ++k) {
+            CHECK(s[k].index == nextIndex++);  // in order, each once
+            colors[k] = f(r[k], s[k]);
+            ++rays;
+        }
+    }
+};
+
+}  // namespace
+
+TEST_CASE("Grid and jitter give the same pixel from batches as one ray at a time", "[classic]") {
+    const CameraModel cam = imageSpaceCamera(16, 16);
+    const Wavy f{16, 16};
+    for (int n : {1, 3, 8, 9, 20}) {
+        for (int x : {0, 7}) {
+            BatchedWavy g{f};
+            const PixelResult a = estimateGrid(cam, x, 5, n, f);
+            const PixelResult b = estimateGrid(cam, x, 5, n, g);
+            CHECK(a.color == b.color);
+            CHECK(a.rays == b.rays);
+            CHECK(g.rays == n * n);
+            CHECK(g.batches == (n * n + kPrimaryBatch - 1) / kPrimaryBatch);
+            BatchedWavy j{f};
+            const PixelRandom rng(11, x, 5);
+            const PixelResult c = estimateJitter(cam, x, 5, n, rng, f);
+            const PixelResult e = estimateJitter(cam, x, 5, n, rng, j);
+            CHECK(c.color == e.color);
+            CHECK(c.rays == e.rays);
+            CHECK(j.rays == n * n);
+        }
+    }
 }

@@ -2,6 +2,9 @@
 // reflections up to max_trace_level, as POV-Ray 3.7 traces them.
 #include <catch2/catch.hpp>
 
+#include <optional>
+#include <vector>
+
 #include "asos/render/ray_tracer.hpp"
 #include "render_scenes.hpp"
 
@@ -90,4 +93,40 @@ TEST_CASE("Reflections are traced up to max_trace_level", "[tracer]") {
         CHECK(v.x == Approx(expected));
         CHECK(c.reflectedRays == std::uint64_t(level - 1));
     }
+}
+
+// The classic grid and jitter methods find their eye rays' hits as packets
+// (nearestHits) and shade each with radiance(hit, ...): the colour must be
+// radiance(ray)'s, bit for bit, so that the images do not change.
+TEST_CASE("Eye rays' colours are the same from packet hits as one by one", "[tracer][packet]") {
+    SceneDescription d = shadowScene();
+    d.camera = lookAtCamera({0.5, 6, -9}, {0, 1, 0}, 60);
+    Texture shiny = litTexture({0.3, 0.5, 0.9});
+    shiny.finish.reflection = Vec3(0.3);
+    for (int i = 0; i < 30; ++i)
+        d.objects.push_back(makeObject(SphereShape{{-3 + 0.2 * i, 0.3 + 0.05 * i, (i % 5) - 2.0}, 0.35},
+                                       i % 2 ? shiny : litTexture({0.9, 0.3, 0.2})));
+    const auto scene = buildScene(d);
+    const RayTracer tracer(*scene);
+    const CameraModel camera(d.camera, 40, 30);
+    int hits = 0;
+    for (int y = 0; y < 30; ++y) {
+        for (int x = 0; x < 40; ++x) {
+            std::vector<Ray> rays;
+            for (int j = 0; j < 3; ++j)
+                for (int i = 0; i < 3; ++i) rays.push_back(camera.ray(x + (i + 0.5) / 3, y + (j + 0.5) / 3));
+            std::vector<std::optional<SurfaceHit>> found(rays.size());
+            tracer.nearestHits(rays, found);
+            for (std::size_t k = 0; k < rays.size(); ++k) {
+                RenderCounters one, packet;
+                const Vec3 expected = tracer.radiance(rays[k], 1, 1.0, one);
+                const Vec3 got = tracer.radiance(found[k], rays[k], 1, 1.0, packet);
+                REQUIRE(got == expected);
+                CHECK(packet.shadowRays == one.shadowRays);
+                CHECK(packet.reflectedRays == one.reflectedRays);
+                hits += found[k].has_value();
+            }
+        }
+    }
+    CHECK(hits > 1000);
 }

@@ -121,3 +121,124 @@ TEST_CASE("Scene ray searches give each primitive's exact answer, whatever its p
         CHECK(scene->occluded(ray, tMin, tMax) == blocked);
     }
 }
+
+namespace {
+
+bool sameHit(const std::optional<SurfaceHit>& a, const std::optional<SurfaceHit>& b) {
+    if (a.has_value() != b.has_value()) return false;
+    return !a || (a->t == b->t && a->position == b->position && a->normal == b->normal &&
+                  a->objectPoint == b->objectPoint && a->objectIndex == b->objectIndex);
+}
+
+// Random objects in a cube of side 16: spheres, triangles (three-point
+// polygons), or a mix of every bounded shape (translated, rotated, scaled)
+// with two planes. Some objects come in exact copies, several of them, so
+// that rays meet hits at equal distances in different leaves.
+SceneDescription randomScene(std::mt19937& rng, int kind) {
+    std::uniform_real_distribution<double> u(-8.0, 8.0), size(0.2, 1.0), angle(-180.0, 180.0);
+    SceneDescription d;
+    for (int i = 0; i < 400; ++i) {
+        Object o;
+        const Vec3 at(u(rng), u(rng), u(rng));
+        const int shape = kind == 0 ? 0 : kind == 1 ? 3 : i % 4;
+        switch (shape) {
+        case 0: o.shape = SphereShape{at, size(rng)}; break;
+        case 1: o.shape = BoxShape{at, at + Vec3(size(rng), size(rng), size(rng))}; break;
+        case 2: o.shape = CylinderShape{at, at + Vec3(0, size(rng), 0), 0.5 * size(rng), false}; break;
+        default: o.shape = PolygonShape{{at, at + Vec3(size(rng), 0, 0), at + Vec3(0, size(rng), 0.3)}}; break;
+        }
+        if (kind == 2 && i % 3 == 1) o.worldFromObject = Transform::rotateDegrees({angle(rng), angle(rng), angle(rng)});
+        if (kind == 2 && i % 3 == 2) o.worldFromObject = Transform::scale({size(rng) + 0.5, 1.0, size(rng) + 0.5});
+        d.objects.push_back(o);
+        if (i % 40 == 0)
+            for (int copy = 0; copy < 9; ++copy) d.objects.push_back(o);
+    }
+    if (kind == 2) {
+        Object ground;
+        ground.shape = PlaneShape{{0, 1, 0}, -9};
+        d.objects.push_back(ground);
+        d.objects.push_back(ground);
+        Object wall;
+        wall.shape = PlaneShape{{0.3, 0, 1}, 10};
+        d.objects.push_back(wall);
+    }
+    return d;
+}
+
+}  // namespace
+
+// The packet search must give every ray exactly Scene::intersect's answer:
+// hit record and object, ties between copies included, for coherent camera
+// tiles and for packets whose rays go every way (mixed octants, directions
+// with zero or tiny components, which are traversed alone).
+TEST_CASE("Scene packet search gives every ray intersect's answer bit for bit", "[scene][packet]") {
+    std::mt19937 rng(5);
+    std::uniform_real_distribution<double> u01(0.0, 1.0), u(-8.0, 8.0);
+    int rays = 0, hits = 0;
+    for (int kind = 0; kind < 3; ++kind) {
+        Diagnostics diag;
+        const auto scene = Scene::build(randomScene(rng, kind), diag);
+        REQUIRE(scene);
+        for (int trial = 0; trial < 120; ++trial) {
+            std::vector<Ray> packet;
+            const int size = trial % 4 == 3 ? 1 + static_cast<int>(rng() % 150) : 64;
+            const Vec3 eye = glm::normalize(Vec3(u(rng), u(rng), u(rng))) * (10.0 + 20.0 * u01(rng));
+            switch (trial % 4) {
+            case 0:
+            case 1: {
+                // An 8x8 tile of a pinhole; case 1 looks along an axis, so
+                // that tiles straddle the planes where direction signs change.
+                Vec3 forward = glm::normalize(Vec3(u(rng), u(rng), u(rng)) - eye);
+                if (trial % 4 == 1) {
+                    forward = Vec3(0.0);
+                    forward[rng() % 3] = rng() % 2 ? 1.0 : -1.0;
+                }
+                const Vec3 right = glm::normalize(glm::cross(forward, glm::normalize(Vec3(u(rng), u(rng), u(rng)))));
+                const Vec3 up = glm::cross(right, forward);
+                const double step = std::pow(10.0, -3.5 + 2.5 * u01(rng));
+                for (int y = 0; y < 8; ++y)
+                    for (int x = 0; x < 8; ++x)
+                        packet.push_back({eye, glm::normalize(forward + (x - 3.5) * step * right + (y - 3.5) * step * up)});
+                break;
+            }
+            case 2:
+                // One origin, every direction; some with zero or tiny components.
+                for (int i = 0; i < size; ++i) {
+                    Vec3 d(u(rng), u(rng), u(rng));
+                    if (i % 5 == 0) d[rng() % 3] = 0.0;
+                    if (i % 7 == 0) d[rng() % 3] = 1e-35;
+                    if (i % 11 == 0) d = Vec3(0.0), d[rng() % 3] = rng() % 2 ? 1.0 : -1.0;
+                    packet.push_back({eye, glm::normalize(d)});
+                }
+                break;
+            default:
+                // Different origins inside the scene.
+                for (int i = 0; i < size; ++i)
+                    packet.push_back({Vec3(u(rng), u(rng), u(rng)), glm::normalize(Vec3(u(rng), u(rng), u(rng)))});
+                break;
+            }
+            const double tMin = trial % 3 == 0 ? 0.5 : 0.0;
+            const double tMax = trial % 5 == 0 ? 15.0 : kInfinity;
+            std::vector<std::optional<SurfaceHit>> got(packet.size());
+            scene->intersect(packet, tMin, tMax, got);
+            for (std::size_t i = 0; i < packet.size(); ++i) {
+                const auto expected = scene->intersect(packet[i], tMin, tMax);
+                ++rays;
+                hits += expected.has_value();
+                REQUIRE(sameHit(got[i], expected));
+            }
+        }
+    }
+    CHECK(hits > rays / 4);
+    CHECK_THROWS_AS(
+        [] {
+            SceneDescription d;
+            d.objects.push_back(sphereObject({0, 0, 0}, 1));
+            Diagnostics diag;
+            const auto scene = Scene::build(d, diag);
+            std::vector<Ray> packet(3);
+            std::vector<std::optional<SurfaceHit>> got(2);
+            scene->intersect(packet, 0.0, kInfinity, got);
+        }(),
+        std::invalid_argument);
+}

@@ -244,6 +244,75 @@ struct StackEntry {
 inline constexpr int kMaxDepth = 96;
 inline constexpr int kStackSize = 3 * kMaxDepth + 4;
 
+// Packets of rays (Bvh::traversePacket; docs/accel.md, "Packet traversal"):
+// up to kPacketSize rays of one direction octant, one lane each, in groups of
+// four lanes. A lane holds a ray's set-up exactly as RayPrep has it. Lanes
+// from `count` to the next multiple of four copy lane 0's origin and
+// inverses (so that bounds over all lanes are bounds over the rays) with an
+// empty t-range, so no box accepts them.
+inline constexpr int kPacketSize = 64;
+inline constexpr int kPacketGroups = kPacketSize / 4;
+
+struct PacketPrep {
+    Float4 oNear[3][kPacketGroups];
+    Float4 oFar[3][kPacketGroups];
+    Float4 invNear[3][kPacketGroups];
+    Float4 invFar[3][kPacketGroups];
+    Float4 tLo[kPacketGroups];
+    Float4 tHi[kPacketGroups];  // scaled by kFarScale, like RayPrep::tMax
+    std::uint32_t ray[kPacketSize];  // the caller's index of each lane's ray
+    int count = 0;
+};
+
+// A lane's far limit: as the single-ray loop's, except that a NaN limit
+// returned by a leaf (after which a lone ray pops nothing more) becomes -inf,
+// which accepts nothing either and leaves the packet's greatest limit to the
+// other lanes. (A ray whose search starts with a NaN limit goes alone.)
+inline float laneFarLimit(double tMax) {
+    const float f = roundUpToFloatNonNegative(tMax * kFarScale);
+    return f == f ? f : -std::numeric_limits<float>::infinity();
+}
+
+// A box's planes as the lanes of one octant meet them: along axis a, the
+// plane entered first and the plane left last.
+struct PacketBox {
+    float nearPlane[3];
+    float farPlane[3];
+};
+
+// Bit l set for each lane l whose own box test (RayPrep's arithmetic, as
+// traverseOctant does it, four lanes at once) accepts the box. (Eight or
+// sixteen lanes at once with AVX2 or AVX-512, dispatched at run time, were no
+// faster: docs/accel.md.)
+inline std::uint64_t packetLanesHit(const PacketPrep& p, const PacketBox& b) {
+    const int groups = (p.count + 3) / 4;
+    const auto splat = [](float f) { return Float4{f, f, f, f}; };
+    const auto min4 = [](Float4 x, Float4 y) { return x < y ? x : y; };
+    const auto max4 = [](Float4 x, Float4 y) { return x > y ? x : y; };
+    const Float4 near0 = splat(b.nearPlane[0]), far0 = splat(b.farPlane[0]);
+    const Float4 near1 = splat(b.nearPlane[1]), far1 = splat(b.farPlane[1]);
+    const Float4 near2 = splat(b.nearPlane[2]), far2 = splat(b.farPlane[2]);
+    std::uint64_t mask = 0;
+    for (int g = 0; g < groups; ++g) {
+        const Float4 n0 = (near0 - p.oNear[0][g]) * p.invNear[0][g];
+        const Float4 n1 = (near1 - p.oNear[1][g]) * p.invNear[1][g];
+        const Float4 n2 = (near2 - p.oNear[2][g]) * p.invNear[2][g];
+        const Float4 f0 = (far0 - p.oFar[0][g]) * p.invFar[0][g];
+        const Float4 f1 = (far1 - p.oFar[1][g]) * p.invFar[1][g];
+        const Float4 f2 = (far2 - p.oFar[2][g]) * p.invFar[2][g];
+        const Float4 lo = max4(max4(n0, p.tLo[g]), max4(n1, n2));
+        const Float4 hi = min4(min4(f0, p.tHi[g]), min4(f1, f2));
+        mask |= static_cast<std::uint64_t>(moveMask(lo <= hi)) << (4 * g);
+    }
+    return mask;
+}
+
+struct PacketStackEntry {
+    std::uint32_t ref;
+    float tNear;
+    std::uint32_t box;  // parent node * 4 + child slot: where the child's box is
+};
+
 template <class F, class... Args>
 using ResultOf = std::invoke_result_t<F&, Args...>;
 
@@ -299,6 +368,22 @@ public:
     template <bool Ordered, class Leaf>
     void traverse(const Ray& ray, double tMin, double tMax, Leaf&& leaf) const;
 
+    // The traversal of `traverse<true>` for many rays at once, for a caller
+    // whose rays are coherent (pixel tiles of a pinhole camera). Ray i is
+    // searched over [tMin, tMax[i]] (0 <= tMin); leaf(i, first, count) tests
+    // the items in leaf slots [first, first + count) for ray i and returns
+    // its far limit from then on (the current one, or nearer). Every leaf
+    // whose box ray i's own traversal would accept at its current far limit
+    // is handed to ray i (possibly with others, in another order), so a
+    // nearest-hit search whose answer does not depend on the order of its
+    // item tests gives each ray the answer of traverse<true>. Rays are taken
+    // kPacketSize at a time and grouped by direction octant; a ray with a
+    // direction component below 1e-30 in magnitude, or a far-off origin, is
+    // traversed alone.
+    template <class Leaf>
+    void traversePacket(std::span<const Ray> rays, double tMin, std::span<const double> tMax,
+                        Leaf&& leaf) const;
+
 private:
     friend struct BvhBuilder;
     // The traversal for one octant of ray directions (SX, SY, SZ: 1 where the
@@ -306,6 +391,10 @@ private:
     // entered first is known at compile time.
     template <int SX, int SY, int SZ, bool Ordered, class Leaf>
     void traverseOctant(const bvh_detail::RayPrep& prep, Leaf& leaf) const;
+
+    // The packet traversal for one octant (all lanes' directions in it).
+    template <int SX, int SY, int SZ, class Leaf>
+    void traversePacketOctant(bvh_detail::PacketPrep& packet, Leaf& leaf) const;
 
     std::vector<bvh_detail::Node> nodes_;  // nodes_[0] is the root
     std::vector<std::uint32_t> order_;     // item index per leaf slot
@@ -330,7 +419,7 @@ void Bvh::traverse(const Ray& ray, double tMin, double tMax, Leaf&& leaf) const 
 }
 
 template <int SX, int SY, int SZ, bool Ordered, class Leaf>
-void Bvh::traverseOctant(const bvh_detail::RayPrep& prep, Leaf& leaf) const {
+__attribute__((always_inline)) inline void Bvh::traverseOctant(const bvh_detail::RayPrep& prep, Leaf& leaf) const {
     using namespace bvh_detail;
     // Locals, so that the loop keeps them in registers.
     const Float4 oNear0 = prep.oNear[0], oNear1 = prep.oNear[1], oNear2 = prep.oNear[2];
@@ -413,6 +502,269 @@ void Bvh::traverseOctant(const bvh_detail::RayPrep& prep, Leaf& leaf) const {
             const StackEntry& e = stack[--top];
             if (e.tNear <= farLimit) {
                 ref = e.ref;
+                break;
+            }
+        }
+    }
+}
+
+template <class Leaf>
+void Bvh::traversePacket(std::span<const Ray> rays, double tMin, std::span<const double> tMax,
+                         Leaf&& leaf) const {
+    using namespace bvh_detail;
+    if (nodes_.empty()) return;
+    constexpr float kMaxFloat = std::numeric_limits<float>::max();
+    const float tLo = roundDownToFloat(tMin > 0.0 ? tMin : 0.0);
+    // `all` holds the chunk's rays in order, one lane each; when they do not
+    // share one octant, `part` gathers each octant's lanes in turn.
+    PacketPrep all, part;
+    const auto run = [&](PacketPrep& packet, int octant) {
+        const int count = packet.count;
+        for (int lane = count; lane % 4 != 0; ++lane) {
+            const int g = lane / 4, l = lane % 4;
+            for (int a = 0; a < 3; ++a) {
+                packet.oNear[a][g][l] = packet.oNear[a][0][0];
+                packet.oFar[a][g][l] = packet.oFar[a][0][0];
+                packet.invNear[a][g][l] = packet.invNear[a][0][0];
+                packet.invFar[a][g][l] = packet.invFar[a][0][0];
+            }
+            packet.tLo[g][l] = std::numeric_limits<float>::infinity();
+            packet.tHi[g][l] = -std::numeric_limits<float>::infinity();
+        }
+        switch (octant) {
+        case 0: traversePacketOctant<0, 0, 0>(packet, leaf); break;
+        case 1: traversePacketOctant<1, 0, 0>(packet, leaf); break;
+        case 2: traversePacketOctant<0, 1, 0>(packet, leaf); break;
+        case 3: traversePacketOctant<1, 1, 0>(packet, leaf); break;
+        case 4: traversePacketOctant<0, 0, 1>(packet, leaf); break;
+        case 5: traversePacketOctant<1, 0, 1>(packet, leaf); break;
+        case 6: traversePacketOctant<0, 1, 1>(packet, leaf); break;
+        default: traversePacketOctant<1, 1, 1>(packet, leaf); break;
+        }
+    };
+    for (std::size_t start = 0; start < rays.size(); start += kPacketSize) {
+        const int n = static_cast<int>(std::min<std::size_t>(kPacketSize, rays.size() - start));
+        std::int8_t octant[kPacketSize];
+        unsigned present = 0;
+        bool anyAlone = false;
+        for (int i = 0; i < n; ++i) {
+            // RayPrep's values for a component of at least 1e-30, written
+            // straight into the lanes (a returned struct would be assembled
+            // and reloaded through memory).
+            const Ray& ray = rays[start + i];
+            const int g = i / 4, l = i % 4;
+            bool alone = false;
+            int oct = 0;
+            for (int a = 0; a < 3; ++a) {
+                const double d = ray.dir[a], o = ray.origin[a];
+                const double shift = std::abs(o) * 0x1p-22 + 1e-30;
+                const auto above = static_cast<float>(o + shift), below = static_cast<float>(o - shift);
+                const bool negative = std::signbit(d);
+                const double inv = 1.0 / d;
+                const auto nearInv = static_cast<float>(inv), farInv = static_cast<float>(kFarScale * inv);
+                all.oNear[a][g][l] = negative ? below : above;
+                all.oFar[a][g][l] = negative ? above : below;
+                all.invNear[a][g][l] = nearInv;
+                all.invFar[a][g][l] = farInv;
+                // The interval bounds need finite origins and finite,
+                // non-zero inverses; RayPrep's special cases go alone.
+                alone = alone || !(std::abs(d) >= 1e-30) || !(std::abs(above) <= kMaxFloat) ||
+                        !(std::abs(below) <= kMaxFloat) || nearInv == 0.0f || farInv == 0.0f ||
+                        !(std::abs(farInv) <= kMaxFloat);
+                oct |= static_cast<int>(negative) << a;
+            }
+            const auto index = static_cast<std::uint32_t>(start + i);
+            alone = alone || std::isnan(tMax[index]);
+            all.ray[i] = index;
+            all.tLo[g][l] = tLo;
+            all.tHi[g][l] = laneFarLimit(tMax[index]);
+            octant[i] = static_cast<std::int8_t>(alone ? -1 : oct);
+            anyAlone = anyAlone || alone;
+            if (!alone) present |= 1u << oct;
+        }
+        if (!anyAlone && std::has_single_bit(present)) {
+            // One octant, no ray alone: the common case of a pixel tile.
+            all.count = n;
+            run(all, std::countr_zero(present));
+            continue;
+        }
+        for (int i = 0; i < n; ++i) {
+            if (octant[i] >= 0) continue;
+            const auto index = static_cast<std::uint32_t>(start + i);
+            traverse<true>(rays[index], tMin, tMax[index], [&](std::uint32_t first, std::uint32_t count) {
+                return leaf(index, first, count);
+            });
+        }
+        while (present != 0) {
+            const int o = std::countr_zero(present);
+            present &= present - 1;
+            int lanes = 0;
+            for (int i = 0; i < n; ++i) {
+                if (octant[i] != o) continue;
+                const int g = i / 4, l = i % 4, pg = lanes / 4, pl = lanes % 4;
+                for (int a = 0; a < 3; ++a) {
+                    part.oNear[a][pg][pl] = all.oNear[a][g][l];
+                    part.oFar[a][pg][pl] = all.oFar[a][g][l];
+                    part.invNear[a][pg][pl] = all.invNear[a][g][l];
+                    part.invFar[a][pg][pl] = all.invFar[a][g][l];
+                }
+                part.tLo[pg][pl] = all.tLo[g][l];
+                part.tHi[pg][pl] = all.tHi[g][l];
+                part.ray[lanes] = all.ray[i];
+                ++lanes;
+            }
+            part.count = lanes;
+            run(part, o);
+        }
+    }
+}
+
+template <int SX, int SY, int SZ, class Leaf>
+void Bvh::traversePacketOctant(bvh_detail::PacketPrep& packet, Leaf& leaf) const {
+    using namespace bvh_detail;
+    const int groups = (packet.count + 3) / 4;
+    const auto splat = [](float f) { return Float4{f, f, f, f}; };
+    const auto min4 = [](Float4 a, Float4 b) { return a < b ? a : b; };
+    const auto max4 = [](Float4 a, Float4 b) { return a > b ? a : b; };
+    const auto hmin = [](Float4 v) { return std::min(std::min(v[0], v[1]), std::min(v[2], v[3])); };
+    const auto hmax = [](Float4 v) { return std::max(std::max(v[0], v[1]), std::max(v[2], v[3])); };
+
+    // Bounds over the packet (docs/accel.md): for axis a, every lane's entry
+    // distance (plane - oNear) * invNear is at least the least of the
+    // products of the extreme origin on the entry side with the two extreme
+    // inverses, and its exit distance at most the greatest such product on
+    // the exit side (float subtraction and multiplication are monotonic).
+    Float4 entryOrigin[3], exitOrigin[3], nearInvA[3], nearInvB[3], farInvA[3], farInvB[3];
+    const int sides[3] = {SX, SY, SZ};
+    Float4 tLoMin = packet.tLo[0], tHiMax = packet.tHi[0];
+    for (int g = 1; g < groups; ++g) {
+        tLoMin = min4(tLoMin, packet.tLo[g]);
+        tHiMax = max4(tHiMax, packet.tHi[g]);
+    }
+    for (int a = 0; a < 3; ++a) {
+        Float4 oNearLo = packet.oNear[a][0], oNearHi = oNearLo;
+        Float4 oFarLo = packet.oFar[a][0], oFarHi = oFarLo;
+        Float4 nLo = packet.invNear[a][0], nHi = nLo, fLo = packet.invFar[a][0], fHi = fLo;
+        for (int g = 1; g < groups; ++g) {
+            oNearLo = min4(oNearLo, packet.oNear[a][g]);
+            oNearHi = max4(oNearHi, packet.oNear[a][g]);
+            oFarLo = min4(oFarLo, packet.oFar[a][g]);
+            oFarHi = max4(oFarHi, packet.oFar[a][g]);
+            nLo = min4(nLo, packet.invNear[a][g]);
+            nHi = max4(nHi, packet.invNear[a][g]);
+            fLo = min4(fLo, packet.invFar[a][g]);
+            fHi = max4(fHi, packet.invFar[a][g]);
+        }
+        // Positive direction: the entry distance grows with the plane minus
+        // the origin, so its least value has the greatest origin; negative:
+        // the least origin. The exit distance the other way round.
+        entryOrigin[a] = splat(sides[a] ? hmin(oNearLo) : hmax(oNearHi));
+        exitOrigin[a] = splat(sides[a] ? hmax(oFarHi) : hmin(oFarLo));
+        nearInvA[a] = splat(hmin(nLo));
+        nearInvB[a] = splat(hmax(nHi));
+        farInvA[a] = splat(hmin(fLo));
+        farInvB[a] = splat(hmax(fHi));
+    }
+    const Float4 tLo = splat(hmin(tLoMin));
+    float farLimit = hmax(tHiMax);
+    Float4 tHi = splat(farLimit);
+    const Node* const nodes = nodes_.data();
+
+    PacketStackEntry stack[kStackSize];
+    int top = 0;
+    std::uint32_t ref = 0, box = 0;
+    for (;;) {
+        while (!isLeaf(ref)) {
+            const Node& node = nodes[ref];
+            const std::uint32_t at = ref * 4;
+            const auto entry = [&](int a, const Float4& plane) {
+                const Float4 d = plane - entryOrigin[a];
+                return min4(d * nearInvA[a], d * nearInvB[a]);
+            };
+            const auto exit = [&](int a, const Float4& plane) {
+                const Float4 d = plane - exitOrigin[a];
+                return max4(d * farInvA[a], d * farInvB[a]);
+            };
+            const Float4 n0 = entry(0, node.box[SX][0]);
+            const Float4 n1 = entry(1, node.box[SY][1]);
+            const Float4 n2 = entry(2, node.box[SZ][2]);
+            const Float4 f0 = exit(0, node.box[1 - SX][0]);
+            const Float4 f1 = exit(1, node.box[1 - SY][1]);
+            const Float4 f2 = exit(2, node.box[1 - SZ][2]);
+            const Float4 lo = max4(max4(n0, tLo), max4(n1, n2));
+            const Float4 hi = min4(min4(f0, tHi), min4(f1, f2));
+            unsigned mask = moveMask(lo <= hi);
+            if (mask == 0) goto pop;
+            {
+                const int first = std::countr_zero(mask);
+                mask &= mask - 1;
+                if (mask == 0) {
+                    ref = node.child[first];
+                    box = at + first;
+                    continue;
+                }
+                const int second = std::countr_zero(mask);
+                mask &= mask - 1;
+                if (mask == 0) {
+                    const bool swap = lo[second] < lo[first];
+                    const int nearK = swap ? second : first, farK = swap ? first : second;
+                    stack[top++] = {node.child[farK], lo[farK], at + farK};
+                    ref = node.child[nearK];
+                    box = at + nearK;
+                    continue;
+                }
+                const int base = top;
+                stack[top++] = {node.child[first], lo[first], at + first};
+                stack[top++] = {node.child[second], lo[second], at + second};
+                while (mask != 0) {
+                    const int k = std::countr_zero(mask);
+                    mask &= mask - 1;
+                    stack[top++] = {node.child[k], lo[k], at + k};
+                }
+                for (int i = base + 1; i < top; ++i) {
+                    const PacketStackEntry e = stack[i];
+                    int j = i;
+                    while (j > base && stack[j - 1].tNear < e.tNear) {
+                        stack[j] = stack[j - 1];
+                        --j;
+                    }
+                    stack[j] = e;
+                }
+                --top;
+                ref = stack[top].ref;
+                box = stack[top].box;
+            }
+        }
+        if (const std::uint32_t count = leafCount(ref); count != 0) {
+            // Each lane's own box test decides which rays test the leaf's items.
+            const Node& parent = nodes[box / 4];
+            const int k = static_cast<int>(box % 4);
+            const PacketBox planes{{parent.box[SX][0][k], parent.box[SY][1][k], parent.box[SZ][2][k]},
+                                   {parent.box[1 - SX][0][k], parent.box[1 - SY][1][k],
+                                    parent.box[1 - SZ][2][k]}};
+            const std::uint32_t first = leafFirst(ref);
+            std::uint64_t lanes = packetLanesHit(packet, planes);
+            const bool changed = lanes != 0;
+            while (lanes != 0) {
+                const int l = std::countr_zero(lanes);
+                lanes &= lanes - 1;
+                const double next = leaf(packet.ray[l], first, count);
+                packet.tHi[l / 4][l % 4] = laneFarLimit(next);
+            }
+            if (changed) {
+                Float4 m = packet.tHi[0];
+                for (int g = 1; g < groups; ++g) m = max4(m, packet.tHi[g]);
+                farLimit = hmax(m);
+                tHi = splat(farLimit);
+            }
+        }
+    pop:
+        for (;;) {
+            if (top == 0) return;
+            const PacketStackEntry& e = stack[--top];
+            if (e.tNear <= farLimit) {
+                ref = e.ref;
+                box = e.box;
                 break;
             }
         }

@@ -14,10 +14,18 @@
 //
 // The radiance function is any callable taking (const Ray&) or
 // (const Ray&, const PrimarySample&) and returning a colour; it is called
-// directly (a template parameter, no std::function in the loop).
+// directly (a template parameter, no std::function in the loop). It may also
+// take many primary rays at once, for a packet search of their hits:
+//   radiance.batch(std::span<const Ray> rays, std::span<const PrimarySample> samples,
+//                  std::span<Vec3> colors)
+// must set colors[k] to radiance(rays[k], samples[k]), the rays being handled
+// in order; the grid and jitter estimators then hand it their rays
+// kPrimaryBatch at a time and add the colours in the same order as one by
+// one, so that the pixel is the same, bit for bit.
 #include <algorithm>
 #include <array>
 #include <cstdint>
+#include <span>
 #include <stdexcept>
 #include <string>
 #include <type_traits>
@@ -46,6 +54,9 @@ inline constexpr std::uint32_t kCornerSample = 0xffffffffu;
 // The largest N of the N x N grid and jitter methods.
 inline constexpr int kMaxSamplesPerSide = 1024;
 
+// The most primary rays the grid and jitter estimators hand a batch at once.
+inline constexpr int kPrimaryBatch = 64;
+
 namespace detail {
 template <class Radiance>
 Vec3 callRadiance(Radiance& radiance, const Ray& ray, const PrimarySample& sample) {
@@ -59,6 +70,46 @@ inline void requireSampleCount(int n, const char* what) {
         throw std::invalid_argument(std::string(what) + " must be between 1 and " +
                                     std::to_string(kMaxSamplesPerSide) + ", not " +
                                     std::to_string(n));
+}
+
+template <class Radiance>
+concept BatchRadiance = requires(Radiance& r, std::span<const Ray> rays,
+                                 std::span<const PrimarySample> samples, std::span<Vec3> colors) {
+    r.batch(rays, samples, colors);
+};
+
+// The mean radiance of a pixel's samples 0 .. count - 1, sample k at image
+// point at(k); one by one, or in batches where the radiance function takes them.
+template <class Radiance, class ImagePoint>
+PixelResult averageSamples(const CameraModel& camera, int x, int y, int count, Radiance& radiance,
+                           ImagePoint&& at) {
+    Vec3 sum(0.0);
+    if constexpr (BatchRadiance<Radiance>) {
+        std::array<Ray, kPrimaryBatch> rays;
+        std::array<PrimarySample, kPrimaryBatch> samples;
+        std::array<Vec3, kPrimaryBatch> colors;
+        for (int first = 0; first < count; first += kPrimaryBatch) {
+            const int n = std::min(kPrimaryBatch, count - first);
+            for (int k = 0; k < n; ++k) {
+                const auto index = static_cast<std::uint32_t>(first + k);
+                const Vec2 p = at(index);
+                rays[k] = camera.ray(p.x, p.y);
+                samples[k] = {p, x, y, index};
+            }
+            const auto m = static_cast<std::size_t>(n);
+            radiance.batch(std::span<const Ray>(rays.data(), m),
+                           std::span<const PrimarySample>(samples.data(), m),
+                           std::span<Vec3>(colors.data(), m));
+            for (int k = 0; k < n; ++k) sum += colors[k];
+        }
+    } else {
+        for (int k = 0; k < count; ++k) {
+            const auto index = static_cast<std::uint32_t>(k);
+            const Vec2 p = at(index);
+            sum += callRadiance(radiance, camera.ray(p.x, p.y), {p, x, y, index});
+        }
+    }
+    return {sum / double(count), static_cast<std::uint32_t>(count), 0};
 }
 }  // namespace detail
 
@@ -74,14 +125,10 @@ PixelResult estimateSingle(const CameraModel& camera, int x, int y, Radiance&& r
 template <class Radiance>
 PixelResult estimateGrid(const CameraModel& camera, int x, int y, int n, Radiance&& radiance) {
     detail::requireSampleCount(n, "grid size");
-    Vec3 sum(0.0);
-    for (int j = 0; j < n; ++j)
-        for (int i = 0; i < n; ++i) {
-            const Vec2 p(x + (i + 0.5) / n, y + (j + 0.5) / n);
-            sum += detail::callRadiance(radiance, camera.ray(p.x, p.y),
-                                        {p, x, y, static_cast<std::uint32_t>(j * n + i)});
-        }
-    return {sum / double(n * n), static_cast<std::uint32_t>(n * n), 0};
+    return detail::averageSamples(camera, x, y, n * n, radiance, [&](std::uint32_t index) {
+        const int i = static_cast<int>(index) % n, j = static_cast<int>(index) / n;
+        return Vec2(x + (i + 0.5) / n, y + (j + 0.5) / n);
+    });
 }
 
 // n x n stratified jittered rays: one uniform sample in each sub-pixel, its
@@ -91,15 +138,11 @@ template <class Radiance>
 PixelResult estimateJitter(const CameraModel& camera, int x, int y, int n, const PixelRandom& rng,
                            Radiance&& radiance) {
     detail::requireSampleCount(n, "jitter grid size");
-    Vec3 sum(0.0);
-    for (int j = 0; j < n; ++j)
-        for (int i = 0; i < n; ++i) {
-            const auto index = static_cast<std::uint32_t>(j * n + i);
-            const Vec2 u = rng.uniform2(SampleStream::PixelJitter, index);
-            const Vec2 p(x + (i + u.x) / n, y + (j + u.y) / n);
-            sum += detail::callRadiance(radiance, camera.ray(p.x, p.y), {p, x, y, index});
-        }
-    return {sum / double(n * n), static_cast<std::uint32_t>(n * n), 0};
+    return detail::averageSamples(camera, x, y, n * n, radiance, [&](std::uint32_t index) {
+        const int i = static_cast<int>(index) % n, j = static_cast<int>(index) / n;
+        const Vec2 u = rng.uniform2(SampleStream::PixelJitter, index);
+        return Vec2(x + (i + u.x) / n, y + (j + u.y) / n);
+    });
 }
 
 // The adaptive method's parameters, with POV-Ray's defaults.

@@ -40,6 +40,11 @@ public:
     std::optional<SurfaceHit> nearestHit(const Ray& ray) const {
         return scene_.intersect(ray, kPovMinIsectDepth, kInfinity);
     }
+    // hits[i] = nearestHit(rays[i]) for many rays at once (a packet through
+    // Scene::intersect: coherent eye rays share the BVH traversal).
+    void nearestHits(std::span<const Ray> rays, std::span<std::optional<SurfaceHit>> hits) const {
+        scene_.intersect(rays, kPovMinIsectDepth, kInfinity, hits);
+    }
 
     // The colour seen along a ray (unit direction) of trace level `depth`
     // (eye rays 1) and ADC weight `weight` (eye rays 1). Does not count the
@@ -47,6 +52,10 @@ public:
     // the area lights' buffers and random numbers for this sample.
     Vec3 radiance(const Ray& ray, int depth, double weight, RenderCounters& counters,
                   const LightContext& context = {}) const;
+    // The same, given the ray's nearest hit (nearestHit or nearestHits):
+    // the background where there is none.
+    Vec3 radiance(const std::optional<SurfaceHit>& hit, const Ray& ray, int depth, double weight,
+                  RenderCounters& counters, const LightContext& context = {}) const;
 
     // A known hit of `ray`, shaded with plain shadow rays toward point
     // lights and the lights' method toward area lights.

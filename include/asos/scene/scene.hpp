@@ -5,6 +5,7 @@
 #include <cstdint>
 #include <memory>
 #include <optional>
+#include <span>
 #include <vector>
 
 #include "asos/accel/bvh.hpp"
@@ -26,8 +27,15 @@ public:
     const Object& object(std::uint32_t object) const { return description_.objects[object]; }
     const Bvh& bvh() const { return bvh_; }
 
-    // The nearest hit in [tMin, tMax], with objectIndex set.
+    // The nearest hit in [tMin, tMax], with objectIndex set. Of hits at the
+    // same distance, the one of the object stored last wins (an order of the
+    // objects fixed at build), whatever order the search tests them in.
     std::optional<SurfaceHit> intersect(const Ray& ray, double tMin, double tMax) const;
+    // hits[i] = intersect(rays[i], tMin, tMax), bit for bit, for many rays at
+    // once (hits.size() == rays.size()): coherent rays, such as a pixel tile
+    // of a pinhole camera, share the BVH traversal (Bvh::traversePacket).
+    void intersect(std::span<const Ray> rays, double tMin, double tMax,
+                   std::span<std::optional<SurfaceHit>> hits) const;
     // Whether an object that casts shadows (not `no_shadow`) is hit in [tMin, tMax].
     bool occluded(const Ray& ray, double tMin, double tMax) const;
     // Calls visit(object) for every object whose bounds the cone may touch,
@@ -39,6 +47,7 @@ public:
     }
 
 private:
+    struct NearestSearch;
     Scene() = default;
     // The generic item test of the ray search, out of line: the traversal
     // loop inlines only the compact tests.
