@@ -123,6 +123,15 @@ struct colour_expression
     : seq<at<sor<kw_color, colour_whole_name, colour_component_name>>, colour_start,
           sor<colour_keyword_form, colour_body>> {};
 
+// Where a colour is expected (POV-Ray's Parse_Colour: a pigment's colour,
+// `checker`, `ambient`, a light's colour, the background), components may also
+// follow a plain expression and override it: `pigment { Red green 1 }`,
+// `White * 0.5 green 0`. (Not in `#declare`, where POV-Ray reads a value, not a
+// colour: there `color Red green 1` says it.)
+struct colour_tail_start : success {};  // makes the expression the colour's base
+struct colour_tail : seq<at<colour_component_name>, colour_tail_start, plus<colour_component>> {};
+struct colour_in_place : seq<expression, opt<colour_tail>> {};
+
 struct name_reference : name {};
 struct unsupported_in_expression : unsupported_keyword {};
 

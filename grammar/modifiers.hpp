@@ -8,7 +8,7 @@ namespace asos::grammar {
 // Values after a keyword; each name carries its own error message.
 struct float_value : seq<expression> {};
 struct vector_value : seq<expression> {};
-struct colour_value : seq<expression> {};
+struct colour_value : seq<colour_in_place> {};
 struct block_open : lbrace {};
 
 // A POV-Ray keyword we do not support, met where an item may stand.
@@ -38,12 +38,12 @@ struct asos_block : if_must<kw_asos, block_open, entries<asos_entry>, asos_end> 
 struct checker_start : success {};
 // `checker pigment {…} pigment {…}` (pigments rather than colours) is not ours.
 struct checker_of_blocks : seq<at<sor<kw_pigment, kw_texture>>> {};
-struct checker_second : seq<expression> {};
+struct checker_second : seq<colour_in_place> {};
 struct checker_colours
     : seq<checker_start, opt<checker_of_blocks>,
-          opt<expression, sor<seq<comma, checker_second>, opt<expression>>>> {};
+          opt<colour_in_place, sor<seq<comma, checker_second>, opt<colour_in_place>>>> {};
 struct checker_item : if_must<kw_checker, checker_colours> {};
-struct pigment_colour : seq<expression> {};  // a colour, or a declared pigment
+struct pigment_colour : seq<colour_in_place> {};  // a colour, or a declared pigment
 struct pigment_entry : sor<checker_item, transform_item, pigment_colour, unsupported_item> {};
 struct pigment_end : rbrace {};
 struct pigment_block : if_must<kw_pigment, block_open, entries<pigment_entry>, pigment_end> {};

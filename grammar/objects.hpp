@@ -70,7 +70,7 @@ struct object_statement : sor<sphere_block, box_block, cone_block, cylinder_bloc
 
 // --- light_source { <position>, colour  modifiers… } --------------------------------
 struct light_position : seq<expression> {};
-struct light_colour : opt<opt_comma, expression> {};  // absent only after a light identifier
+struct light_colour : opt<opt_comma, colour_in_place> {};  // absent only after a light identifier
 struct area_light_item : if_must<kw_area_light, vector_value, opt_comma, vector_value, opt_comma,
                                  float_value, opt_comma, float_value> {};
 struct adaptive_item : if_must<kw_adaptive, float_value> {};
@@ -120,7 +120,7 @@ struct global_settings_end : rbrace {};
 struct global_settings_block
     : if_must<kw_global_settings, block_open, entries<global_entry>, global_settings_end> {};
 
-struct background_colour : seq<expression> {};
+struct background_colour : seq<colour_in_place> {};
 struct background_end : rbrace {};
 struct background_block
     : if_must<kw_background, block_open, background_colour, arguments_end, background_end> {};

@@ -125,6 +125,12 @@ public:
     }
 
     void open(Word w = Word::None) { frames_.push_back({stack_.size(), w, 0, false}); }
+    // Opens a frame that holds the last node already made (a colour's base).
+    void openAroundLast() { frames_.push_back({stack_.size() - 1, Word::None, 0, true}); }
+    Pos frameStart() const {
+        const Node& first = stack_[frames_.back().start];
+        return {first.line, first.column};
+    }
     Frame& frame() { return frames_.back(); }
     std::size_t frameSize() const { return stack_.size() - frames_.back().start; }
 
@@ -454,6 +460,15 @@ struct action<g::colour_expression> {
         const std::uint8_t flags = b.frame().flag ? 1 : 0;
         b.close(NodeKind::Colour, Word::None, posOf(in), flags);
     }
+};
+
+template <>
+struct action<g::colour_tail_start> {
+    static void apply0(Builder& b) { b.openAroundLast(); }
+};
+template <>
+struct action<g::colour_tail> {
+    static void apply0(Builder& b) { b.close(NodeKind::Colour, Word::None, b.frameStart(), 1); }
 };
 
 // Blocks: '{' opens the children; the block's rule closes them.

@@ -127,6 +127,16 @@ TEST_CASE("colours", "[lang][interpreter]") {
     CHECK(colour("colour red 1 green 0.5") == Color{{1, 0.5, 0}, 0, 0});
     CHECK(colour("rgb <1, 0, 0> * 0.5") == Color{{0.5, 0, 0}, 0, 0});
     CHECK(colour("(rgb <1, 0, 0> + rgb <0, 1, 0>) / 2") == Color{{0.5, 0.5, 0}, 0, 0});
+    // Where a colour is expected, components may follow any expression (POV-Ray's Parse_Colour).
+    CHECK(colour("rgb <1, 0, 0> * 0.5 green 1") == Color{{0.5, 1, 0}, 0, 0});
+    CHECK(colour("<1, 0, 0> blue 1 filter 0.5") == Color{{1, 0, 1}, 0.5, 0});
+    Run named = run("#declare C = rgb <1, 0, 0>; #declare G = 0.5; background { C green G }");
+    CHECK(ok(named).background == Color{{1, 0.5, 0}, 0, 0});
+    Run light = run("#declare W = rgb 1; light_source { <0, 9, 0>, W * 0.5 green 0 }");
+    REQUIRE(ok(light).lights.size() == 1);
+    CHECK(ok(light).lights[0].color == Vec3(0.5, 0, 0.5));
+    // As in POV-Ray, #declare reads a value, not a colour: components there need `color`.
+    CHECK(!run("#declare V = <1, 0, 0> green 1;").scene);
     Run gray = run("#declare C = rgb <1, 0, 0>; background { rgb C.gray }");
     CHECK(ok(gray).background.rgb.x == Approx(0.297));
 }

@@ -24,3 +24,8 @@ sphere { 0, 1 pigment { checker rgb <1, 0, 0> green 1 rgb <0, 0, 1> } }
 sphere { 0, 1 pigment { checker red 1 rgb <0, 0, 1> } }
 sphere { 0, 1 pigment { checker color Orange blue 1 color rgb 0.5 } }
 sphere { 0, 1 pigment { Stripes rgb <0, 1, 0> } }  // a declared pigment, then a colour
+// Where a colour is expected, components may follow any expression and
+// override it (POV-Ray 3.7 renders these): a declared colour, an arithmetic one.
+sphere { 0, 1 pigment { Orange green 1 } }
+sphere { 0, 1 pigment { Orange * 0.5 blue 1 } finish { ambient Orange red 0 } }
+sphere { 0, 1 pigment { checker Orange green 1, Orange transmit 0.5 } }
