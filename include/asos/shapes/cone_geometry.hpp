@@ -248,6 +248,59 @@ inline CrossingDepths crossingDepths(const LocalCone& cone, const FootprintReach
     return {f.depth / hi, f.depth / lo};
 }
 
+// The footprint on the plane z = 0 (every ray of the cone crossing it, as
+// for a valid FootprintReach) as a quadratic form: with m its centre, e =
+// depth s / k and a the axis' (x, y), a point x of the plane is in the cone
+// iff |y|^2 - (a.y)^2 / c^2 <= e^2 k (y = x - m): the ellipse's matrix is
+// e^2 (k I + a a^T), whose inverse is (I - a a^T / c^2) / (e^2 k). Grown by
+// the distance tolerance (the ellipse scaled by 1 + tol / b contains it, b
+// its minor semi-axis), and by the rounding of the form, so that "outside"
+// is sure; a segment meets it iff the form's minimum along it is within.
+class FootprintQuadric {
+public:
+    FootprintQuadric(const LocalCone& cone, double depth, double an, double k) {
+        const Vec3& p = cone.apex;
+        a_ = Vec2(cone.axis.x, cone.axis.y);
+        const double c = cone.cosHalf;
+        invC2_ = 1.0 / (c * c);
+        const double invK = 1.0 / k;
+        const double t = depth * an * invK;
+        m_ = Vec2(p.x + t * a_.x, p.y + t * a_.y);
+        const double e = depth * cone.sinHalf * invK;
+        const double minor = e * std::sqrt(k);
+        const double tol = cone.absTol + 1e-12 * (std::abs(m_.x) + std::abs(m_.y) + e * c);
+        // The form's relative rounding is at most a few ulps of c^2 / k <= 1e6.
+        limit_ = (minor + tol) * (minor + tol) * (1.0 + 1e-9);
+        minor2_ = minor * minor;
+    }
+
+    bool contains(const Vec2& x) const { return form(x - m_) <= limit_; }
+    // In the footprint itself, not grown (a point of a boundary inside the
+    // cone, for the single-edge criterion).
+    bool containsStrictly(const Vec2& x) const { return form(x - m_) <= minor2_; }
+
+    bool segmentMeets(const Vec2& v0, const Vec2& v1) const {
+        const Vec2 e = v1 - v0, y0 = v0 - m_;
+        const double ae = glm::dot(a_, e);
+        const double qa = glm::dot(e, e) - ae * ae * invC2_;
+        const double qb = glm::dot(y0, e) - glm::dot(a_, y0) * ae * invC2_;
+        // The form is positive definite: qa > 0 unless the edge is a point
+        // (then t is NaN or infinite and ends at 0 or 1). No branch: where
+        // the nearest point falls is as good as random.
+        const double t = std::min(std::max(0.0, -qb / qa), 1.0);
+        return form(y0 + t * e) <= limit_;
+    }
+
+private:
+    double form(const Vec2& y) const {
+        const double ay = glm::dot(a_, y);
+        return glm::dot(y, y) - ay * ay * invC2_;
+    }
+
+    Vec2 m_{0.0}, a_{0.0};
+    double invC2_ = 1.0, limit_ = 0.0, minor2_ = 0.0;
+};
+
 // The footprint ellipse (on a plane z = zc every ray of the cone crosses, as
 // for a valid FootprintReach) against circles about (0, 0, zc), for footprints small next to the circles (a pixel's
 // cone against a disc): tight bounds from the ellipse's extent along the
