@@ -50,12 +50,9 @@ ConeClass Disc::classify(const LocalCone& cone) const {
         const bool full = (outerNear > 0.0) & (q2 < outerNear * outerNear) &
                           ((hole_ == 0.0) | (q2 > holeFar * holeFar));
         if (miss) return missClass();
-        const double g = std::sqrt(g2);
-        const double lo = an * c - g * s;
-        const double hi = angleWithin(an, g, c, s) ? 1.0 : an * c + g * s;
-        const double tNear = depth / hi, tFar = depth / lo;
-        // Whether q misses or is well inside is as good as random from one
-        // cone to the next: the answer is selected, not branched to.
+        const auto [tNear, tFar] = planeDepths(depth, an, g2, c, s);
+        // Whether the range cuts the hits is as good as random from one cone
+        // to the next: the answer is selected, not branched to.
         if (full) return rangedClass(cone, false, true, tNear, tFar);
         // A circle near q: the ellipse itself against both circles.
         const CircleFootprint ellipse(cone, depth, an, k);
@@ -70,7 +67,9 @@ ConeClass Disc::classify(const LocalCone& cone) const {
                                       (inner == CircleRelation::EllipseInside));
             const bool ellipseFull = (outer == CircleRelation::EllipseInside) &
                                      (inner == CircleRelation::EllipseOutside);
-            return rangedClass(cone, ellipseMiss, ellipseFull, tNear, tFar);
+            // The disc's own distance (its bounding ball) against the range, too.
+            const bool outOfRange = ballOutsideRange(cone, Vec3(0.0), radius_);
+            return rangedClass(cone, ellipseMiss | outOfRange, ellipseFull, tNear, tFar);
         }
         // Within a few tolerances of tangency: the exact test below.
     }

@@ -240,12 +240,20 @@ struct CrossingDepths {
     double tFar;
 };
 
+// With depth h, an = cos(gamma) > 0 and g2 = sin^2(gamma) of a plane that
+// every ray crosses (c > 0): h / hi and h / lo, lo and hi the least and
+// greatest cosine of a ray with the normal (hi = 1 when the normal is in the
+// cone). One division by lo hi = an^2 c^2 - g2 s^2, which needs no root, so
+// that it runs beside the root of g2 rather than after it.
+inline CrossingDepths planeDepths(double depth, double an, double g2, double c, double s) {
+    const double scaled = depth / (an * an * c * c - g2 * s * s);
+    const double g = std::sqrt(g2);
+    const double lo = an * c - g * s, hi = an * c + g * s;
+    return {g2 <= s * s ? depth : lo * scaled, hi * scaled};
+}
+
 inline CrossingDepths crossingDepths(const LocalCone& cone, const FootprintReach& f) {
-    const double c = cone.cosHalf, s = cone.sinHalf;
-    const double g = std::sqrt(f.g2);
-    const double lo = f.an * c - g * s;
-    const double hi = angleWithin(f.an, g, c, s) ? 1.0 : f.an * c + g * s;
-    return {f.depth / hi, f.depth / lo};
+    return planeDepths(f.depth, f.an, f.g2, cone.cosHalf, cone.sinHalf);
 }
 
 // The footprint on the plane z = 0 (every ray of the cone crossing it, as
