@@ -177,15 +177,15 @@ ConeClass Box::classify(const LocalCone& cone) const {
             if (kk > 1e-6 && (p[e] > hi_[e] || p[e] < lo_[e])) {
                 // The footprint ellipse lies within `radius` of the axis'
                 // entry point (see Polygon::classify).
-                const double g = std::sqrt(g2), depth = std::abs(face - p[e]);
-                const double radius =
-                    depth * s * (c * an + g * s) / (kk * an) * (1.0 + 1e-12) + tol;
+                const double depth = std::abs(face - p[e]);
+                const auto [tNear, tFar] = planeDepths(depth, an, g2, c, s);
+                // Both sides times kk an > 0: no division.
+                const double scale = kk * an;
+                const double reach =
+                    depth * s * (c * an + std::sqrt(g2) * s) * (1.0 + 1e-12) + tol * scale;
                 const double qj = p[j] + enter * a[j], qk = p[k] + enter * a[k];
-                if ((qj - radius > lo_[j]) & (qj + radius < hi_[j]) & (qk - radius > lo_[k]) &
-                    (qk + radius < hi_[k])) {
-                    const double lo = an * c - g * s;
-                    const double hi = angleWithin(an, g, c, s) ? 1.0 : an * c + g * s;
-                    const double tNear = depth / hi, tFar = depth / lo;
+                if (((qj - lo_[j]) * scale > reach) & ((hi_[j] - qj) * scale > reach) &
+                    ((qk - lo_[k]) * scale > reach) & ((hi_[k] - qk) * scale > reach)) {
                     if (cone.surelyWithin(tNear, tFar)) return fullClass(tNear, tFar);
                     if (cone.surelyAfter(tNear)) return missClass();
                     return marginalClass(cone, tNear, tNear >= cone.tMinInner ? tFar : dFar);
