@@ -24,9 +24,7 @@ Polygon::Polygon(std::vector<Vec2> vertices, std::vector<std::uint32_t> loopEnds
         for (std::uint32_t i = begin, i0 = end - 1; i < end; i0 = i++) {
             const Vec2 v0 = vertices_[i0], v1 = vertices_[i];
             const Vec2 e = v1 - v0;
-            const double ee = glm::dot(e, e);
-            // The length rounded up, for a conservative reach along the edge.
-            edges_.push_back({v0, e, v1.y, ee, std::sqrt(ee) * (1.0 + 1e-15)});
+            edges_.push_back({v0, e, v1.y, glm::dot(e, e)});
         }
         begin = end;
     }
@@ -82,8 +80,9 @@ ConeClass Polygon::classify(const LocalCone& cone) const {
             (q.y - radius > hi_.y))
             return missClass();
         // The edges near q (a few at most, or the exact path runs): those
-        // whose rectangle reaching `radius` around them holds q, a superset
-        // of those within `radius` of q. The loop has no data-dependent
+        // whose line passes within `radius` of q, a superset of those within
+        // `radius` (rarely larger: only an edge whose line runs by q but
+        // which ends short of it is too many, and costs one exact test). The loop has no data-dependent
         // branch: whether an edge crosses q's line or lies near q is as good
         // as random from one cone to the next, and a mispredicted branch per
         // edge would cost more than the arithmetic (the slot past kMaxNear
@@ -98,9 +97,7 @@ ConeClass Polygon::classify(const LocalCone& cone) const {
             const Vec2 w = q - edge.v0;
             const double side = edge.e.x * w.y - w.x * edge.e.y;
             inside ^= ((edge.v0.y > q.y) != (edge.v1y > q.y)) & ((side > 0.0) == (edge.e.y > 0.0));
-            const double along = glm::dot(edge.e, w), reach = radius * edge.length;
-            const bool near = (side * side <= radius2 * edge.ee) & (along >= -reach) &
-                              (along <= edge.ee + reach);
+            const bool near = side * side <= radius2 * edge.ee;
             nearEdge[nearCount] = i;
             nearCount = std::min(nearCount + int(near), kMaxNear);
         }

@@ -48,9 +48,8 @@ private:
     struct Edge {
         Vec2 v0;
         Vec2 e;
-        double v1y;     // (v0 + e).y as given
-        double ee;      // |e|^2
-        double length;  // |e|, rounded up
+        double v1y;  // (v0 + e).y as given
+        double ee;   // |e|^2
     };
 
     std::vector<Vec2> vertices_;
