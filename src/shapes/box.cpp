@@ -161,31 +161,38 @@ ConeClass Box::classify(const LocalCone& cone) const {
             grownExit = std::min(grownExit, t1 + spread);
             // Selected, not branched to: which face the axis enters through
             // is as good as random from one cone to the next.
-            enterAxis = t0 > enter ? i : enterAxis;
+            enterAxis += (i - enterAxis) * static_cast<int>(t0 > enter);
             enter = std::max(enter, t0);
             exit = std::min(exit, t1);
         }
-        if (grownEnter > grownExit || grownExit < 0.0 || grownEnter > dFar) return missClass();
-        if (cone.surelyAfter(std::max(0.0, grownEnter)) || cone.surelyBefore(dFar))
+        if ((grownEnter > grownExit) | (grownExit < 0.0) | (grownEnter > dFar) |
+            cone.surelyAfter(std::max(0.0, grownEnter)) | cone.surelyBefore(dFar))
             return missClass();
         if (hits & (enterAxis >= 0) & (enter <= exit) & (enter >= 0.0)) {
-            const int e = enterAxis, j = (e + 1) % 3, k = (e + 2) % 3;
-            const double an = std::abs(a[e]);
-            const double g2 = a[j] * a[j] + a[k] * a[k];
+            // Indexed by the entry axis, which is as good as random: plain
+            // arrays (a vector's operator[] with a variable index is a
+            // chain of branches on it).
+            const double pa[3] = {p.x, p.y, p.z}, aa[3] = {a.x, a.y, a.z};
+            const double loa[3] = {lo_.x, lo_.y, lo_.z}, hia[3] = {hi_.x, hi_.y, hi_.z};
+            constexpr int kNext[3] = {1, 2, 0}, kAfter[3] = {2, 0, 1};
+            const int e = enterAxis, j = kNext[e], k = kAfter[e];
+            const double an = std::abs(aa[e]);
+            const double g2 = aa[j] * aa[j] + aa[k] * aa[k];
             const double kk = c * c - g2;
-            const double face = p[e] > hi_[e] ? hi_[e] : lo_[e];
-            if (kk > 1e-6 && (p[e] > hi_[e] || p[e] < lo_[e])) {
+            const bool above = pa[e] > hia[e];
+            const double face = (above ? hia : loa)[e];
+            if ((kk > 1e-6) & (above | (pa[e] < loa[e]))) {
                 // The footprint ellipse lies within `radius` of the axis'
                 // entry point (see Polygon::classify).
-                const double depth = std::abs(face - p[e]);
+                const double depth = std::abs(face - pa[e]);
                 const auto [tNear, tFar] = planeDepths(depth, an, g2, c, s);
                 // Both sides times kk an > 0: no division.
                 const double scale = kk * an;
                 const double reach =
                     depth * s * (c * an + std::sqrt(g2) * s) * (1.0 + 1e-12) + tol * scale;
-                const double qj = p[j] + enter * a[j], qk = p[k] + enter * a[k];
-                if (((qj - lo_[j]) * scale > reach) & ((hi_[j] - qj) * scale > reach) &
-                    ((qk - lo_[k]) * scale > reach) & ((hi_[k] - qk) * scale > reach)) {
+                const double qj = pa[j] + enter * aa[j], qk = pa[k] + enter * aa[k];
+                if (((qj - loa[j]) * scale > reach) & ((hia[j] - qj) * scale > reach) &
+                    ((qk - loa[k]) * scale > reach) & ((hia[k] - qk) * scale > reach)) {
                     if (cone.surelyWithin(tNear, tFar)) return fullClass(tNear, tFar);
                     if (cone.surelyAfter(tNear)) return missClass();
                     return marginalClass(cone, tNear, tNear >= cone.tMinInner ? tFar : dFar);
