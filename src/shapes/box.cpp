@@ -44,6 +44,40 @@ Slab slab(const Vec3& lo, const Vec3& hi, const Vec3& o, const Vec3& d) {
 
 double sq(double x) { return x * x; }
 
+// The silhouette edges for each of the 27 places of the apex (front[i] in
+// {-1, 0, 1} per axis: below, within or above the slab): the edges between a
+// face turned to the apex and one turned away, as pairs of corners (bit i of
+// a corner: hi on axis i). A table, so that the pass over them has no branch
+// on where the apex is.
+struct SilhouetteTable {
+    int count[27] = {};
+    int edge[27][12][2] = {};
+};
+
+constexpr SilhouetteTable makeSilhouetteTable() {
+    SilhouetteTable t;
+    for (int place = 0; place < 27; ++place) {
+        const int front[3] = {place % 3 - 1, place / 3 % 3 - 1, place / 9 - 1};
+        for (int k = 0; k < 3; ++k) {  // edges along axis k
+            const int i = (k + 1) % 3, j = (k + 2) % 3;
+            for (int si = 0; si < 2; ++si) {
+                for (int sj = 0; sj < 2; ++sj) {
+                    const bool frontI = front[i] == (si ? 1 : -1);
+                    const bool frontJ = front[j] == (sj ? 1 : -1);
+                    if (frontI == frontJ) continue;
+                    const int base = (si << i) | (sj << j);
+                    t.edge[place][t.count[place]][0] = base;
+                    t.edge[place][t.count[place]][1] = base | (1 << k);
+                    ++t.count[place];
+                }
+            }
+        }
+    }
+    return t;
+}
+
+constexpr SilhouetteTable kSilhouette = makeSilhouetteTable();
+
 }  // namespace
 
 Bounds3 Box::worldBounds(const Mat3& m, const Vec3& offset) const {
@@ -125,32 +159,40 @@ ConeClass Box::classify(const LocalCone& cone) const {
             const double spread = r * std::abs(inv);
             grownEnter = std::max(grownEnter, t0 - spread);
             grownExit = std::min(grownExit, t1 + spread);
-            if (t0 > enter) {
-                enter = t0;
-                enterAxis = i;
-            }
+            // Selected, not branched to: which face the axis enters through
+            // is as good as random from one cone to the next.
+            enterAxis += (i - enterAxis) * static_cast<int>(t0 > enter);
+            enter = std::max(enter, t0);
             exit = std::min(exit, t1);
         }
-        if (grownEnter > grownExit || grownExit < 0.0 || grownEnter > dFar) return missClass();
-        if (cone.surelyAfter(std::max(0.0, grownEnter)) || cone.surelyBefore(dFar))
+        if ((grownEnter > grownExit) | (grownExit < 0.0) | (grownEnter > dFar) |
+            cone.surelyAfter(std::max(0.0, grownEnter)) | cone.surelyBefore(dFar))
             return missClass();
-        if (hits && enterAxis >= 0 && enter <= exit && enter >= 0.0) {
-            const int e = enterAxis, j = (e + 1) % 3, k = (e + 2) % 3;
-            const double an = std::abs(a[e]);
-            const double g2 = a[j] * a[j] + a[k] * a[k];
+        if (hits & (enterAxis >= 0) & (enter <= exit) & (enter >= 0.0)) {
+            // Indexed by the entry axis, which is as good as random: plain
+            // arrays (a vector's operator[] with a variable index is a
+            // chain of branches on it).
+            const double pa[3] = {p.x, p.y, p.z}, aa[3] = {a.x, a.y, a.z};
+            const double loa[3] = {lo_.x, lo_.y, lo_.z}, hia[3] = {hi_.x, hi_.y, hi_.z};
+            constexpr int kNext[3] = {1, 2, 0}, kAfter[3] = {2, 0, 1};
+            const int e = enterAxis, j = kNext[e], k = kAfter[e];
+            const double an = std::abs(aa[e]);
+            const double g2 = aa[j] * aa[j] + aa[k] * aa[k];
             const double kk = c * c - g2;
-            const double face = p[e] > hi_[e] ? hi_[e] : lo_[e];
-            if (kk > 1e-6 && (p[e] > hi_[e] || p[e] < lo_[e])) {
+            const bool above = pa[e] > hia[e];
+            const double face = (above ? hia : loa)[e];
+            if ((kk > 1e-6) & (above | (pa[e] < loa[e]))) {
                 // The footprint ellipse lies within `radius` of the axis'
                 // entry point (see Polygon::classify).
-                const double g = std::sqrt(g2), depth = std::abs(face - p[e]);
-                const double radius = depth * s / kk * (c + g * s / an) * (1.0 + 1e-12) + tol;
-                const double qj = p[j] + enter * a[j], qk = p[k] + enter * a[k];
-                if (qj - radius > lo_[j] && qj + radius < hi_[j] && qk - radius > lo_[k] &&
-                    qk + radius < hi_[k]) {
-                    const double lo = an * c - g * s;
-                    const double hi = angleWithin(an, g, c, s) ? 1.0 : an * c + g * s;
-                    const double tNear = depth / hi, tFar = depth / lo;
+                const double depth = std::abs(face - pa[e]);
+                const auto [tNear, tFar] = planeDepths(depth, an, g2, c, s);
+                // Both sides times kk an > 0: no division.
+                const double scale = kk * an;
+                const double reach =
+                    depth * s * (c * an + std::sqrt(g2) * s) * (1.0 + 1e-12) + tol * scale;
+                const double qj = pa[j] + enter * aa[j], qk = pa[k] + enter * aa[k];
+                if (((qj - loa[j]) * scale > reach) & ((hia[j] - qj) * scale > reach) &
+                    ((qk - loa[k]) * scale > reach) & ((hia[k] - qk) * scale > reach)) {
                     if (cone.surelyWithin(tNear, tFar)) return fullClass(tNear, tFar);
                     if (cone.surelyAfter(tNear)) return missClass();
                     return marginalClass(cone, tNear, tNear >= cone.tMinInner ? tFar : dFar);
@@ -173,7 +215,7 @@ ConeClass Box::classifyOutside(const LocalCone& cone) const {
     Vec3 gap, far2;
     int front[3];  // +1: the hi face of this axis faces the apex, -1: the lo face, 0: neither
     for (int i = 0; i < 3; ++i) {
-        front[i] = p[i] > hi_[i] ? 1 : p[i] < lo_[i] ? -1 : 0;
+        front[i] = int(p[i] > hi_[i]) - int(p[i] < lo_[i]);
         gap[i] = std::max({lo_[i] - p[i], 0.0, p[i] - hi_[i]});
         far2[i] = std::max(sq(p[i] - lo_[i]), sq(p[i] - hi_[i]));
     }
@@ -192,33 +234,45 @@ ConeClass Box::classifyOutside(const LocalCone& cone) const {
 
     // The silhouette: edges between a face turned to the apex and one turned
     // away (paper: "Detection Phase"; the boundary seen from the apex).
+    const Vec3* bounds[2] = {&lo_, &hi_};
+    auto cornerPoint = [&](int c) {
+        return Vec3(bounds[c & 1]->x, bounds[(c >> 1) & 1]->y, bounds[(c >> 2) & 1]->z);
+    };
     ConePoint corner[8];
     unsigned known = 0;  // corners computed so far (only silhouette ends are needed)
     auto cornerAt = [&](int c) -> const ConePoint& {
         if (!(known & (1u << c))) {
-            const Vec3 x((c & 1) ? hi_.x : lo_.x, (c & 2) ? hi_.y : lo_.y, (c & 4) ? hi_.z : lo_.z);
-            corner[c] = conePoint(cone, x - p);
+            corner[c] = conePoint(cone, cornerPoint(c) - p);
             known |= 1u << c;
         }
         return corner[c];
     };
+    // Up to the farthest corner, a cone narrower than a hemisphere lies
+    // within `reach` of its axis line: an edge farther from that line is
+    // out of it, which is cheaper to see than the exact test.
+    const Vec3& a = cone.axis;
+    const double reach = dFar * cone.sinHalf * (1.0 + 1e-12) + 2.0 * cone.absTol + 1e-12 * dFar;
+    const double reach2 = cone.cosHalf > 0.0 ? reach * reach : kInfinity;
+    auto farFromAxis = [&](int c0, int c1) {
+        const Vec3 w0 = cornerPoint(c0) - p, e = cornerPoint(c1) - cornerPoint(c0);
+        const Vec3 w0p = w0 - glm::dot(w0, a) * a, ep = e - glm::dot(e, a) * a;
+        // No branch: the nearest point's place is as good as random (an edge
+        // along the axis gives NaN or an infinity, which ends at 0 or 1).
+        const double u = std::min(std::max(0.0, -glm::dot(w0p, ep) / glm::dot(ep, ep)), 1.0);
+        const Vec3 d = w0p + u * ep;
+        return glm::dot(d, d) > reach2;
+    };
+    const int place = (front[0] + 1) + 3 * (front[1] + 1) + 9 * (front[2] + 1);
     int meeting = 0;
     bool endpointInside = false;
-    for (int k = 0; k < 3 && meeting < 2; ++k) {  // edges along axis k; two meeting settle it
-        const int i = (k + 1) % 3, j = (k + 2) % 3;
-        for (int si = 0; si < 2; ++si) {
-            for (int sj = 0; sj < 2; ++sj) {
-                const bool frontI = front[i] == (si ? 1 : -1);
-                const bool frontJ = front[j] == (sj ? 1 : -1);
-                if (frontI == frontJ) continue;
-                const int base = (si << i) | (sj << j);
-                const ConePoint& a = cornerAt(base);
-                const ConePoint& b = cornerAt(base | (1 << k));
-                if (segmentMeetsCone(cone, a, b)) {
-                    ++meeting;
-                    endpointInside = endpointInside || a.inside || b.inside;
-                }
-            }
+    for (int n = 0; n < kSilhouette.count[place] && meeting < 2; ++n) {  // two meeting settle it
+        const int c0 = kSilhouette.edge[place][n][0], c1 = kSilhouette.edge[place][n][1];
+        if (farFromAxis(c0, c1)) continue;
+        const ConePoint& from = cornerAt(c0);
+        const ConePoint& to = cornerAt(c1);
+        if (segmentMeetsCone(cone, from, to)) {
+            ++meeting;
+            endpointInside = endpointInside || from.inside || to.inside;
         }
     }
     if (meeting > 0) {

@@ -30,37 +30,56 @@ ConeClass Disc::classify(const LocalCone& cone) const {
     if (empty()) return missClass();
     const Vec3& p = cone.apex;
     const Vec3& axis = cone.axis;
+    const double c = cone.cosHalf, s = cone.sinHalf;
     const double h = -p.z;
-    if (const FootprintReach f = footprintReach(cone, 0.0); f.valid) {
-        // Fast path. Every ray crosses, and the footprint lies within
-        // f.radius of the axis' crossing q: against the two circles that is
-        // a comparison of |q| with their radii.
-        const double q2 = glm::dot(f.q, f.q), radius = f.radius;
-        if (q2 > (radius_ + radius) * (radius_ + radius)) return missClass();
-        if (hole_ > radius && q2 < (hole_ - radius) * (hole_ - radius)) return missClass();
-        const auto [tNear, tFar] = crossingDepths(cone, f);
-        if (radius_ > radius && q2 < (radius_ - radius) * (radius_ - radius) &&
-            (hole_ == 0.0 || q2 > (hole_ + radius) * (hole_ + radius))) {
-            if (cone.surelyAfter(tNear) || cone.surelyBefore(tFar)) return missClass();
-            if (cone.surelyWithin(tNear, tFar)) return fullClass(tNear, tFar);
-            return marginalClass(cone, tNear, tFar);
+    const double g2 = axis.x * axis.x + axis.y * axis.y, k = c * c - g2;
+    if (c > 0.0 && h * axis.z > 0.0 && k > 1e-6) {
+        // Fast path. Every ray crosses the plane, at depths [tNear, tFar],
+        // and the footprint lies within `radius` of the axis' crossing q
+        // (see footprintReach): against the two circles that is a comparison
+        // of |q| with their radii. Scaled by an k (an = |axis.z|), q and
+        // radius need no division.
+        const double an = std::abs(axis.z), depth = std::abs(h), ank = an * k;
+        const double qx = an * p.x + depth * axis.x, qy = an * p.y + depth * axis.y;
+        const double q2 = (qx * qx + qy * qy) * (k * k);
+        const double radius =
+            depth * s * (c * an + 0.5 * (1.0 + g2) * s) * (1.0 + 1e-12) + cone.absTol * ank;
+        const double outerFar = ank * radius_ + radius, outerNear = ank * radius_ - radius;
+        const double holeFar = ank * hole_ + radius, holeNear = ank * hole_ - radius;
+        const bool miss = (q2 > outerFar * outerFar) | ((holeNear > 0.0) & (q2 < holeNear * holeNear));
+        const bool full = (outerNear > 0.0) & (q2 < outerNear * outerNear) &
+                          ((hole_ == 0.0) | (q2 > holeFar * holeFar));
+        if (miss) return missClass();
+        const auto [tNear, tFar] = planeDepths(depth, an, g2, c, s);
+        // Whether the range cuts the hits is as good as random from one cone
+        // to the next: the answer is selected, not branched to.
+        if (full) return rangedClass(cone, false, true, tNear, tFar);
+        // A circle near q: the ellipse itself against both circles.
+        const CircleFootprint ellipse(cone, depth, an, k);
+        const CircleRelation outer = ellipse.relation(radius_);
+        const CircleRelation inner =
+            hole_ > 0.0 ? ellipse.relation(hole_) : CircleRelation::EllipseOutside;
+        const bool unsure = (outer == CircleRelation::Unsure) |
+                            ((outer == CircleRelation::EllipseInside) & (inner == CircleRelation::Unsure));
+        if (!unsure) {
+            const bool ellipseMiss = (outer == CircleRelation::EllipseOutside) |
+                                     ((outer == CircleRelation::EllipseInside) &
+                                      (inner == CircleRelation::EllipseInside));
+            const bool ellipseFull = (outer == CircleRelation::EllipseInside) &
+                                     (inner == CircleRelation::EllipseOutside);
+            // The disc's own distance (its bounding ball) against the range, too.
+            const bool outOfRange = ballOutsideRange(cone, Vec3(0.0), radius_);
+            return rangedClass(cone, ellipseMiss | outOfRange, ellipseFull, tNear, tFar);
         }
-        // Surely crossing a circle: q (in the footprint) on one side, a
-        // point of the disc inscribed in the ellipse (centre m, radius
-        // the minor semi-axis) on the other.
-        const double scale = f.depth * f.an / f.k;
-        const double m = length2d(p.x + scale * axis.x, p.y + scale * axis.y);
-        const double minor = f.depth * cone.sinHalf / std::sqrt(f.k);
-        const double q1 = std::sqrt(q2), tol = cone.absTol + 1e-12 * (q1 + radius_);
-        auto crosses = [&](double rho) {
-            return (q1 < rho - tol && m + minor > rho + tol) ||
-                   (q1 > rho + tol && m - minor < rho - tol);
-        };
-        if (crosses(radius_) || (hole_ > 0.0 && crosses(hole_))) {
-            if (cone.surelyAfter(tNear) || cone.surelyBefore(tFar)) return missClass();
-            return marginalClass(cone, tNear, tFar);
-        }
+        // Within a few tolerances of tangency: the exact test below.
     }
+    return classifyExactly(cone);
+}
+
+ConeClass Disc::classifyExactly(const LocalCone& cone) const {
+    const Vec3& p = cone.apex;
+    const Vec3& axis = cone.axis;
+    const double h = -p.z;
     if (ballOutside(cone, Vec3(0.0), radius_)) return missClass();
     const DotRange range = dotRange(cone, axis.z, std::sqrt(axis.x * axis.x + axis.y * axis.y));
     // Depths of the annulus' points from the apex.

@@ -101,6 +101,7 @@ LocalFrame LocalFrame::make(const Transform& worldFromObject, const Mat3& object
     f.kind = Kind::General;
     const Mat3 localGram = glm::transpose(f.localFromWorld) * f.localFromWorld;
     f.gramTrace = localGram[0][0] + localGram[1][1] + localGram[2][2];
+    f.gram = localGram;
     const double det = glm::determinant(f.localFromWorld);
     f.gramDeterminant = det * det;
     const Vec3 ev = symmetricEigenvalues(localGram);

@@ -19,6 +19,15 @@ Polygon::Polygon(std::vector<Vec2> vertices, std::vector<std::uint32_t> loopEnds
     }
     center_ = 0.5 * (lo_ + hi_);
     for (const Vec2& v : vertices_) radius_ = std::max(radius_, glm::length(v - center_));
+    std::uint32_t begin = 0;
+    for (const std::uint32_t end : loopEnds_) {
+        for (std::uint32_t i = begin, i0 = end - 1; i < end; i0 = i++) {
+            const Vec2 v0 = vertices_[i0], v1 = vertices_[i];
+            const Vec2 e = v1 - v0;
+            edges_.push_back({v0, e, v1.y, glm::dot(e, e)});
+        }
+        begin = end;
+    }
 }
 
 Bounds3 Polygon::worldBounds(const Mat3& m, const Vec3& offset) const {
@@ -57,7 +66,6 @@ std::optional<LocalHit> Polygon::intersect(const Ray& ray, double tMin, double t
 
 ConeClass Polygon::classify(const LocalCone& cone) const {
     if (empty()) return missClass();
-    const Vec3& p = cone.apex;
     if (const FootprintReach f = footprintReach(cone, 0.0); f.valid) {
         // Fast path. Every ray crosses, and the footprint lies within
         // f.radius of the axis' crossing q; an edge farther from q cannot
@@ -68,55 +76,53 @@ ConeClass Polygon::classify(const LocalCone& cone) const {
         const double radius = f.radius;
         const double radius2 = radius * radius;
         // The footprint wholly off the polygon's bounding box: a miss.
-        if (q.x + radius < lo_.x || q.x - radius > hi_.x || q.y + radius < lo_.y ||
-            q.y - radius > hi_.y)
+        if ((q.x + radius < lo_.x) | (q.x - radius > hi_.x) | (q.y + radius < lo_.y) |
+            (q.y - radius > hi_.y))
             return missClass();
-        // The edges near q (a few at most, or the exact path runs). The
-        // loop has no data-dependent branch: whether an edge crosses q's
-        // line or lies near q is as good as random from one cone to the
-        // next, and a mispredicted branch per edge would cost more than the
-        // arithmetic (the slot past kMaxNear absorbs the overflow).
-        constexpr int kMaxNear = 8;
-        std::uint32_t nearEdge[kMaxNear + 1][2];
+        // The edges near q (a few at most, or the exact path runs): those
+        // whose line passes within `radius` of q, a superset of those within
+        // `radius` (rarely larger: only an edge whose line runs by q but
+        // which ends short of it is too many, and costs one exact test). The loop has no data-dependent
+        // branch: whether an edge crosses q's line or lies near q is as good
+        // as random from one cone to the next, and a mispredicted branch per
+        // edge would cost more than the arithmetic (the slot past kMaxNear
+        // absorbs the overflow).
+        constexpr int kMaxNear = 16;
+        std::uint32_t nearEdge[kMaxNear + 1];
         int nearCount = 0;
         bool inside = false;
-        std::uint32_t begin = 0;
-        for (const std::uint32_t end : loopEnds_) {
-            std::uint32_t i0 = end - 1;
-            for (std::uint32_t i = begin; i < end; ++i) {
-                const Vec2 v0 = vertices_[i0], v1 = vertices_[i];
-                const Vec2 e = v1 - v0, w = q - v0, w1 = q - v1;
-                const double side = e.x * w.y - w.x * e.y;
-                inside ^= ((v0.y > q.y) != (v1.y > q.y)) & ((side > 0.0) == (v1.y > v0.y));
-                // Is q within radius of the edge (its nearest point an end or inside)?
-                const double along = glm::dot(e, w), ee = glm::dot(e, e);
-                const bool nearStart = (along <= 0.0) & (glm::dot(w, w) <= radius2);
-                const bool nearEnd = (along >= ee) & (glm::dot(w1, w1) <= radius2);
-                const bool nearInner = (along > 0.0) & (along < ee) & (side * side <= radius2 * ee);
-                nearEdge[nearCount][0] = i0;
-                nearEdge[nearCount][1] = i;
-                nearCount = std::min(nearCount + int(nearStart | nearEnd | nearInner), kMaxNear);
-                i0 = i;
-            }
-            begin = end;
+        const std::uint32_t edgeCount = static_cast<std::uint32_t>(edges_.size());
+        for (std::uint32_t i = 0; i < edgeCount; ++i) {
+            const Edge& edge = edges_[i];
+            const Vec2 w = q - edge.v0;
+            const double side = edge.e.x * w.y - w.x * edge.e.y;
+            inside ^= ((edge.v0.y > q.y) != (edge.v1y > q.y)) & ((side > 0.0) == (edge.e.y > 0.0));
+            const bool near = side * side <= radius2 * edge.ee;
+            nearEdge[nearCount] = i;
+            nearCount = std::min(nearCount + int(near), kMaxNear);
         }
         if (nearCount == kMaxNear) return classifyExactly(cone);
         if (nearCount == 0 && !inside) return missClass();
         const auto [tNear, tFar] = crossingDepths(cone, f);
-        if (cone.surelyAfter(tNear) || cone.surelyBefore(tFar)) return missClass();
-        // The near edges against the cone itself.
+        if (cone.surelyAfter(tNear) || cone.surelyBefore(tFar) ||
+            ballOutsideRange(cone, Vec3(center_, 0.0), radius_))
+            return missClass();
+        // The near edges against the cone itself: in the plane, against
+        // its elliptic footprint.
+        const FootprintQuadric footprint(cone, f.depth, f.an, f.k);
         int meeting = 0;
-        bool endpointInside = false;
+        const Edge* met = nullptr;
         for (int n = 0; n < nearCount; ++n) {
-            const ConePoint a = conePoint(cone, Vec3(vertices_[nearEdge[n][0]], 0.0) - p);
-            const ConePoint b = conePoint(cone, Vec3(vertices_[nearEdge[n][1]], 0.0) - p);
-            if (segmentMeetsCone(cone, a, b)) {
+            const Edge& edge = edges_[nearEdge[n]];
+            if (footprint.segmentMeets(edge.v0, edge.v0 + edge.e)) {
                 ++meeting;
-                endpointInside = endpointInside || a.inside || b.inside;
+                met = &edge;
             }
         }
         if (meeting > 0) {
-            const bool single = meeting == 1 && !endpointInside && cone.surelyWithin(tNear, tFar);
+            const bool single = meeting == 1 && cone.surelyWithin(tNear, tFar) &&
+                                !footprint.containsStrictly(met->v0) &&
+                                !footprint.containsStrictly(met->v0 + met->e);
             return marginalClass(cone, tNear, tFar, single);
         }
         // No edge in the cone: the footprint is wholly in or out, as q.

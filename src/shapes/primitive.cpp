@@ -111,39 +111,44 @@ ConeClass Primitive::classifyGeneral(const PreparedCone& cone) const {
     const Mat3& a = frame_.localFromWorld;
     const Vec3 aAxis = a * cone.axis;
     const double la2 = glm::dot(aAxis, aAxis);
+    // The root and the reciprocal side by side, not one after the other.
     const double la = std::sqrt(la2);
-    const double invLa = 1.0 / la;
+    const double invLa2 = 1.0 / la2;
+    const double invLa = la * invLa2;
     const Vec3 axis = aAxis * invLa;
     // With u, v unit across the world axis, A u = qu + pu axis and
     // A v = qv + pv axis: tau = |(pu, pv)| is the length of A^T axis off the
-    // world axis (computed as a vector, without cancellation), and the Gram
-    // matrix of (qu, qv) has trace tr(G) - la^2 - tau^2 and determinant
+    // world axis, i.e. |G a - la^2 a| / la (G = A^T A, kept with the frame;
+    // computed as a vector, without cancellation), and the Gram matrix of
+    // (qu, qv) has trace tr(G) - la^2 - tau^2 and determinant
     // det(A)^2 / la^2, so its larger eigenvalue sigmaPerp^2 needs no basis.
-    const Vec3 back = axis * a - la * cone.axis;  // A^T axis, off the world axis
-    const double tau2 = glm::dot(back, back);
+    const Vec3 back = frame_.gram * cone.axis - la2 * cone.axis;  // la A^T axis, off the world axis
+    const double tau2 = glm::dot(back, back) * invLa2;
     const double tau = std::sqrt(tau2);
     const double trace = frame_.gramTrace;
     // Rounding: the trace's difference is off by a few ulps of the trace,
     // the discriminant by a few ulps of trace * sum; both are padded upward.
     const double sum = std::max(0.0, trace - la2 - tau2) + 1e-14 * trace;
-    const double product = frame_.gramDeterminant * invLa * invLa;
+    const double product = frame_.gramDeterminant * invLa2;
     const double spread = std::max(0.0, sum * sum - 4.0 * product) + 1e-13 * trace * sum;
-    const double sigmaPerp = std::sqrt(0.5 * (sum + std::sqrt(spread)));
+    const double sigmaPerp2 = 0.5 * (sum + std::sqrt(spread));
     const double c = cone.cosHalf, s = cone.sinHalf;
 
     LocalCone local;
     local.apex = a * cone.apex + frame_.localOffset;
     local.axis = axis;
     // A direction at angle phi <= theta from the axis maps to one whose
-    // tangent from the new axis is at most tan(phi) sigmaPerp / (la - tan(phi) tau).
+    // tangent from the new axis is at most tan(phi) sigmaPerp / (la - tan(phi) tau),
+    // tl = s sigmaPerp / den: cos = den / |(den, s sigmaPerp)|, sin = tl cos.
     local.cosHalf = -1.0;
     local.sinHalf = 0.0;
     if (c > 0.0) {
         const double den = c * la - s * tau;
         if (den > 0.0) {
-            const double tl = s * sigmaPerp / den * (1.0 + 1e-12) + 1e-300;
-            local.cosHalf = 1.0 / std::sqrt(1.0 + tl * tl);
-            local.sinHalf = tl * local.cosHalf;
+            const double lift = s * std::sqrt(sigmaPerp2) * (1.0 + 1e-12) + 1e-300 * den;
+            const double inv = 1.0 / std::sqrt(den * den + lift * lift);
+            local.cosHalf = den * inv;
+            local.sinHalf = lift * inv;
         }
     }
     // Bounds on L = |A d| over the cone: |A(d - axis)| <= 2 sin(theta/2) sigmaMax,
@@ -155,6 +160,8 @@ ConeClass Primitive::classifyGeneral(const PreparedCone& cone) const {
     double lMin = std::max(frame_.sigmaMin, la - chord * frame_.sigmaMax);
     if (c > 0.0) lMin = std::max(lMin, c * la - s * tau);
     const double lMax = std::min(frame_.sigmaMax, la + chord * frame_.sigmaMax);
+    // Divided by below; the reciprocals are ready while the shape works.
+    const double invLMin = 1.0 / lMin, invLMax = 1.0 / lMax;
     const double absTol = 1e-11 * (l1(local.apex) + sphereTolerance_);
     local.setRange(cone.tMin * lMin, cone.tMax * lMax, absTol);
 
@@ -174,10 +181,10 @@ ConeClass Primitive::classifyGeneral(const PreparedCone& cone) const {
         }
     }
     double farBound = kInfinity;
-    if (firstHitKept) farBound = (out.tFar + tolFar) / lMin;
+    if (firstHitKept) farBound = (out.tFar + tolFar) * invLMin;
     else if (bounded())
-        farBound = (glm::length(local.apex - localSphere_.center) + localSphere_.radius) / lMin;
-    out.tNear = std::max(cone.tMin, (out.tNear - tolNear) / lMax);
+        farBound = (glm::length(local.apex - localSphere_.center) + localSphere_.radius) * invLMin;
+    out.tNear = std::max(cone.tMin, (out.tNear - tolNear) * invLMax);
     out.tFar = std::min(cone.tMax, farBound);
     return out;
 }

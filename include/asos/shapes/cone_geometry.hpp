@@ -8,7 +8,9 @@
 // sigma = w.axis and perp = w - sigma*axis, which stays exact for tiny cones
 // where cos(halfAngle) rounds to 1.
 #include <algorithm>
+#include <bit>
 #include <cmath>
+#include <cstdint>
 
 #include "asos/geometry/vec.hpp"
 #include "asos/shapes/local_cone.hpp"
@@ -27,6 +29,30 @@ inline ConeClass fullClass(double tNear, double tFar) {
 inline ConeClass marginalClass(const LocalCone& cone, double tNear, double tFar,
                                bool singleEdge = false) {
     return {Coverage::Marginal, std::max(cone.tMin, tNear), std::min(cone.tMax, tFar), singleEdge};
+}
+
+// `yes ? a : b` without a branch, for answers that are as good as random
+// from one cone to the next (a mispredicted branch costs more than both).
+inline double selectDouble(bool yes, double a, double b) {
+    const std::uint64_t mask = -static_cast<std::uint64_t>(yes);
+    return std::bit_cast<double>((std::bit_cast<std::uint64_t>(a) & mask) |
+                                 (std::bit_cast<std::uint64_t>(b) & ~mask));
+}
+
+// The answer for a footprint known to miss the object, to lie wholly on it
+// (full), or neither (Marginal), with every ray's hit depth in [tNear, tFar]:
+// the range then turns a Full into a Marginal or anything into a Miss. The
+// same answers as missClass / fullClass / marginalClass, without a branch.
+inline ConeClass rangedClass(const LocalCone& cone, bool miss, bool full, double tNear,
+                             double tFar) {
+    miss = miss | cone.surelyAfter(tNear) | cone.surelyBefore(tFar);
+    full = full & cone.surelyWithin(tNear, tFar);
+    ConeClass out;
+    out.coverage = static_cast<Coverage>(static_cast<int>(!miss) * (2 - static_cast<int>(full)));
+    // A Full's bounds are inside the range already.
+    out.tNear = selectDouble(miss, kInfinity, std::max(cone.tMin, tNear));
+    out.tFar = selectDouble(miss, -kInfinity, std::min(cone.tMax, tFar));
+    return out;
 }
 
 // angle(n, axis) <= halfAngle, from k = n.axis and g = |n x axis|.
@@ -214,13 +240,133 @@ struct CrossingDepths {
     double tFar;
 };
 
-inline CrossingDepths crossingDepths(const LocalCone& cone, const FootprintReach& f) {
-    const double c = cone.cosHalf, s = cone.sinHalf;
-    const double g = std::sqrt(f.g2);
-    const double lo = f.an * c - g * s;
-    const double hi = angleWithin(f.an, g, c, s) ? 1.0 : f.an * c + g * s;
-    return {f.depth / hi, f.depth / lo};
+// With depth h, an = cos(gamma) > 0 and g2 = sin^2(gamma) of a plane that
+// every ray crosses (c > 0): h / hi and h / lo, lo and hi the least and
+// greatest cosine of a ray with the normal (hi = 1 when the normal is in the
+// cone). One division by lo hi = an^2 c^2 - g2 s^2, which needs no root, so
+// that it runs beside the root of g2 rather than after it.
+inline CrossingDepths planeDepths(double depth, double an, double g2, double c, double s) {
+    const double scaled = depth / (an * an * c * c - g2 * s * s);
+    const double g = std::sqrt(g2);
+    const double lo = an * c - g * s, hi = an * c + g * s;
+    return {g2 <= s * s ? depth : lo * scaled, hi * scaled};
 }
+
+inline CrossingDepths crossingDepths(const LocalCone& cone, const FootprintReach& f) {
+    return planeDepths(f.depth, f.an, f.g2, cone.cosHalf, cone.sinHalf);
+}
+
+// The footprint on the plane z = 0 (every ray of the cone crossing it, as
+// for a valid FootprintReach) as a quadratic form: with m its centre, e =
+// depth s / k and a the axis' (x, y), a point x of the plane is in the cone
+// iff |y|^2 - (a.y)^2 / c^2 <= e^2 k (y = x - m): the ellipse's matrix is
+// e^2 (k I + a a^T), whose inverse is (I - a a^T / c^2) / (e^2 k). Grown by
+// the distance tolerance (the ellipse scaled by 1 + tol / b contains it, b
+// its minor semi-axis), and by the rounding of the form, so that "outside"
+// is sure; a segment meets it iff the form's minimum along it is within.
+class FootprintQuadric {
+public:
+    FootprintQuadric(const LocalCone& cone, double depth, double an, double k) {
+        const Vec3& p = cone.apex;
+        a_ = Vec2(cone.axis.x, cone.axis.y);
+        const double c = cone.cosHalf;
+        invC2_ = 1.0 / (c * c);
+        const double invK = 1.0 / k;
+        const double t = depth * an * invK;
+        m_ = Vec2(p.x + t * a_.x, p.y + t * a_.y);
+        const double e = depth * cone.sinHalf * invK;
+        const double minor = e * std::sqrt(k);
+        const double tol = cone.absTol + 1e-12 * (std::abs(m_.x) + std::abs(m_.y) + e * c);
+        // The form's relative rounding is at most a few ulps of c^2 / k <= 1e6.
+        limit_ = (minor + tol) * (minor + tol) * (1.0 + 1e-9);
+        minor2_ = minor * minor;
+    }
+
+    bool contains(const Vec2& x) const { return form(x - m_) <= limit_; }
+    // In the footprint itself, not grown (a point of a boundary inside the
+    // cone, for the single-edge criterion).
+    bool containsStrictly(const Vec2& x) const { return form(x - m_) <= minor2_; }
+
+    bool segmentMeets(const Vec2& v0, const Vec2& v1) const {
+        const Vec2 e = v1 - v0, y0 = v0 - m_;
+        const double ae = glm::dot(a_, e);
+        const double qa = glm::dot(e, e) - ae * ae * invC2_;
+        const double qb = glm::dot(y0, e) - glm::dot(a_, y0) * ae * invC2_;
+        // The form is positive definite: qa > 0 unless the edge is a point
+        // (then t is NaN or infinite and ends at 0 or 1). No branch: where
+        // the nearest point falls is as good as random.
+        const double t = std::min(std::max(0.0, -qb / qa), 1.0);
+        return form(y0 + t * e) <= limit_;
+    }
+
+private:
+    double form(const Vec2& y) const {
+        const double ay = glm::dot(a_, y);
+        return glm::dot(y, y) - ay * ay * invC2_;
+    }
+
+    Vec2 m_{0.0}, a_{0.0};
+    double invC2_ = 1.0, limit_ = 0.0, minor2_ = 0.0;
+};
+
+// The footprint ellipse (on a plane z = zc every ray of the cone crosses, as
+// for a valid FootprintReach) against circles about (0, 0, zc), for footprints small next to the circles (a pixel's
+// cone against a disc): tight bounds from the ellipse's extent along the
+// direction n of its centre m, with no unit vector and no root but two.
+//
+// With e = depth s / k the ellipse is {m + y : y^T M^-1 y <= 1},
+// M = e^2 (k I + a a^T) (a = the axis' (x, y)), whose support along a unit
+// n is S = e sqrt(k + (n.a)^2) and across it S' = e sqrt(c^2 - (n.a)^2).
+// Every point x has n.x in [d - S, d + S] (d = |m|) and |x|^2 <= (d + S)^2 +
+// S'^2; the points m and m - M n / S (where n.x = d - S) are in it, and one
+// point has |x| >= d + S; the origin is in it when m^T M^-1 m <= 1. A circle of radius rho is wholly around the
+// ellipse, wholly off it, surely crossing it, or (within a few tolerances
+// of tangency, or the centre on the origin) undecided.
+enum class CircleRelation { EllipseInside, EllipseOutside, Crossing, Unsure };
+
+class CircleFootprint {
+public:
+    // depth, an, k: as in FootprintReach (the plane z = apex.z + depth sign(axis.z)).
+    CircleFootprint(const LocalCone& cone, double depth, double an, double k) {
+        const Vec3& p = cone.apex;
+        const Vec2 a(cone.axis.x, cone.axis.y);
+        const double c = cone.cosHalf;
+        const double invK = 1.0 / k;
+        const double t = depth * an * invK;
+        const Vec2 m(p.x + t * a.x, p.y + t * a.y);
+        const double e = depth * cone.sinHalf * invK, e2 = e * e;
+        d2_ = glm::dot(m, m);
+        const double mu = glm::dot(m, a);
+        d_ = std::sqrt(d2_);
+        sd_ = std::sqrt(e2 * (k * d2_ + mu * mu));  // S d
+        across2_ = e2 * (c * c * d2_ - mu * mu);      // S'^2 d^2
+        // m - M n / S = m - e^2 (k m + (m.a) a) / (S d).
+        const double w = e2 / sd_;
+        const Vec2 near = m - w * (k * m + mu * a);
+        near2_ = glm::dot(near, near);
+        // The origin is in the ellipse: m^T M^-1 m <= 1, M^-1 = (I - a a^T / c^2) / (e^2 k).
+        originIn_ = across2_ <= e2 * e2 * k * c * c;
+        tolBase_ = cone.absTol + 1e-12 * (d_ + e * c);
+    }
+
+    CircleRelation relation(double rho) const {
+        const double tol = tolBase_ + 1e-12 * rho;
+        const double outer = rho + tol, inner = rho - tol;
+        // Multiplied by d: d - S > outer, and so on.
+        const double lowD = d2_ - sd_, highD = d2_ + sd_;
+        if (lowD > outer * d_) return CircleRelation::EllipseOutside;
+        if (inner > 0.0 && highD * highD + across2_ < inner * inner * d2_)
+            return CircleRelation::EllipseInside;
+        const bool pointOut = highD > outer * d_;
+        const bool pointIn =
+            inner > 0.0 && (originIn_ || near2_ < inner * inner || d2_ < inner * inner);
+        return pointOut && pointIn ? CircleRelation::Crossing : CircleRelation::Unsure;
+    }
+
+private:
+    double d2_, d_, sd_, across2_, near2_, tolBase_;
+    bool originIn_;
+};
 
 // A cone whose apex lies in the plane z = 0 (to rounding: |apex.z| <= hTol),
 // given the DotRange of +z: its rays cross the plane at |t| <= hTol / |d.z|,

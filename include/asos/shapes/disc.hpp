@@ -31,6 +31,9 @@ public:
     ConeClass classify(const LocalCone& cone) const;
 
 private:
+    // Both circles against the cone (the fast path's fallback near tangency).
+    ConeClass classifyExactly(const LocalCone& cone) const;
+
     double radius_;
     double hole_;
 };

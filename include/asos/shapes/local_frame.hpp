@@ -34,6 +34,7 @@ struct LocalFrame {
     // the plane across a cone's axis in closed form (Primitive::classify).
     double gramTrace = 3.0;
     double gramDeterminant = 1.0;
+    Mat3 gram{1.0};  // General: G itself
     Mat3 objectFromLocal{1.0};  // object = objectFromLocal * local + objectOffset
     Vec3 objectOffset{0.0};
 

@@ -44,8 +44,17 @@ private:
     // Every edge against the cone (the fast path's fallback near an edge).
     ConeClass classifyExactly(const LocalCone& cone) const;
 
+    // Every edge of every loop, from v0 to v0 + e, for the cone's pass.
+    struct Edge {
+        Vec2 v0;
+        Vec2 e;
+        double v1y;  // (v0 + e).y as given
+        double ee;   // |e|^2
+    };
+
     std::vector<Vec2> vertices_;
     std::vector<std::uint32_t> loopEnds_;  // exclusive end of each loop in vertices_
+    std::vector<Edge> edges_;
     Vec2 lo_{0.0}, hi_{0.0};               // 2D bounding box
     Vec2 center_{0.0};
     double radius_ = 0.0;
