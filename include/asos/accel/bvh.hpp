@@ -239,6 +239,21 @@ struct StackEntry {
     float tNear;
 };
 
+// Orders stack[base, top) by tNear, farthest first, so that the pops come
+// near first (an insertion sort: at most four entries).
+template <class Entry>
+inline void sortFarthestFirst(Entry* stack, int base, int top) {
+    for (int i = base + 1; i < top; ++i) {
+        const Entry e = stack[i];
+        int j = i;
+        while (j > base && stack[j - 1].tNear < e.tNear) {
+            stack[j] = stack[j - 1];
+            --j;
+        }
+        stack[j] = e;
+    }
+}
+
 // Depth is bounded by the build (median splits past a depth limit), so a
 // fixed stack suffices: at most three entries pushed per level.
 inline constexpr int kMaxDepth = 96;
@@ -475,17 +490,7 @@ __attribute__((always_inline)) inline void Bvh::traverseOctant(const bvh_detail:
                     mask &= mask - 1;
                     stack[top++] = {node.child[k], lo[k]};
                 }
-                if constexpr (Ordered) {
-                    for (int i = base + 1; i < top; ++i) {
-                        const StackEntry e = stack[i];
-                        int j = i;
-                        while (j > base && stack[j - 1].tNear < e.tNear) {
-                            stack[j] = stack[j - 1];
-                            --j;
-                        }
-                        stack[j] = e;
-                    }
-                }
+                if constexpr (Ordered) sortFarthestFirst(stack, base, top);
                 ref = stack[--top].ref;
             }
         }
@@ -721,15 +726,7 @@ void Bvh::traversePacketOctant(bvh_detail::PacketPrep& packet, Leaf& leaf) const
                     mask &= mask - 1;
                     stack[top++] = {node.child[k], lo[k], at + k};
                 }
-                for (int i = base + 1; i < top; ++i) {
-                    const PacketStackEntry e = stack[i];
-                    int j = i;
-                    while (j > base && stack[j - 1].tNear < e.tNear) {
-                        stack[j] = stack[j - 1];
-                        --j;
-                    }
-                    stack[j] = e;
-                }
+                sortFarthestFirst(stack, base, top);
                 --top;
                 ref = stack[top].ref;
                 box = stack[top].box;
