@@ -51,7 +51,7 @@ struct DiffuseSum {
 struct AreaBeamNode {
     LightPiece piece;
     std::uint32_t first, count;  // its occluders in AreaLightScratch::items[]
-    bool blocked;                // its central ray is blocked
+    bool blocked;                // its central ray is blocked (once traced)
 };
 
 // Per-thread buffers: once grown, a shaded point allocates nothing.
@@ -70,6 +70,13 @@ struct AreaLightScratch {
     std::vector<double> gridWeights;        // grid: per lattice point, its weight
     std::vector<std::int8_t> gridState;     // grid: per lattice point, -1 unknown, 0 blocked, 1 lit
     SubdivisionTally tally;
+    // ASOS beams: a sub-beam's occluders for its point samples, each with
+    // the shaded point in its local frame.
+    struct SampleOccluder {
+        const Primitive* primitive;
+        Vec3 origin;
+    };
+    std::vector<SampleOccluder> sampleOccluders;
     std::vector<BeamCandidateCache> beamCandidates;  // per light: the objects near the last beams
 };
 

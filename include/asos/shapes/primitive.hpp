@@ -52,6 +52,11 @@ public:
     std::optional<LocalHit> intersectLocal(const Ray& worldRay, double tMin, double tMax) const;
     SurfaceHit surfaceHit(const Ray& worldRay, const LocalHit& hit) const;
     bool intersectAny(const Ray& worldRay, double tMin, double tMax) const;
+    // The same for many rays from one origin (an area light's point samples):
+    // the origin is carried into the local frame once, by originToLocal, and
+    // intersectAnyFrom(originToLocal(o), d, lo, hi) == intersectAny({o, d}, lo, hi).
+    Vec3 originToLocal(const Vec3& worldOrigin) const { return frame_.pointToLocal(worldOrigin); }
+    bool intersectAnyFrom(const Vec3& localOrigin, const Vec3& worldDir, double tMin, double tMax) const;
     ConeClass classify(const Cone& worldCone) const;
     // The same, for a cone whose trigonometry is done once for many objects.
     ConeClass classify(const PreparedCone& worldCone) const;
