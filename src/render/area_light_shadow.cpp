@@ -263,23 +263,42 @@ private:
         }
         const AreaLightScratch::SampleOccluder* first = list.data();
         std::uint64_t pieces = 0, rays = 0, tests = 0;
-        beams_.forEachCentralRay(piece, depth, [&](const BeamRay& ray) __attribute__((always_inline)) {
-            ++pieces;
-            const Vec3& dir = ray.ray.dir;
-            if (glm::dot(q_.normal, dir) < kPovEpsilon) return;
-            ++rays;
-            const double t0 = origin_.rayStart(dir);
-            const double t1 = ray.distance - kTolerance;
-            if (!(t0 < t1)) {
-                if (origin_.behind) return;
-            } else {
+        // The lattice's loop with `blocked(dir, t0, t1)` inlined.
+        const auto sample = [&](auto&& blocked) {
+            beams_.forEachCentralRay(piece, depth, [&](const BeamRay& ray) __attribute__((always_inline)) {
+                ++pieces;
+                const Vec3& dir = ray.ray.dir;
+                if (glm::dot(q_.normal, dir) < kPovEpsilon) return;
+                ++rays;
+                const double t0 = origin_.rayStart(dir);
+                const double t1 = ray.distance - kTolerance;
+                if (!(t0 < t1)) {
+                    if (origin_.behind) return;
+                } else if (blocked(dir, t0, t1)) {
+                    return;
+                }
+                emitAbove(ray, share);
+            });
+        };
+        if (count == 1) {
+            // One occluder (the common case): its shape's test is resolved
+            // once for the whole lattice.
+            const Vec3 origin = first[0].origin;
+            first[0].primitive->withAnyTest([&](const auto& test) {
+                sample([&](const Vec3& dir, double t0, double t1) __attribute__((always_inline)) {
+                    ++tests;
+                    return test(origin, dir, t0, t1);
+                });
+            });
+        } else {
+            sample([&](const Vec3& dir, double t0, double t1) __attribute__((always_inline)) {
                 for (std::uint32_t i = 0; i < count; ++i) {
                     ++tests;
-                    if (first[i].primitive->intersectAnyFrom(first[i].origin, dir, t0, t1)) return;
+                    if (first[i].primitive->intersectAnyFrom(first[i].origin, dir, t0, t1)) return true;
                 }
-            }
-            emitAbove(ray, share);
-        });
+                return false;
+            });
+        }
         c_.countShadowPyrays(piece.level + depth, pieces);
         c_.shadowRays += rays;
         c_.rayTests += tests;
@@ -304,10 +323,11 @@ private:
     }
 
     // How many levels above MAX a marginal beam's descendants may be left
-    // undetected: as many as make 16 MAX-beams, whose point samples cost
-    // about as many rays as the detection of one or two levels of children
-    // costs in cone classifications (docs/lights.md).
-    int undetectedLevels() const { return beams_.shape() == LightShape::Segment ? 4 : 2; }
+    // undetected: three for quarters (64 MAX-beams) and four for halves (16),
+    // whose point samples cost about as much as the detection of the levels
+    // between costs in cone classifications and the samples of the marginal
+    // pieces it leaves (docs/lights.md, "Detection where it pays").
+    int undetectedLevels() const { return beams_.shape() == LightShape::Segment ? 4 : 3; }
 
     // Whether the stopping rule could stop at the next level (of pieces each
     // `childShare` of the light) if the children of this level's marginal
@@ -389,10 +409,7 @@ private:
     void emitAbove(const BeamRay& ray, double share) {
         const Vec3& dir = ray.ray.dir;
         const double distance = ray.distance - origin_.surfaceDistance(dir);
-        const LightSample sample{dir, std::max(distance, 0.0), model_.color * (share * beams_.emission(dir))};
-        // Diffuse only: summed as made (the same sum as mergeDiffuse's).
-        if (q_.diffuseOnly) s_.diffuseSum.add(sample);
-        else s_.samples.push_back(sample);
+        add(dir, distance, share * beams_.emission(dir));
     }
 
     // A sub-beam that reaches the light unobstructed (no ray needed). The
@@ -444,9 +461,13 @@ private:
         if (cosine < kPovEpsilon) return;  // it would light nothing
         const Vec3& dir = ray.ray.dir;
         const double distance = ray.distance - origin_.surfaceDistance(dir);
-        const LightSample sample{dir, std::max(distance, 0.0), model_.color * (share * emission)};
-        if (q_.diffuseOnly) s_.diffuseSum.add(sample);
-        else s_.samples.push_back(sample);
+        add(dir, distance, share * emission);
+    }
+    // The sample of the light's colour times k along `dir`. Diffuse only:
+    // summed as made (WeightedDiffuseSum, mergeDiffuse's sample).
+    void add(const Vec3& dir, double distance, double k) {
+        if (q_.diffuseOnly) s_.diffuseSum.add(dir, std::max(distance, 0.0), k);
+        else s_.samples.push_back({dir, std::max(distance, 0.0), model_.color * k});
     }
 
     // Two numbers in [0, 1) for a piece: its level and position decide them.
@@ -585,13 +606,11 @@ std::span<const LightSample> asosAreaLightSamples(const Scene& scene, const Ligh
     scratch.diffuseSum.clear();
     if (model.isArea()) BeamShadow(scene, model, query, origin, scratch, counters).run();
     if (!query.diffuseOnly) return scratch.samples;
-    // The samples were summed as they were made (BeamShadow::emit): the one
+    // The samples were summed as they were made (BeamShadow::add): the one
     // sample that lights the point as all of them (mergeDiffuse), or none
     // when they carry no light.
-    const DiffuseSum& sum = scratch.diffuseSum;
-    if (sum.count == 1) scratch.samples.push_back(sum.first);
-    if (sum.count < 2) return scratch.samples;
-    const std::optional<LightSample> merged = sum.merged();
+    if (scratch.diffuseSum.count == 0) return scratch.samples;
+    const std::optional<LightSample> merged = scratch.diffuseSum.merged(model.color);
     if (!merged) return scratch.samples;
     scratch.merged = *merged;
     return {&scratch.merged, 1};
