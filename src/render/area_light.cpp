@@ -25,6 +25,15 @@ std::optional<LightSample> DiffuseSum::merged() const {
     return LightSample{sum / length, distance / total, color * (length / total)};
 }
 
+std::optional<LightSample> WeightedDiffuseSum::merged(const Vec3& color) const {
+    if (count == 1) return LightSample{firstDirection, firstDistance, color * firstWeight};
+    // mergeDiffuse weighs by the colours' sums of channels, color-sum x k.
+    const double length = glm::length(sum);
+    const double channels = color.x + color.y + color.z;
+    if (!(length > 0.0) || !(channels * total > 0.0)) return std::nullopt;
+    return LightSample{sum / length, distance / total, color * length};
+}
+
 std::span<const LightSample> mergeDiffuse(std::span<const LightSample> samples, LightSample& storage) {
     DiffuseSum total;
     for (const LightSample& s : samples) total.add(s);

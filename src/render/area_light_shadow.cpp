@@ -127,29 +127,47 @@ public:
             case Verdict::Marginal: break;
         }
 
-        // Subdivision, all marginal sub-beams of a level together.
+        // Subdivision, all marginal sub-beams of a level together. A marginal
+        // sub-beam's central ray is traced only when the stopping rule may
+        // need it (docs/lights.md, "Central rays when they count").
         std::vector<Node>* nodes = s_.nodes;
-        s_.hits[0].assign(rootCount, 0);
         nodes[0].clear();
         nodes[0].push_back({root, 0, rootCount, false});
-        nodes[0].back().blocked = rayBlocked(root.central, rootItems, 0, rootCount, s_.hits[0].data());
         const AsosSettings& settings = model_.asos;
         const bool halving = beams_.singleEdgeHalving();
         LightPiece children[LightBeams::kMaxChildren];
         int cur = 0;
         for (int level = 0;; ++level) {
-            const std::vector<Node>& levelNodes = nodes[cur];
+            std::vector<Node>& levelNodes = nodes[cur];
             const std::vector<Item>& items = s_.items[cur];
-            const std::vector<std::uint8_t>& hits = s_.hits[cur];
+            std::vector<std::uint8_t>& hits = s_.hits[cur];
             const double share = beams_.share(level);
 
-            s_.tally.clear();
-            for (const Node& n : levelNodes)
-                for (std::uint32_t i = n.first; i < n.first + n.count; ++i)
-                    s_.tally.add(items[i].object, hits[i] != 0,
-                                 halving && items[i].cls.coverage == Coverage::Marginal &&
-                                     items[i].cls.singleEdge);
-            if (level >= settings.maxLevel || s_.tally.changeBoundForShare(share) <= settings.eps) {
+            // The tally, first without the central rays: each marginal
+            // sub-beam counted for each of its occluders. Where even the
+            // least bound this allows exceeds EPS, the rule cannot stop and
+            // no central ray is needed; otherwise they are traced, marking
+            // the occluders they meet, and the rule is the paper's.
+            const auto tallyLevel = [&](const std::uint8_t* marks) {
+                s_.tally.clear();
+                for (const Node& n : levelNodes)
+                    for (std::uint32_t i = n.first; i < n.first + n.count; ++i)
+                        s_.tally.add(items[i].object, marks && marks[i] != 0,
+                                     halving && items[i].cls.coverage == Coverage::Marginal &&
+                                         items[i].cls.singleEdge);
+            };
+            tallyLevel(nullptr);
+            bool stop = level >= settings.maxLevel;
+            bool traced = false;
+            if (!stop && s_.tally.leastChangeBoundForShare(share) <= settings.eps) {
+                hits.assign(items.size(), 0);
+                for (Node& n : levelNodes)
+                    n.blocked = rayBlocked(n.piece.central, items, n.first, n.count, hits.data());
+                traced = true;
+                tallyLevel(hits.data());
+                stop = s_.tally.changeBoundForShare(share) <= settings.eps;
+            }
+            if (stop) {
                 // Stop: each marginal sub-beam is decided by its central ray,
                 // or at MAX with jitter by a random ray inside it.
                 const bool jitter = settings.jitter && level >= settings.maxLevel;
@@ -157,7 +175,7 @@ public:
                     if (jitter) {
                         const BeamRay ray = beams_.sample(n.piece, randomPoint(n.piece));
                         if (!rayBlocked(ray, items, n.first, n.count, nullptr)) emit(ray, share);
-                    } else if (!n.blocked) {
+                    } else if (traced ? !n.blocked : !rayBlocked(n.piece.central, items, n.first, n.count, nullptr)) {
                         emit(n.piece.central, share);
                     }
                 }
@@ -179,10 +197,7 @@ public:
                             pointSample(piece, occluders, n.count, sampleShare);
                         });
                     } else {
-                        beams_.forEachCentralRay(n.piece, toMax, [&](const BeamRay& ray) {
-                            c_.countShadowPyray(settings.maxLevel);
-                            sampleRay(ray, occluders, n.count, sampleShare);
-                        });
+                        sampleCentralRays(n.piece, toMax, occluders, n.count, sampleShare);
                     }
                 }
                 break;
@@ -190,10 +205,8 @@ public:
 
             const int next = 1 - cur;
             std::vector<Item>& childItems = s_.items[next];
-            std::vector<std::uint8_t>& childHits = s_.hits[next];
             std::vector<Node>& childNodes = nodes[next];
             childItems.clear();
-            childHits.clear();
             childNodes.clear();
             for (const Node& n : levelNodes) {
                 const int count = beams_.split(n.piece, children);
@@ -216,13 +229,7 @@ public:
                             refineLit(child);
                             break;
                         case Verdict::Blocked: childItems.resize(first); break;
-                        case Verdict::Marginal: {
-                            childHits.resize(childItems.size(), 0);
-                            Node node{child, first, found, false};
-                            node.blocked = rayBlocked(child.central, childItems, first, found, childHits.data());
-                            childNodes.push_back(node);
-                            break;
-                        }
+                        case Verdict::Marginal: childNodes.push_back({child, first, found, false}); break;
                     }
                 }
             }
@@ -241,6 +248,60 @@ private:
         c_.countShadowPyray(piece.level);
         const BeamRay ray = model_.asos.jitter ? beams_.sample(piece, randomPoint(piece)) : piece.central;
         sampleRay(ray, occluders, count, share);
+    }
+    // The MAX-beams `depth` levels below `piece` without jitter: their
+    // central rays (LightBeams::forEachCentralRay), each decided as
+    // pointSample decides it, with the occluders' primitives looked up once
+    // and the counters kept here (the inner loop of a penumbra).
+    void sampleCentralRays(const LightPiece& piece, int depth, const Item* occluders, std::uint32_t count,
+                           double share) {
+        std::vector<AreaLightScratch::SampleOccluder>& list = s_.sampleOccluders;
+        list.resize(count);
+        for (std::uint32_t i = 0; i < count; ++i) {
+            const Primitive& primitive = scene_.primitive(occluders[i].object);
+            list[i] = {&primitive, primitive.originToLocal(origin_.apex)};
+        }
+        const AreaLightScratch::SampleOccluder* first = list.data();
+        std::uint64_t pieces = 0, rays = 0, tests = 0;
+        // The lattice's loop with `blocked(dir, t0, t1)` inlined.
+        const auto sample = [&](auto&& blocked) {
+            beams_.forEachCentralRay(piece, depth, [&](const BeamRay& ray) __attribute__((always_inline)) {
+                ++pieces;
+                const Vec3& dir = ray.ray.dir;
+                if (glm::dot(q_.normal, dir) < kPovEpsilon) return;
+                ++rays;
+                const double t0 = origin_.rayStart(dir);
+                const double t1 = ray.distance - kTolerance;
+                if (!(t0 < t1)) {
+                    if (origin_.behind) return;
+                } else if (blocked(dir, t0, t1)) {
+                    return;
+                }
+                emitAbove(ray, share);
+            });
+        };
+        if (count == 1) {
+            // One occluder (the common case): its shape's test is resolved
+            // once for the whole lattice.
+            const Vec3 origin = first[0].origin;
+            first[0].primitive->withAnyTest([&](const auto& test) {
+                sample([&](const Vec3& dir, double t0, double t1) __attribute__((always_inline)) {
+                    ++tests;
+                    return test(origin, dir, t0, t1);
+                });
+            });
+        } else {
+            sample([&](const Vec3& dir, double t0, double t1) __attribute__((always_inline)) {
+                for (std::uint32_t i = 0; i < count; ++i) {
+                    ++tests;
+                    if (first[i].primitive->intersectAnyFrom(first[i].origin, dir, t0, t1)) return true;
+                }
+                return false;
+            });
+        }
+        c_.countShadowPyrays(piece.level + depth, pieces);
+        c_.shadowRays += rays;
+        c_.rayTests += tests;
     }
     void sampleRay(const BeamRay& ray, const Item* occluders, std::uint32_t count, double share) {
         if (glm::dot(q_.normal, ray.ray.dir) < kPovEpsilon) return;
@@ -262,9 +323,11 @@ private:
     }
 
     // How many levels above MAX a marginal beam's descendants may be left
-    // undetected: as many as make 16 MAX-beams, whose point samples cost
-    // about as many rays as the detection of one or two levels of children
-    // costs in cone classifications (docs/lights.md).
+    // undetected: two for quarters and four for halves (16 MAX-beams), whose
+    // point samples cost about as much as the detection of the levels between
+    // costs in cone classifications and the samples of the marginal pieces it
+    // leaves (docs/lights.md, "Detection where it pays": three for quarters
+    // takes fewer instructions but more time).
     int undetectedLevels() const { return beams_.shape() == LightShape::Segment ? 4 : 2; }
 
     // Whether the stopping rule could stop at the next level (of pieces each
@@ -347,10 +410,7 @@ private:
     void emitAbove(const BeamRay& ray, double share) {
         const Vec3& dir = ray.ray.dir;
         const double distance = ray.distance - origin_.surfaceDistance(dir);
-        const LightSample sample{dir, std::max(distance, 0.0), model_.color * (share * beams_.emission(dir))};
-        // Diffuse only: summed as made (the same sum as mergeDiffuse's).
-        if (q_.diffuseOnly) s_.diffuseSum.add(sample);
-        else s_.samples.push_back(sample);
+        add(dir, distance, share * beams_.emission(dir));
     }
 
     // A sub-beam that reaches the light unobstructed (no ray needed). The
@@ -402,9 +462,13 @@ private:
         if (cosine < kPovEpsilon) return;  // it would light nothing
         const Vec3& dir = ray.ray.dir;
         const double distance = ray.distance - origin_.surfaceDistance(dir);
-        const LightSample sample{dir, std::max(distance, 0.0), model_.color * (share * emission)};
-        if (q_.diffuseOnly) s_.diffuseSum.add(sample);
-        else s_.samples.push_back(sample);
+        add(dir, distance, share * emission);
+    }
+    // The sample of the light's colour times k along `dir`. Diffuse only:
+    // summed as made (WeightedDiffuseSum, mergeDiffuse's sample).
+    void add(const Vec3& dir, double distance, double k) {
+        if (q_.diffuseOnly) s_.diffuseSum.add(dir, std::max(distance, 0.0), k);
+        else s_.samples.push_back({dir, std::max(distance, 0.0), model_.color * k});
     }
 
     // Two numbers in [0, 1) for a piece: its level and position decide them.
@@ -543,13 +607,11 @@ std::span<const LightSample> asosAreaLightSamples(const Scene& scene, const Ligh
     scratch.diffuseSum.clear();
     if (model.isArea()) BeamShadow(scene, model, query, origin, scratch, counters).run();
     if (!query.diffuseOnly) return scratch.samples;
-    // The samples were summed as they were made (BeamShadow::emit): the one
+    // The samples were summed as they were made (BeamShadow::add): the one
     // sample that lights the point as all of them (mergeDiffuse), or none
     // when they carry no light.
-    const DiffuseSum& sum = scratch.diffuseSum;
-    if (sum.count == 1) scratch.samples.push_back(sum.first);
-    if (sum.count < 2) return scratch.samples;
-    const std::optional<LightSample> merged = sum.merged();
+    if (scratch.diffuseSum.count == 0) return scratch.samples;
+    const std::optional<LightSample> merged = scratch.diffuseSum.merged(model.color);
     if (!merged) return scratch.samples;
     scratch.merged = *merged;
     return {&scratch.merged, 1};

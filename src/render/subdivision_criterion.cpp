@@ -26,4 +26,13 @@ double SubdivisionTally::changeBoundForShare(double area) const {
     return bound;
 }
 
+double SubdivisionTally::leastChangeBoundForShare(double area) const {
+    double bound = 0.0;
+    for (const Entry& e : entries_) {
+        const double l = double((e.in + e.out + 1) / 2);
+        bound += e.allSingleEdge ? 0.5 * l * area : l * area;
+    }
+    return bound;
+}
+
 }  // namespace asos

@@ -79,6 +79,22 @@ Bounds3 Frustum::worldBounds(const Mat3& m, const Vec3& offset) const {
     return b;
 }
 
+bool Frustum::intersectAny(const Ray& ray, double tMin, double tMax) const {
+    // intersect's choice of t, without the hit record.
+    if (empty()) return false;
+    if (capped_) {
+        const Interval in = solidInterval(ray.origin, ray.dir);
+        return in.hit && ((in.enter >= tMin && in.enter <= tMax) || (in.exit >= tMin && in.exit <= tMax));
+    }
+    const SideQuadratic q = sideQuadratic(profile(), ray.origin, ray.dir);
+    for (int i = 0; i < q.count; ++i) {
+        const double z = q.centerZ + q.o.z + q.roots[i] * ray.dir.z;
+        const double tt = q.shift + q.roots[i];
+        if (z >= 0.0 && z <= length_ && tt >= tMin && tt <= tMax && tt < kInfinity) return true;
+    }
+    return false;
+}
+
 std::optional<LocalHit> Frustum::intersect(const Ray& ray, double tMin, double tMax) const {
     if (empty()) return std::nullopt;
     double t;

@@ -53,6 +53,11 @@ bool Primitive::intersectAny(const Ray& worldRay, double tMin, double tMax) cons
     return visit([&](const auto& s) { return s.intersectAny(ray, tMin, tMax); });
 }
 
+bool Primitive::intersectAnyFrom(const Vec3& localOrigin, const Vec3& worldDir, double tMin, double tMax) const {
+    const Ray ray{localOrigin, frame_.kind == LocalFrame::Kind::Translate ? worldDir : frame_.localFromWorld * worldDir};
+    return visit([&](const auto& s) { return s.intersectAny(ray, tMin, tMax); });
+}
+
 ConeClass Primitive::classify(const Cone& worldCone) const {
     return classify(PreparedCone(worldCone));
 }

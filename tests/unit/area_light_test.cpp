@@ -359,3 +359,29 @@ TEST_CASE("The apex behind the surface averages a sharp shadow over the eye pyra
     CHECK(std::abs(behind - average) < 0.02);      // the beam from behind sees the footprint
     CHECK(behindApex(makeLightModel(s.d.lights[0], settings), centre, up, footprint).has_value());
 }
+
+TEST_CASE("The ASOS beams' weighted diffuse sum makes mergeDiffuse's sample", "[lights]") {
+    const Vec3 colour(0.8, 0.5, 0.25);
+    const Vec3 dirs[3] = {glm::normalize(Vec3(0.1, 1.0, 0.2)), glm::normalize(Vec3(-0.3, 1.0, 0.0)),
+                          glm::normalize(Vec3(0.0, 1.0, -0.4))};
+    const double distances[3] = {5.0, 5.5, 6.0}, weights[3] = {0.25, 0.125, 0.5};
+    WeightedDiffuseSum sum;
+    std::vector<LightSample> samples;
+    for (int i = 0; i < 3; ++i) {
+        sum.add(dirs[i], distances[i], weights[i]);
+        samples.push_back({dirs[i], distances[i], colour * weights[i]});
+        LightSample storage;
+        const std::span<const LightSample> merged = mergeDiffuse(samples, storage);
+        REQUIRE(merged.size() == 1);
+        const std::optional<LightSample> made = sum.merged(colour);
+        REQUIRE(made);
+        CHECK(glm::length(made->direction - merged[0].direction) <= 1e-14);
+        CHECK(made->distance == Approx(merged[0].distance).epsilon(1e-14));
+        CHECK(glm::length(made->color - merged[0].color) <= 1e-14);
+    }
+    // No light: no sample.
+    WeightedDiffuseSum none;
+    none.add(dirs[0], 5.0, 0.5);
+    none.add(dirs[0], 5.0, -0.5);
+    CHECK_FALSE(none.merged(colour));
+}

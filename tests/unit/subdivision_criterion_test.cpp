@@ -64,3 +64,27 @@ TEST_CASE("MAX always stops, whatever the bound", "[criterion]") {
     CHECK(stopSubdividing(t, 4, 1e-9, 4));
     CHECK(stopSubdividing(SubdivisionTally{}, 0, 1.0 / 64, 4));
 }
+
+TEST_CASE("The least bound: what the bound is at least, whatever the central rays say", "[criterion]") {
+    // For every split of n pyrays into in + out, the bound is at least the
+    // least bound of the same pyrays, which one split reaches.
+    for (int n = 1; n <= 9; ++n)
+        for (const bool single : {false, true}) {
+            const double least = tally(0, n, single).leastChangeBoundForShare(1.0 / 16.0);
+            double smallest = 1e300;
+            for (int in = 0; in <= n; ++in) {
+                const SubdivisionTally t = tally(in, n - in, single);
+                CHECK(t.leastChangeBoundForShare(1.0 / 16.0) == least);
+                CHECK(t.changeBoundForShare(1.0 / 16.0) >= least);
+                smallest = std::min(smallest, t.changeBoundForShare(1.0 / 16.0));
+            }
+            CHECK(smallest == least);
+        }
+    // Several objects add up.
+    SubdivisionTally t;
+    t.add(7, true, false);
+    t.add(7, false, false);
+    t.add(7, false, false);  // object 7: at least 2 of 3
+    t.add(9, true, true);    // object 9: at least 1, halved
+    CHECK(t.leastChangeBoundForShare(0.25) == Approx((2.0 + 0.5) / 4.0));
+}

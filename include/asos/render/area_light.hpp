@@ -47,11 +47,40 @@ struct DiffuseSum {
     std::optional<LightSample> merged() const;
 };
 
+// The ASOS beams' running sum of their samples at a diffuse-only point.
+// Every sample of one light is the light's colour times a weight k along a
+// direction, so the sum keeps only sum k d, sum k distance and sum k, and
+// makes of them the sample mergeDiffuse would make of all the samples (the
+// same up to rounding): direction sum k d / |sum k d|, distance
+// sum k distance / sum k, colour x |sum k d|.
+struct WeightedDiffuseSum {
+    Vec3 sum{0.0};
+    double distance = 0.0, total = 0.0;
+    std::size_t count = 0;
+    Vec3 firstDirection{0.0};  // the one sample, while there is one
+    double firstDistance = 0.0, firstWeight = 0.0;
+
+    void clear() { *this = WeightedDiffuseSum{}; }
+    void add(const Vec3& direction, double dist, double k) {
+        sum += k * direction;
+        distance += k * dist;
+        total += k;
+        if (count++ == 0) {
+            firstDirection = direction;
+            firstDistance = dist;
+            firstWeight = k;
+        }
+    }
+    // The one sample that lights the point as all of them, for a light of
+    // `color`; none when they carry no light (as mergeDiffuse).
+    std::optional<LightSample> merged(const Vec3& color) const;
+};
+
 // A marginal sub-beam awaiting the stopping decision of its level.
 struct AreaBeamNode {
     LightPiece piece;
     std::uint32_t first, count;  // its occluders in AreaLightScratch::items[]
-    bool blocked;                // its central ray is blocked
+    bool blocked;                // its central ray is blocked (once traced)
 };
 
 // Per-thread buffers: once grown, a shaded point allocates nothing.
@@ -65,11 +94,18 @@ struct AreaLightScratch {
     std::vector<AreaBeamNode> nodes[2];
     std::vector<LightSample> samples;       // the answer
     LightSample merged;                     // the answer, summed (mergeDiffuse)
-    DiffuseSum diffuseSum;                  // ASOS beams: the answer, summed as it is made
+    WeightedDiffuseSum diffuseSum;          // ASOS beams: the answer, summed as it is made
     std::vector<LightSample> gridSamples;   // grid: per lattice point, its sample
     std::vector<double> gridWeights;        // grid: per lattice point, its weight
     std::vector<std::int8_t> gridState;     // grid: per lattice point, -1 unknown, 0 blocked, 1 lit
     SubdivisionTally tally;
+    // ASOS beams: a sub-beam's occluders for its point samples, each with
+    // the shaded point in its local frame.
+    struct SampleOccluder {
+        const Primitive* primitive;
+        Vec3 origin;
+    };
+    std::vector<SampleOccluder> sampleOccluders;
     std::vector<BeamCandidateCache> beamCandidates;  // per light: the objects near the last beams
 };
 

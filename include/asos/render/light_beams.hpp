@@ -13,6 +13,7 @@
 // rays lie within it and the cone is convex (half-angle below pi/2); for a
 // sphere piece, because the central ray lies within the piece's angular
 // range (docs/accel.md, "Sphere pieces").
+#include <array>
 #include <bit>
 #include <cmath>
 #include <cstdint>
@@ -151,20 +152,17 @@ public:
         const double scale = std::bit_cast<double>(std::uint64_t(1023 - depth) << 52);  // 2^-depth
         const double ds = (piece.a1 - piece.a0) * scale, dt = (piece.b1 - piece.b0) * scale;
         const int side = 1 << depth;
-        double sc[16], tc[16];
+        // rectPoint's sum, its first two terms per column and its last per
+        // row (the same operations in the same order).
+        Vec3 columns[16], rows[16];
         for (int k = 0; k < side; ++k) {
-            sc[k] = piece.a0 + (double(k) + 0.5) * ds;
-            tc[k] = piece.b0 + (double(k) + 0.5) * dt;
+            columns[k] = corner_ + (piece.a0 + (double(k) + 0.5) * ds) * edgeA_;
+            rows[k] = (piece.b0 + (double(k) + 0.5) * dt) * edgeB_;
         }
-        // The even and odd bits of a Morton index (at most 8 bits here).
-        const auto compact = [](std::uint32_t x) {
-            x &= 0x55u;
-            x = (x | (x >> 1)) & 0x33u;
-            return (x | (x >> 2)) & 0x0fu;
-        };
         const std::uint32_t count = 1u << (2 * depth);
         for (std::uint32_t m = 0; m < count; ++m) {
-            const BeamRay ray = toward(rectPoint(sc[compact(m)], tc[compact(m >> 1)]));
+            const std::uint8_t ij = kMorton[m];
+            const BeamRay ray = toward(columns[ij & 15u] + rows[ij >> 4]);
             f(ray);
         }
     }
@@ -206,6 +204,19 @@ public:
     bool singleEdgeHalving() const { return shape_ != LightShape::Sphere; }
 
 private:
+    // The even bits of a Morton index (at most 8 bits) in the low four bits,
+    // its odd bits in the high four: the column and the row.
+    static constexpr std::array<std::uint8_t, 256> kMorton = [] {
+        std::array<std::uint8_t, 256> table{};
+        const auto compact = [](std::uint32_t x) {
+            x &= 0x55u;
+            x = (x | (x >> 1)) & 0x33u;
+            return (x | (x >> 2)) & 0x0fu;
+        };
+        for (std::uint32_t m = 0; m < 256; ++m) table[m] = std::uint8_t(compact(m) | compact(m >> 1) << 4);
+        return table;
+    }();
+
     // forEachDescendant's: the midpoints of dyadic ranges are exact, and the
     // central rays are made by the same expressions as split()'s.
     template <class F>

@@ -24,6 +24,7 @@ struct RenderCounters {
 
     void countPyray(int level) { ++pyraysByLevel[slot(level)]; }
     void countShadowPyray(int level) { ++shadowPyraysByLevel[slot(level)]; }
+    void countShadowPyrays(int level, std::uint64_t n) { shadowPyraysByLevel[slot(level)] += n; }
     std::uint64_t rays() const { return eyeRays + reflectedRays; }
     std::uint64_t allRays() const { return eyeRays + reflectedRays + shadowRays; }
 

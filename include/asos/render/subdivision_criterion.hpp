@@ -33,6 +33,11 @@ public:
     // The same for pieces that are each `pieceShare` of the whole (a beam
     // split in two at each level, as a linear light's: 2^-K).
     double changeBoundForShare(double pieceShare) const;
+    // The least value changeBoundForShare can take with the same pyrays,
+    // whatever their central rays say: for each object max(in, out) >=
+    // ceil((in + out) / 2). When it exceeds EPS the rule cannot stop, and
+    // the central rays need not be traced to know it.
+    double leastChangeBoundForShare(double pieceShare) const;
 
     bool empty() const { return entries_.empty(); }
     void clear() { entries_.clear(); }

@@ -30,6 +30,9 @@ public:
 
     // The nearest hit of the surface (side, and caps unless open) in [tMin, tMax].
     std::optional<LocalHit> intersect(const Ray& ray, double tMin, double tMax) const;
+    // Whether intersect would find a hit, without making its record (shadow
+    // rays).
+    bool intersectAny(const Ray& ray, double tMin, double tMax) const;
     // Outside a capped solid: Full iff the cone avoids the silhouette (the two
     // contour generators and the rim arcs between a face turned to the apex and
     // one turned away) and its axis hits; an open surface counts both rims

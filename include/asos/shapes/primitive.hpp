@@ -52,6 +52,16 @@ public:
     std::optional<LocalHit> intersectLocal(const Ray& worldRay, double tMin, double tMax) const;
     SurfaceHit surfaceHit(const Ray& worldRay, const LocalHit& hit) const;
     bool intersectAny(const Ray& worldRay, double tMin, double tMax) const;
+    // The same for many rays from one origin (an area light's point samples):
+    // the origin is carried into the local frame once, by originToLocal, and
+    // intersectAnyFrom(originToLocal(o), d, lo, hi) == intersectAny({o, d}, lo, hi).
+    Vec3 originToLocal(const Vec3& worldOrigin) const { return frame_.pointToLocal(worldOrigin); }
+    bool intersectAnyFrom(const Vec3& localOrigin, const Vec3& worldDir, double tMin, double tMax) const;
+    // The same as a loop's body: calls f(test) once, where
+    // test(localOrigin, worldDir, tMin, tMax) is intersectAnyFrom with the
+    // shape's kind resolved (no dispatch per ray).
+    template <class F>
+    decltype(auto) withAnyTest(F&& f) const;
     ConeClass classify(const Cone& worldCone) const;
     // The same, for a cone whose trigonometry is done once for many objects.
     ConeClass classify(const PreparedCone& worldCone) const;
@@ -100,6 +110,18 @@ decltype(auto) dispatch(const Variant& v, F& f) {
 template <class F>
 decltype(auto) Primitive::visit(F&& f) const {
     return primitive_detail::dispatch(shape_, f);
+}
+
+template <class F>
+decltype(auto) Primitive::withAnyTest(F&& f) const {
+    return visit([&](const auto& shape) {
+        const LocalFrame& frame = frame_;
+        return f([&shape, &frame](const Vec3& localOrigin, const Vec3& worldDir, double tMin, double tMax) {
+            const Ray ray{localOrigin,
+                          frame.kind == LocalFrame::Kind::Translate ? worldDir : frame.localFromWorld * worldDir};
+            return shape.intersectAny(ray, tMin, tMax);
+        });
+    });
 }
 
 // Inline: it is the inner loop of every nearest-hit search.

@@ -29,7 +29,7 @@ public:
         return frustum_.intersect(ray, tMin, tMax);
     }
     bool intersectAny(const Ray& ray, double tMin, double tMax) const {
-        return frustum_.intersect(ray, tMin, tMax).has_value();
+        return frustum_.intersectAny(ray, tMin, tMax);
     }
     ConeClass classify(const LocalCone& cone) const { return frustum_.classify(cone); }
 
