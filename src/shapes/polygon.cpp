@@ -113,19 +113,22 @@ ConeClass Polygon::classify(const LocalCone& cone) const {
         // its root).
         if (nearCount > 0) {
             const FootprintQuadric footprint(cone, f.depth, f.an, f.k);
+            // Counted, not branched on: whether a near edge meets the
+            // footprint is as good as random.
             int meeting = 0;
-            const Edge* met = nullptr;
+            std::uint32_t met = 0;
             for (int n = 0; n < nearCount; ++n) {
-                const Edge& edge = edges_[nearEdge[n]];
-                if (footprint.segmentMeets(edge.v0, edge.v0 + edge.e)) {
-                    ++meeting;
-                    met = &edge;
-                }
+                const std::uint32_t i = nearEdge[n];
+                const Edge& edge = edges_[i];
+                const bool meets = footprint.segmentMeets(edge.v0, edge.v0 + edge.e);
+                meeting += int(meets);
+                met = meets ? i : met;
             }
             if (meeting > 0) {
+                const Edge& edge = edges_[met];
                 const bool single = meeting == 1 && cone.surelyWithin(tNear, tFar) &&
-                                    !footprint.containsStrictly(met->v0) &&
-                                    !footprint.containsStrictly(met->v0 + met->e);
+                                    !footprint.containsStrictly(edge.v0) &&
+                                    !footprint.containsStrictly(edge.v0 + edge.e);
                 return marginalClass(cone, tNear, tFar, single);
             }
         }
