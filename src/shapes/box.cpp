@@ -252,15 +252,48 @@ ConeClass Box::classifyOutside(const LocalCone& cone) const {
     // out of it, which is cheaper to see than the exact test.
     const Vec3& a = cone.axis;
     const double reach = dFar * cone.sinHalf * (1.0 + 1e-12) + 2.0 * cone.absTol + 1e-12 * dFar;
-    const double reach2 = cone.cosHalf > 0.0 ? reach * reach : kInfinity;
+    // The edges are along the box's axes, so their squared distance to the
+    // axis line is a quadratic in the place along the edge, with
+    // coefficients from per-axis sums: each corner's depth along the axis
+    // (sigma) and squared distance from the apex are sums of one term per
+    // axis, and an edge along axis k has |e|^2 (1 - a_k^2) for its leading
+    // coefficient. The minimum is compared multiplied through (no
+    // division). Plain arrays: the corner and the edge's axis are indices
+    // as good as random. The quadratic's rounding (a few ulps of
+    // dFar^2, from |w|^2 - sigma^2) is covered by `slack`.
+    const double pa[3] = {p.x, p.y, p.z}, aa[3] = {a.x, a.y, a.z};
+    const double loa[3] = {lo_.x, lo_.y, lo_.z}, hia[3] = {hi_.x, hi_.y, hi_.z};
+    double rel[3][2], relSq[3][2], relA[3][2], len[3], lead[3];
+    double len2Sum = 0.0;
+    for (int i = 0; i < 3; ++i) {
+        rel[i][0] = loa[i] - pa[i];
+        rel[i][1] = hia[i] - pa[i];
+        relSq[i][0] = rel[i][0] * rel[i][0];
+        relSq[i][1] = rel[i][1] * rel[i][1];
+        relA[i][0] = rel[i][0] * aa[i];
+        relA[i][1] = rel[i][1] * aa[i];
+        len[i] = hia[i] - loa[i];
+        lead[i] = len[i] * len[i] * std::max(0.0, 1.0 - aa[i] * aa[i]);
+        len2Sum += len[i] * len[i];
+    }
+    const double slack = 1e-13 * (dFar * dFar + len2Sum);
+    const double reach2 = cone.cosHalf > 0.0 ? reach * reach + slack : kInfinity;
     auto farFromAxis = [&](int c0, int c1) {
-        const Vec3 w0 = cornerPoint(c0) - p, e = cornerPoint(c1) - cornerPoint(c0);
-        const Vec3 w0p = w0 - glm::dot(w0, a) * a, ep = e - glm::dot(e, a) * a;
-        // No branch: the nearest point's place is as good as random (an edge
-        // along the axis gives NaN or an infinity, which ends at 0 or 1).
-        const double u = std::min(std::max(0.0, -glm::dot(w0p, ep) / glm::dot(ep, ep)), 1.0);
-        const Vec3 d = w0p + u * ep;
-        return glm::dot(d, d) > reach2;
+        // c1 is c0 with bit k set: the edge runs from c0 along +k.
+        const int bits = c0 ^ c1, k = ((bits >> 1) & 1) + 2 * ((bits >> 2) & 1);
+        const int x = c0 & 1, y = (c0 >> 1) & 1, z = (c0 >> 2) & 1;
+        const double sigma = relA[0][x] + relA[1][y] + relA[2][z];
+        const double w2 = relSq[0][x] + relSq[1][y] + relSq[2][z];
+        // f(u) = A + 2 B u + C u^2, u in [0, 1] along the edge.
+        const double qa = w2 - sigma * sigma;
+        const double qb = len[k] * (rel[k][0] - sigma * aa[k]);
+        const double qc = lead[k];
+        // No branch: the nearest point's place is as good as random. The
+        // minimum over [0, 1] exceeds reach2 when both ends do and the
+        // vertex -B/C is outside (0, 1) or its value A - B^2/C does.
+        const bool ends = (qa > reach2) & (qa + 2.0 * qb + qc > reach2);
+        const bool vertex = (qb >= 0.0) | (-qb >= qc) | ((qa - reach2) * qc > qb * qb);
+        return ends & vertex;
     };
     const int place = (front[0] + 1) + 3 * (front[1] + 1) + 9 * (front[2] + 1);
     int meeting = 0;

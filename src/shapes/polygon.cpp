@@ -108,22 +108,29 @@ ConeClass Polygon::classify(const LocalCone& cone) const {
             ballOutsideRange(cone, Vec3(center_, 0.0), radius_))
             return missClass();
         // The near edges against the cone itself: in the plane, against
-        // its elliptic footprint.
-        const FootprintQuadric footprint(cone, f.depth, f.an, f.k);
-        int meeting = 0;
-        const Edge* met = nullptr;
-        for (int n = 0; n < nearCount; ++n) {
-            const Edge& edge = edges_[nearEdge[n]];
-            if (footprint.segmentMeets(edge.v0, edge.v0 + edge.e)) {
-                ++meeting;
-                met = &edge;
+        // its elliptic footprint (built only when an edge is near: a
+        // footprint far from every edge needs neither its divisions nor
+        // its root).
+        if (nearCount > 0) {
+            const FootprintQuadric footprint(cone, f.depth, f.an, f.k);
+            // Counted, not branched on: whether a near edge meets the
+            // footprint is as good as random.
+            int meeting = 0;
+            std::uint32_t met = 0;
+            for (int n = 0; n < nearCount; ++n) {
+                const std::uint32_t i = nearEdge[n];
+                const Edge& edge = edges_[i];
+                const bool meets = footprint.segmentMeets(edge.v0, edge.v0 + edge.e);
+                meeting += int(meets);
+                met = meets ? i : met;
             }
-        }
-        if (meeting > 0) {
-            const bool single = meeting == 1 && cone.surelyWithin(tNear, tFar) &&
-                                !footprint.containsStrictly(met->v0) &&
-                                !footprint.containsStrictly(met->v0 + met->e);
-            return marginalClass(cone, tNear, tFar, single);
+            if (meeting > 0) {
+                const Edge& edge = edges_[met];
+                const bool single = meeting == 1 && cone.surelyWithin(tNear, tFar) &&
+                                    !footprint.containsStrictly(edge.v0) &&
+                                    !footprint.containsStrictly(edge.v0 + edge.e);
+                return marginalClass(cone, tNear, tFar, single);
+            }
         }
         // No edge in the cone: the footprint is wholly in or out, as q.
         if (!inside) return missClass();

@@ -2,6 +2,7 @@
 
 #include <cmath>
 
+#include "asos/shapes/cone_probe.hpp"
 #include "asos/shapes/primitive.hpp"
 #include "shape_property.hpp"
 
@@ -103,6 +104,52 @@ TEST_CASE("Box degenerate input", "[shapes][box]") {
     CHECK(flat.classify(c).coverage == Coverage::Full);
     c.halfAngle = 0.5;
     CHECK(flat.classify(c).coverage == Coverage::Marginal);
+}
+
+TEST_CASE("Box silhouette edges near the cone's axis line", "[shapes][box]") {
+    // The silhouette pass skips edges farther from the axis line than the
+    // cone reaches (a quadratic along the edge, compared without division).
+    // Edges parallel to the axis (no quadratic term), edges whose nearest
+    // point is an end or lies between, and cones swept across the distance
+    // at which they start to reach an edge: every answer agrees with rays.
+    const Primitive b = box({-1, -1, -1}, {1, 1, 1});
+    int marginal = 0, miss = 0;
+    auto check = [&](const Cone& c) {
+        const ConeClass k = b.classify(c);
+        const ProbeResult p = probeCone(b, c, k, ProbeDensity{12, 8, 192});
+        INFO("apex " << c.apex.x << " " << c.apex.y << " " << c.apex.z << " axis " << c.axis.x
+                     << " " << c.axis.y << " " << c.axis.z << " half-angle " << c.halfAngle);
+        CHECK(p.violations == 0);
+        marginal += k.coverage == Coverage::Marginal;
+        miss += k.coverage == Coverage::Miss;
+    };
+    for (int i = 0; i <= 40; ++i) {
+        const double off = 0.02 + 0.1 * i / 40.0;  // the axis line from the edge x = y = 1
+        Cone c;
+        // Axis parallel to the z edges: the apex beside the box, past a corner.
+        c.apex = {1.0 + off, 1.0 + off, -10.0};
+        c.axis = {0, 0, 1};
+        c.halfAngle = 0.005;
+        check(c);
+        // The same, axis tilted slightly, and wide enough for the far end.
+        c.axis = glm::normalize(Vec3(-0.001, -0.001, 1.0));
+        c.halfAngle = 0.008;
+        check(c);
+        // Looking at the near face's edge x = 1 from in front: the nearest
+        // point of the x edges lies between their ends.
+        c.apex = {1.0 + off, 0.3, -10.0};
+        c.axis = {0, 0, 1};
+        c.halfAngle = 0.004;
+        check(c);
+        // From the side, the axis across an edge's end (the nearest point an end).
+        c.apex = {1.0 + off, 1.5, 0.2};
+        c.axis = glm::normalize(Vec3(0.0, -1.0, 0.0));
+        c.halfAngle = 0.02;
+        check(c);
+    }
+    // The sweeps cross from Marginal to Miss.
+    CHECK(marginal > 0);
+    CHECK(miss > 0);
 }
 
 TEST_CASE("Box cone classification is conservative (property)", "[shapes][box][property]") {

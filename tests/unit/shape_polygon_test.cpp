@@ -2,6 +2,7 @@
 
 #include <cmath>
 
+#include "asos/shapes/cone_probe.hpp"
 #include "asos/shapes/primitive.hpp"
 #include "shape_property.hpp"
 
@@ -112,6 +113,34 @@ TEST_CASE("Polygon degenerate input", "[shapes][polygon]") {
     c.apex = {0.5, 0.5, -3};
     c.halfAngle = 0.01;
     CHECK(rep.classify(c).coverage == Coverage::Full);
+}
+
+TEST_CASE("Polygon near edges: zero-length edges and clamped nearest points",
+          "[shapes][polygon]") {
+    // The near edges' test clamps the nearest point of each segment to its
+    // ends by masks: a zero-length edge (a repeated vertex: the clamp sees
+    // 0/0 or an infinity) and nearest points before, between and past the
+    // ends, with cones swept across the corner at the repeated vertex.
+    const Primitive rep = polygon({{0, 0, 0}, {1, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}});
+    int counts[3] = {0, 0, 0};
+    for (int i = 0; i <= 30; ++i) {
+        for (int j = 0; j <= 4; ++j) {
+            Cone c;
+            const double x = 0.96 + 0.08 * i / 30.0, y = -0.04 + 0.08 * j / 4.0;
+            c.apex = {x, y, -10.0};
+            c.axis = {0, 0, 1};
+            c.halfAngle = 0.002;
+            if (j % 2) c.axis = glm::normalize(Vec3(0.0005, -0.0005, 1.0));
+            const ConeClass k = rep.classify(c);
+            const ProbeResult p = probeCone(rep, c, k, ProbeDensity{12, 8, 192});
+            INFO("apex " << x << " " << y << " coverage " << int(k.coverage));
+            CHECK(p.violations == 0);
+            ++counts[static_cast<int>(k.coverage)];
+        }
+    }
+    CHECK(counts[static_cast<int>(Coverage::Miss)] > 0);
+    CHECK(counts[static_cast<int>(Coverage::Full)] > 0);
+    CHECK(counts[static_cast<int>(Coverage::Marginal)] > 0);
 }
 
 TEST_CASE("Polygon cone classification is conservative (property)", "[shapes][polygon][property]") {

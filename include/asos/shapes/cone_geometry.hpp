@@ -294,8 +294,12 @@ public:
         const double qb = glm::dot(y0, e) - glm::dot(a_, y0) * ae * invC2_;
         // The form is positive definite: qa > 0 unless the edge is a point
         // (then t is NaN or infinite and ends at 0 or 1). No branch: where
-        // the nearest point falls is as good as random.
-        const double t = std::min(std::max(0.0, -qb / qa), 1.0);
+        // the nearest point falls is as good as random (selected by masks:
+        // written with std::min and std::max, the clamp compiles to
+        // branches on where t falls).
+        const double r = -qb / qa;
+        const double t0 = selectDouble(r > 0.0, r, 0.0);
+        const double t = selectDouble(t0 < 1.0, t0, 1.0);
         return form(y0 + t * e) <= limit_;
     }
 
