@@ -76,9 +76,8 @@ ConeClass Polygon::classify(const LocalCone& cone) const {
         const double radius = f.radius;
         const double radius2 = radius * radius;
         // The footprint wholly off the polygon's bounding box: a miss.
-        if ((q.x + radius < lo_.x) | (q.x - radius > hi_.x) | (q.y + radius < lo_.y) |
-            (q.y - radius > hi_.y))
-            return missClass();
+        const bool offBox = (q.x + radius < lo_.x) | (q.x - radius > hi_.x) |
+                            (q.y + radius < lo_.y) | (q.y - radius > hi_.y);
         // The edges near q (a few at most, or the exact path runs): those
         // whose line passes within `radius` of q, a superset of those within
         // `radius` (rarely larger: only an edge whose line runs by q but
@@ -101,8 +100,8 @@ ConeClass Polygon::classify(const LocalCone& cone) const {
             nearEdge[nearCount] = i;
             nearCount = std::min(nearCount + int(near), kMaxNear);
         }
+        if (offBox | ((nearCount == 0) & !inside)) return missClass();
         if (nearCount == kMaxNear) return classifyExactly(cone);
-        if (nearCount == 0 && !inside) return missClass();
         const auto [tNear, tFar] = crossingDepths(cone, f);
         if (cone.surelyAfter(tNear) || cone.surelyBefore(tFar) ||
             ballOutsideRange(cone, Vec3(center_, 0.0), radius_))
