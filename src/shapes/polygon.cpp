@@ -84,24 +84,28 @@ ConeClass Polygon::classify(const LocalCone& cone) const {
         // which ends short of it is too many, and costs one exact test). The loop has no data-dependent
         // branch: whether an edge crosses q's line or lies near q is as good
         // as random from one cone to the next, and a mispredicted branch per
-        // edge would cost more than the arithmetic (the slot past kMaxNear
-        // absorbs the overflow).
-        constexpr int kMaxNear = 16;
-        std::uint32_t nearEdge[kMaxNear + 1];
-        int nearCount = 0;
+        // edge would cost more than the arithmetic. The count is not
+        // clamped: the slots wrap, and past kMaxNear the list is not used.
+        constexpr std::uint32_t kMaxNear = 16;  // a power of 2, for the wrap
+        std::uint32_t nearEdge[kMaxNear];
+        std::uint32_t nearCount = 0;
         bool inside = false;
         const std::uint32_t edgeCount = static_cast<std::uint32_t>(edges_.size());
         for (std::uint32_t i = 0; i < edgeCount; ++i) {
             const Edge& edge = edges_[i];
             const Vec2 w = q - edge.v0;
             const double side = edge.e.x * w.y - w.x * edge.e.y;
-            inside ^= ((edge.v0.y > q.y) != (edge.v1y > q.y)) & ((side > 0.0) == (edge.e.y > 0.0));
+            // The edge crosses q's line with v0 below it exactly when e
+            // points up (e.y = v1.y - v0.y rounds to the sign of the
+            // difference), so the side is tested against where v1 lies.
+            const bool above1 = edge.v1y > q.y;
+            inside ^= ((edge.v0.y > q.y) != above1) & ((side > 0.0) == above1);
             const bool near = side * side <= radius2 * edge.ee;
-            nearEdge[nearCount] = i;
-            nearCount = std::min(nearCount + int(near), kMaxNear);
+            nearEdge[nearCount % kMaxNear] = i;
+            nearCount += std::uint32_t(near);
         }
         if (offBox | ((nearCount == 0) & !inside)) return missClass();
-        if (nearCount == kMaxNear) return classifyExactly(cone);
+        if (nearCount >= kMaxNear) return classifyExactly(cone);
         const auto [tNear, tFar] = crossingDepths(cone, f);
         if (cone.surelyAfter(tNear) || cone.surelyBefore(tFar) ||
             ballOutsideRange(cone, Vec3(center_, 0.0), radius_))
@@ -116,7 +120,7 @@ ConeClass Polygon::classify(const LocalCone& cone) const {
             // footprint is as good as random.
             int meeting = 0;
             std::uint32_t met = 0;
-            for (int n = 0; n < nearCount; ++n) {
+            for (std::uint32_t n = 0; n < nearCount; ++n) {
                 const std::uint32_t i = nearEdge[n];
                 const Edge& edge = edges_[i];
                 const bool meets = footprint.segmentMeets(edge.v0, edge.v0 + edge.e);
