@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include "asos/shapes/cone_geometry.hpp"
 
@@ -27,6 +28,19 @@ Polygon::Polygon(std::vector<Vec2> vertices, std::vector<std::uint32_t> loopEnds
             edges_.push_back({v0, e, v1.y, glm::dot(e, e)});
         }
         begin = end;
+    }
+    const double inf = std::numeric_limits<double>::infinity();
+    for (std::size_t i = 0; i < edges_.size(); i += 2) {
+        const Edge& a = edges_[i];
+        const Edge b = i + 1 < edges_.size() ? edges_[i + 1] : Edge{Vec2(0.0), Vec2(0.0), 0.0, -inf};
+        EdgePair pair;
+        pair.v0x = Double2{a.v0.x, b.v0.x};
+        pair.v0y = Double2{a.v0.y, b.v0.y};
+        pair.ex = Double2{a.e.x, b.e.x};
+        pair.ey = Double2{a.e.y, b.e.y};
+        pair.v1y = Double2{a.v1y, b.v1y};
+        pair.ee = Double2{a.ee, b.ee};
+        edgePairs_.push_back(pair);
     }
 }
 
@@ -89,21 +103,26 @@ ConeClass Polygon::classify(const LocalCone& cone) const {
         constexpr std::uint32_t kMaxNear = 16;  // a power of 2, for the wrap
         std::uint32_t nearEdge[kMaxNear];
         std::uint32_t nearCount = 0;
-        bool inside = false;
-        const std::uint32_t edgeCount = static_cast<std::uint32_t>(edges_.size());
-        for (std::uint32_t i = 0; i < edgeCount; ++i) {
-            const Edge& edge = edges_[i];
-            const Vec2 w = q - edge.v0;
-            const double side = edge.e.x * w.y - w.x * edge.e.y;
+        using Mask2 = std::int64_t __attribute__((vector_size(16)));
+        const Double2 qx = {q.x, q.x}, qy = {q.y, q.y}, r2 = {radius2, radius2};
+        Mask2 insideLanes = {0, 0};
+        const std::uint32_t pairCount = static_cast<std::uint32_t>(edgePairs_.size());
+        for (std::uint32_t pair = 0; pair < pairCount; ++pair) {
+            const EdgePair& e = edgePairs_[pair];
+            const Double2 wx = qx - e.v0x, wy = qy - e.v0y;
+            const Double2 side = e.ex * wy - wx * e.ey;
             // The edge crosses q's line with v0 below it exactly when e
             // points up (e.y = v1.y - v0.y rounds to the sign of the
             // difference), so the side is tested against where v1 lies.
-            const bool above1 = edge.v1y > q.y;
-            inside ^= ((edge.v0.y > q.y) != above1) & ((side > 0.0) == above1);
-            const bool near = side * side <= radius2 * edge.ee;
-            nearEdge[nearCount % kMaxNear] = i;
-            nearCount += std::uint32_t(near);
+            const Mask2 above1 = e.v1y > qy;
+            insideLanes ^= ((e.v0y > qy) ^ above1) & ~((side > 0.0) ^ above1);
+            const Mask2 near = side * side <= r2 * e.ee;
+            nearEdge[nearCount % kMaxNear] = 2 * pair;
+            nearCount += static_cast<std::uint32_t>(near[0] & 1);
+            nearEdge[nearCount % kMaxNear] = 2 * pair + 1;
+            nearCount += static_cast<std::uint32_t>(near[1] & 1);
         }
+        const bool inside = ((insideLanes[0] ^ insideLanes[1]) & 1) != 0;
         if (offBox | ((nearCount == 0) & !inside)) return missClass();
         if (nearCount >= kMaxNear) return classifyExactly(cone);
         const auto [tNear, tFar] = crossingDepths(cone, f);
