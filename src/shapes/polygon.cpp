@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include "asos/shapes/cone_geometry.hpp"
 
@@ -27,6 +28,19 @@ Polygon::Polygon(std::vector<Vec2> vertices, std::vector<std::uint32_t> loopEnds
             edges_.push_back({v0, e, v1.y, glm::dot(e, e)});
         }
         begin = end;
+    }
+    const double inf = std::numeric_limits<double>::infinity();
+    for (std::size_t i = 0; i < edges_.size(); i += 2) {
+        const Edge& a = edges_[i];
+        const Edge b = i + 1 < edges_.size() ? edges_[i + 1] : Edge{Vec2(0.0), Vec2(0.0), 0.0, -inf};
+        EdgePair pair;
+        pair.v0x = Double2{a.v0.x, b.v0.x};
+        pair.v0y = Double2{a.v0.y, b.v0.y};
+        pair.ex = Double2{a.e.x, b.e.x};
+        pair.ey = Double2{a.e.y, b.e.y};
+        pair.v1y = Double2{a.v1y, b.v1y};
+        pair.ee = Double2{a.ee, b.ee};
+        edgePairs_.push_back(pair);
     }
 }
 
@@ -76,33 +90,41 @@ ConeClass Polygon::classify(const LocalCone& cone) const {
         const double radius = f.radius;
         const double radius2 = radius * radius;
         // The footprint wholly off the polygon's bounding box: a miss.
-        if ((q.x + radius < lo_.x) | (q.x - radius > hi_.x) | (q.y + radius < lo_.y) |
-            (q.y - radius > hi_.y))
-            return missClass();
+        const bool offBox = (q.x + radius < lo_.x) | (q.x - radius > hi_.x) |
+                            (q.y + radius < lo_.y) | (q.y - radius > hi_.y);
         // The edges near q (a few at most, or the exact path runs): those
         // whose line passes within `radius` of q, a superset of those within
         // `radius` (rarely larger: only an edge whose line runs by q but
         // which ends short of it is too many, and costs one exact test). The loop has no data-dependent
         // branch: whether an edge crosses q's line or lies near q is as good
         // as random from one cone to the next, and a mispredicted branch per
-        // edge would cost more than the arithmetic (the slot past kMaxNear
-        // absorbs the overflow).
-        constexpr int kMaxNear = 16;
-        std::uint32_t nearEdge[kMaxNear + 1];
-        int nearCount = 0;
-        bool inside = false;
-        const std::uint32_t edgeCount = static_cast<std::uint32_t>(edges_.size());
-        for (std::uint32_t i = 0; i < edgeCount; ++i) {
-            const Edge& edge = edges_[i];
-            const Vec2 w = q - edge.v0;
-            const double side = edge.e.x * w.y - w.x * edge.e.y;
-            inside ^= ((edge.v0.y > q.y) != (edge.v1y > q.y)) & ((side > 0.0) == (edge.e.y > 0.0));
-            const bool near = side * side <= radius2 * edge.ee;
-            nearEdge[nearCount] = i;
-            nearCount = std::min(nearCount + int(near), kMaxNear);
+        // edge would cost more than the arithmetic. The count is not
+        // clamped: the slots wrap, and past kMaxNear the list is not used.
+        constexpr std::uint32_t kMaxNear = 16;  // a power of 2, for the wrap
+        std::uint32_t nearEdge[kMaxNear];
+        std::uint32_t nearCount = 0;
+        using Mask2 = std::int64_t __attribute__((vector_size(16)));
+        const Double2 qx = {q.x, q.x}, qy = {q.y, q.y}, r2 = {radius2, radius2};
+        Mask2 insideLanes = {0, 0};
+        const std::uint32_t pairCount = static_cast<std::uint32_t>(edgePairs_.size());
+        for (std::uint32_t pair = 0; pair < pairCount; ++pair) {
+            const EdgePair& e = edgePairs_[pair];
+            const Double2 wx = qx - e.v0x, wy = qy - e.v0y;
+            const Double2 side = e.ex * wy - wx * e.ey;
+            // The edge crosses q's line with v0 below it exactly when e
+            // points up (e.y = v1.y - v0.y rounds to the sign of the
+            // difference), so the side is tested against where v1 lies.
+            const Mask2 above1 = e.v1y > qy;
+            insideLanes ^= ((e.v0y > qy) ^ above1) & ~((side > 0.0) ^ above1);
+            const Mask2 near = side * side <= r2 * e.ee;
+            nearEdge[nearCount % kMaxNear] = 2 * pair;
+            nearCount += static_cast<std::uint32_t>(near[0] & 1);
+            nearEdge[nearCount % kMaxNear] = 2 * pair + 1;
+            nearCount += static_cast<std::uint32_t>(near[1] & 1);
         }
-        if (nearCount == kMaxNear) return classifyExactly(cone);
-        if (nearCount == 0 && !inside) return missClass();
+        const bool inside = ((insideLanes[0] ^ insideLanes[1]) & 1) != 0;
+        if (offBox | ((nearCount == 0) & !inside)) return missClass();
+        if (nearCount >= kMaxNear) return classifyExactly(cone);
         const auto [tNear, tFar] = crossingDepths(cone, f);
         if (cone.surelyAfter(tNear) || cone.surelyBefore(tFar) ||
             ballOutsideRange(cone, Vec3(center_, 0.0), radius_))
@@ -117,7 +139,7 @@ ConeClass Polygon::classify(const LocalCone& cone) const {
             // footprint is as good as random.
             int meeting = 0;
             std::uint32_t met = 0;
-            for (int n = 0; n < nearCount; ++n) {
+            for (std::uint32_t n = 0; n < nearCount; ++n) {
                 const std::uint32_t i = nearEdge[n];
                 const Edge& edge = edges_[i];
                 const bool meets = footprint.segmentMeets(edge.v0, edge.v0 + edge.e);

@@ -143,6 +143,50 @@ TEST_CASE("Polygon near edges: zero-length edges and clamped nearest points",
     CHECK(counts[static_cast<int>(Coverage::Marginal)] > 0);
 }
 
+TEST_CASE("Polygon near edges: more than the near list holds", "[shapes][polygon]") {
+    // The edge pass counts near edges without a clamp, its 16 slots
+    // wrapping: 16 or more take the exact path, fewer keep their indices
+    // (here up to 39). A 40-gon, with cones from its centre (every edge's
+    // line near q) out past its rim, narrow and wide.
+    std::vector<Vec3> points;
+    for (int i = 0; i < 40; ++i) {
+        const double a = 2.0 * kPi * i / 40.0;
+        points.emplace_back(std::cos(a), std::sin(a), 0.0);
+    }
+    const Primitive gon = polygon(points);
+    int counts[3] = {0, 0, 0};
+    for (int i = 0; i <= 24; ++i) {
+        for (const double halfAngle : {0.002, 0.02, 0.2}) {
+            Cone c;
+            const double a = 0.3 * i;
+            const double r = 1.2 * i / 24.0;
+            c.apex = {r * std::cos(a), r * std::sin(a), -5.0};
+            c.axis = glm::normalize(Vec3(0.01 * i, -0.005 * i, 1.0));
+            c.halfAngle = halfAngle;
+            const ConeClass k = gon.classify(c);
+            const ProbeResult p = probeCone(gon, c, k, ProbeDensity{12, 8, 192});
+            INFO("i " << i << " half-angle " << halfAngle << " coverage " << int(k.coverage));
+            CHECK(p.violations == 0);
+            ++counts[static_cast<int>(k.coverage)];
+        }
+    }
+    CHECK(counts[static_cast<int>(Coverage::Miss)] > 0);
+    CHECK(counts[static_cast<int>(Coverage::Full)] > 0);
+    CHECK(counts[static_cast<int>(Coverage::Marginal)] > 0);
+    // Footprint over the whole 40-gon (all 40 edges near): Marginal.
+    Cone c;
+    c.apex = {0.0, 0.0, -5.0};
+    c.axis = {0.0, 0.0, 1.0};
+    c.halfAngle = 0.3;
+    CHECK(gon.classify(c).coverage == Coverage::Marginal);
+    // Near edge 39 alone (the last slot index, past the 16 slots).
+    c.apex = {std::cos(2.0 * kPi * 39.5 / 40.0) * 0.999, std::sin(2.0 * kPi * 39.5 / 40.0) * 0.999, -5.0};
+    c.halfAngle = 0.001;
+    const ConeClass k = gon.classify(c);
+    CHECK(k.coverage == Coverage::Marginal);
+    CHECK(k.singleEdge);
+}
+
 TEST_CASE("Polygon cone classification is conservative (property)", "[shapes][polygon][property]") {
     using namespace shapetest;
     const PropertyStats stats = runConeProperty("polygon", 0x9017ull, 100000, [](Rng& rng) {

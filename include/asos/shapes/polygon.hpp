@@ -52,9 +52,19 @@ private:
         double ee;   // |e|^2
     };
 
+    // The same edges two at a time, lane by lane (GCC/Clang vector
+    // extensions: each lane's arithmetic is the scalar one), padded to a
+    // whole pair with an edge that neither crosses q's line (both ends at
+    // y = 0) nor is near (|e|^2 = -inf), for the cone's edge pass.
+    using Double2 = double __attribute__((vector_size(16)));
+    struct EdgePair {
+        Double2 v0x, v0y, ex, ey, v1y, ee;
+    };
+
     std::vector<Vec2> vertices_;
     std::vector<std::uint32_t> loopEnds_;  // exclusive end of each loop in vertices_
     std::vector<Edge> edges_;
+    std::vector<EdgePair> edgePairs_;
     Vec2 lo_{0.0}, hi_{0.0};               // 2D bounding box
     Vec2 center_{0.0};
     double radius_ = 0.0;
