@@ -282,12 +282,12 @@ private:
         };
         if (count == 1) {
             // One occluder (the common case): its shape's test is resolved
-            // once for the whole lattice.
-            const Vec3 origin = first[0].origin;
-            first[0].primitive->withAnyTest([&](const auto& test) {
+            // once for the whole lattice, with what does not depend on the
+            // direction computed once (Primitive::withAnyTestFrom).
+            first[0].primitive->withAnyTestFrom(origin_.apex, [&](const auto& test) {
                 sample([&](const Vec3& dir, double t0, double t1) __attribute__((always_inline)) {
                     ++tests;
-                    return test(origin, dir, t0, t1);
+                    return test(dir, t0, t1);
                 });
             });
         } else {
