@@ -359,12 +359,13 @@ private:
     }
 
     // How many levels above MAX a marginal beam's descendants may be left
-    // undetected: two for quarters and four for halves (16 MAX-beams), whose
-    // point samples cost about as much as the detection of the levels between
-    // costs in cone classifications and the samples of the marginal pieces it
-    // leaves (docs/lights.md, "Detection where it pays": three for quarters
-    // takes fewer instructions but more time).
-    int undetectedLevels() const { return beams_.shape() == LightShape::Segment ? 4 : 2; }
+    // undetected: three for quarters (64 MAX-beams) and four for halves (16),
+    // whose point samples cost about as much as the detection of the levels
+    // between costs in cone classifications and the samples of the marginal
+    // pieces it leaves (docs/lights.md, "Detection where it pays": with the
+    // cheaper samples of FrustumFromOrigin, three for quarters took less time
+    // than two).
+    int undetectedLevels() const { return beams_.shape() == LightShape::Segment ? 4 : 3; }
 
     // Whether the stopping rule could stop at the next level (of pieces each
     // `childShare` of the light) if the children of this level's marginal
