@@ -59,15 +59,12 @@ public:
     // intersectAnyFrom(originToLocal(o), d, lo, hi) == intersectAny({o, d}, lo, hi).
     Vec3 originToLocal(const Vec3& worldOrigin) const { return frame_.pointToLocal(worldOrigin); }
     bool intersectAnyFrom(const Vec3& localOrigin, const Vec3& worldDir, double tMin, double tMax) const;
-    // The same as a loop's body: calls f(test) once, where
-    // test(localOrigin, worldDir, tMin, tMax) is intersectAnyFrom with the
-    // shape's kind resolved (no dispatch per ray).
-    template <class F>
-    decltype(auto) withAnyTest(F&& f) const;
-    // The same for rays from one world origin: calls f(test) once, where
-    // test(worldDir, tMin, tMax) == intersectAny({worldOrigin, worldDir}, tMin, tMax),
-    // with what does not depend on the direction computed once where the
-    // shape allows it (a capped cylinder or cone: FrustumFromOrigin).
+    // The same as a loop's body, for rays from one world origin: calls
+    // f(test) once, where test(worldDir, tMin, tMax) ==
+    // intersectAny({worldOrigin, worldDir}, tMin, tMax), with the shape's kind
+    // resolved (no dispatch per ray) and what does not depend on the
+    // direction computed once where the shape allows it (a capped cylinder
+    // or cone: FrustumFromOrigin).
     template <class F>
     decltype(auto) withAnyTestFrom(const Vec3& worldOrigin, F&& f) const;
     ConeClass classify(const Cone& worldCone) const;
@@ -118,18 +115,6 @@ decltype(auto) dispatch(const Variant& v, F& f) {
 template <class F>
 decltype(auto) Primitive::visit(F&& f) const {
     return primitive_detail::dispatch(shape_, f);
-}
-
-template <class F>
-decltype(auto) Primitive::withAnyTest(F&& f) const {
-    return visit([&](const auto& shape) {
-        const LocalFrame& frame = frame_;
-        return f([&shape, &frame](const Vec3& localOrigin, const Vec3& worldDir, double tMin, double tMax) {
-            const Ray ray{localOrigin,
-                          frame.kind == LocalFrame::Kind::Translate ? worldDir : frame.localFromWorld * worldDir};
-            return shape.intersectAny(ray, tMin, tMax);
-        });
-    });
 }
 
 template <class F>
