@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <type_traits>
 
 #include "asos/geometry/beam.hpp"
 #include "asos/shapes/local_cone.hpp"
@@ -263,8 +264,17 @@ private:
         }
         const AreaLightScratch::SampleOccluder* first = list.data();
         std::uint64_t pieces = 0, rays = 0, tests = 0;
+        // Diffuse only, from the shaded point (no surface distance to take
+        // off), the lit samples' sum is kept in locals: emitAbove's and
+        // WeightedDiffuseSum::add's operations in their order, written back
+        // once per lattice.
+        const bool summed = q_.diffuseOnly && !origin_.behind;
+        WeightedDiffuseSum& out = s_.diffuseSum;
+        double sumX = out.sum.x, sumY = out.sum.y, sumZ = out.sum.z, sumDistance = out.distance,
+               total = out.total;
+        std::size_t emitted = out.count;
         // The lattice's loop with `blocked(dir, t0, t1)` inlined.
-        const auto sample = [&](auto&& blocked) {
+        const auto sample = [&](auto&& blocked, auto summedHere) {
             beams_.forEachCentralRay(piece, depth, [&](const BeamRay& ray) __attribute__((always_inline)) {
                 ++pieces;
                 const Vec3& dir = ray.ray.dir;
@@ -277,27 +287,53 @@ private:
                 } else if (blocked(dir, t0, t1)) {
                     return;
                 }
-                emitAbove(ray, share);
+                if constexpr (decltype(summedHere)::value) {
+                    const double k = share * beams_.emission(dir);
+                    const double distance = std::max(ray.distance, 0.0);
+                    sumX += k * dir.x;
+                    sumY += k * dir.y;
+                    sumZ += k * dir.z;
+                    sumDistance += k * distance;
+                    total += k;
+                    if (emitted++ == 0) {
+                        out.firstDirection = dir;
+                        out.firstDistance = distance;
+                        out.firstWeight = k;
+                    }
+                } else {
+                    emitAbove(ray, share);
+                }
             });
+        };
+        // sample(blocked) with the sum kept in locals where it may be.
+        const auto sampleAll = [&](auto&& blocked) __attribute__((always_inline)) {
+            if (summed) sample(blocked, std::true_type{});
+            else sample(blocked, std::false_type{});
         };
         if (count == 1) {
             // One occluder (the common case): its shape's test is resolved
-            // once for the whole lattice.
-            const Vec3 origin = first[0].origin;
-            first[0].primitive->withAnyTest([&](const auto& test) {
-                sample([&](const Vec3& dir, double t0, double t1) __attribute__((always_inline)) {
+            // once for the whole lattice, with what does not depend on the
+            // direction computed once (Primitive::withAnyTestFrom).
+            first[0].primitive->withAnyTestFrom(origin_.apex, [&](const auto& test) {
+                sampleAll([&](const Vec3& dir, double t0, double t1) __attribute__((always_inline)) {
                     ++tests;
-                    return test(origin, dir, t0, t1);
+                    return test(dir, t0, t1);
                 });
             });
         } else {
-            sample([&](const Vec3& dir, double t0, double t1) __attribute__((always_inline)) {
+            sampleAll([&](const Vec3& dir, double t0, double t1) __attribute__((always_inline)) {
                 for (std::uint32_t i = 0; i < count; ++i) {
                     ++tests;
                     if (first[i].primitive->intersectAnyFrom(first[i].origin, dir, t0, t1)) return true;
                 }
                 return false;
             });
+        }
+        if (summed) {
+            out.sum = Vec3(sumX, sumY, sumZ);
+            out.distance = sumDistance;
+            out.total = total;
+            out.count = emitted;
         }
         c_.countShadowPyrays(piece.level + depth, pieces);
         c_.shadowRays += rays;
@@ -323,12 +359,13 @@ private:
     }
 
     // How many levels above MAX a marginal beam's descendants may be left
-    // undetected: two for quarters and four for halves (16 MAX-beams), whose
-    // point samples cost about as much as the detection of the levels between
-    // costs in cone classifications and the samples of the marginal pieces it
-    // leaves (docs/lights.md, "Detection where it pays": three for quarters
-    // takes fewer instructions but more time).
-    int undetectedLevels() const { return beams_.shape() == LightShape::Segment ? 4 : 2; }
+    // undetected: three for quarters (64 MAX-beams) and four for halves (16),
+    // whose point samples cost about as much as the detection of the levels
+    // between costs in cone classifications and the samples of the marginal
+    // pieces it leaves (docs/lights.md, "Detection where it pays": with the
+    // cheaper samples of FrustumFromOrigin, three for quarters took less time
+    // than two).
+    int undetectedLevels() const { return beams_.shape() == LightShape::Segment ? 4 : 3; }
 
     // Whether the stopping rule could stop at the next level (of pieces each
     // `childShare` of the light) if the children of this level's marginal

@@ -273,7 +273,7 @@ private:
     double sphereDistance(const Vec3& dir) const;
     double sphereDistanceAtRadius(double r, double widen) const;
     // Inline: forEachDescendant makes one per point sample.
-    BeamRay toward(const Vec3& target) const {
+    __attribute__((always_inline)) BeamRay toward(const Vec3& target) const {
         const Vec3 offset = target - apex_;
         const double distance = glm::length(offset);
         return {Ray{apex_, offset / distance}, distance};

@@ -28,6 +28,8 @@ public:
         return intersect(ray, tMin, tMax).has_value();
     }
     ConeClass classify(const LocalCone& cone) const { return frustum_.classify(cone); }
+    // The same solid (capped unless open): FrustumFromOrigin decides its rays.
+    const Frustum& frustum() const { return frustum_; }
 
 private:
     double radius_, length_;

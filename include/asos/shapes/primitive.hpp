@@ -7,6 +7,7 @@
 // shape through the cheapest path its frame allows (see LocalFrame).
 #include <cstddef>
 #include <optional>
+#include <type_traits>
 #include <variant>
 
 #include "asos/geometry/bounds.hpp"
@@ -18,6 +19,7 @@
 #include "asos/shapes/box.hpp"
 #include "asos/shapes/cylinder.hpp"
 #include "asos/shapes/disc.hpp"
+#include "asos/shapes/frustum_from_origin.hpp"
 #include "asos/shapes/local_cone.hpp"
 #include "asos/shapes/local_frame.hpp"
 #include "asos/shapes/plane.hpp"
@@ -57,11 +59,14 @@ public:
     // intersectAnyFrom(originToLocal(o), d, lo, hi) == intersectAny({o, d}, lo, hi).
     Vec3 originToLocal(const Vec3& worldOrigin) const { return frame_.pointToLocal(worldOrigin); }
     bool intersectAnyFrom(const Vec3& localOrigin, const Vec3& worldDir, double tMin, double tMax) const;
-    // The same as a loop's body: calls f(test) once, where
-    // test(localOrigin, worldDir, tMin, tMax) is intersectAnyFrom with the
-    // shape's kind resolved (no dispatch per ray).
+    // The same as a loop's body, for rays from one world origin: calls
+    // f(test) once, where test(worldDir, tMin, tMax) ==
+    // intersectAny({worldOrigin, worldDir}, tMin, tMax), with the shape's kind
+    // resolved (no dispatch per ray) and what does not depend on the
+    // direction computed once where the shape allows it (a capped cylinder
+    // or cone: FrustumFromOrigin).
     template <class F>
-    decltype(auto) withAnyTest(F&& f) const;
+    decltype(auto) withAnyTestFrom(const Vec3& worldOrigin, F&& f) const;
     ConeClass classify(const Cone& worldCone) const;
     // The same, for a cone whose trigonometry is done once for many objects.
     ConeClass classify(const PreparedCone& worldCone) const;
@@ -113,13 +118,33 @@ decltype(auto) Primitive::visit(F&& f) const {
 }
 
 template <class F>
-decltype(auto) Primitive::withAnyTest(F&& f) const {
+decltype(auto) Primitive::withAnyTestFrom(const Vec3& worldOrigin, F&& f) const {
+    const Vec3 localOrigin = originToLocal(worldOrigin);
     return visit([&](const auto& shape) {
         const LocalFrame& frame = frame_;
-        return f([&shape, &frame](const Vec3& localOrigin, const Vec3& worldDir, double tMin, double tMax) {
-            const Ray ray{localOrigin,
-                          frame.kind == LocalFrame::Kind::Translate ? worldDir : frame.localFromWorld * worldDir};
-            return shape.intersectAny(ray, tMin, tMax);
+        const auto exact = [&shape, &frame, localOrigin](const Vec3& localDir, double tMin, double tMax) {
+            return shape.intersectAny(Ray{localOrigin, localDir}, tMin, tMax);
+        };
+        // The direction's local image, written out (glm's product is a call).
+        const auto toLocal = [&frame](const Vec3& w) {
+            if (frame.kind == LocalFrame::Kind::Translate) return w;
+            const Mat3& m = frame.localFromWorld;
+            return Vec3(m[0][0] * w.x + m[1][0] * w.y + m[2][0] * w.z, m[0][1] * w.x + m[1][1] * w.y + m[2][1] * w.z,
+                        m[0][2] * w.x + m[1][2] * w.y + m[2][2] * w.z);
+        };
+        using S = std::decay_t<decltype(shape)>;
+        if constexpr (std::is_same_v<S, TruncatedCone> || std::is_same_v<S, Cylinder>) {
+            const FrustumFromOrigin fast(shape.frustum(), localOrigin);
+            if (fast.usable()) {
+                return f([&](const Vec3& worldDir, double tMin, double tMax) {
+                    const Vec3 d = toLocal(worldDir);
+                    const int answer = fast.decide(d, tMin, tMax);
+                    return answer == FrustumFromOrigin::kUndecided ? exact(d, tMin, tMax) : answer != 0;
+                });
+            }
+        }
+        return f([&](const Vec3& worldDir, double tMin, double tMax) {
+            return exact(toLocal(worldDir), tMin, tMax);
         });
     });
 }

@@ -32,6 +32,7 @@ public:
         return frustum_.intersectAny(ray, tMin, tMax);
     }
     ConeClass classify(const LocalCone& cone) const { return frustum_.classify(cone); }
+    const Frustum& frustum() const { return frustum_; }
 
 private:
     Frustum frustum_;
