@@ -29,16 +29,9 @@ ConeClass Sphere::classify(const LocalCone& cone) const {
     const double p2 = glm::dot(perp, perp);
 
     if (d2 - r2 > band) {
-        // Apex outside. Angular miss: the ball lies outside the cone.
-        if (c >= 0.0) {
-            if (sigma < 0.0 && sigma * sigma * c * c > p2 * s * s) return missClass();
-            const double rhs = sigma * s + r;
-            if (rhs < 0.0 || p2 * c * c > rhs * rhs) return missClass();
-        } else {
-            const double dp = std::sqrt(p2);
-            if (s * sigma < c * dp && (sigma * c + dp * s < 0.0 || dp * c - sigma * s > r))
-                return missClass();
-        }
+        // Apex outside. The Full test comes first, so that the commonest
+        // answer skips the miss tests: a ball that covers the cone cannot lie
+        // outside it, and the Full test is conservative on its own.
         const double t2 = d2 - r2;
         // Full: angle(axis, w) + theta <= alpha (the tangent half-angle), i.e.
         // sin(alpha - beta) = (r sigma - T |perp|) / d2 >= sin(theta), squared.
@@ -52,6 +45,16 @@ ConeClass Sphere::classify(const LocalCone& cone) const {
             auto front = [&](double x) { return t2 / (x + std::sqrt(std::max(0.0, x * x - t2))); };
             const double tNear = front(xHi), tFar = front(xLo);
             if (cone.surelyWithin(tNear, tFar)) return fullClass(tNear, tFar);
+        }
+        // Angular miss: the ball lies outside the cone.
+        if (c >= 0.0) {
+            if (sigma < 0.0 && sigma * sigma * c * c > p2 * s * s) return missClass();
+            const double rhs = sigma * s + r;
+            if (rhs < 0.0 || p2 * c * c > rhs * rhs) return missClass();
+        } else {
+            const double dp = std::sqrt(p2);
+            if (s * sigma < c * dp && (sigma * c + dp * s < 0.0 || dp * c - sigma * s > r))
+                return missClass();
         }
         // The silhouette is inside the cone (or the range cuts the hits).
         // Every front hit lies in [D - r, T]; a ray whose front hit is before
