@@ -106,6 +106,19 @@ std::vector<Bounds3> randomBoxes(std::mt19937_64& rng, int n) {
     return boxes;
 }
 
+// Flat boxes (one axis of zero extent) at arbitrary, non-float coordinates.
+std::vector<Bounds3> randomFlatBoxes(std::mt19937_64& rng, int n) {
+    std::uniform_real_distribution<double> u01(0.0, 1.0);
+    std::vector<Bounds3> boxes(n);
+    for (auto& b : boxes) {
+        const Vec3 c = (Vec3(u01(rng), u01(rng), u01(rng)) - 0.5) * 20.0;
+        Vec3 h = Vec3(u01(rng), u01(rng), u01(rng)) * 0.3;
+        h[rng() % 3] = 0.0;
+        b = {c - h, c + h};
+    }
+    return boxes;
+}
+
 Ray randomRay(std::mt19937_64& rng, bool onGrid) {
     std::uniform_real_distribution<double> u01(0.0, 1.0);
     Ray r;
@@ -200,13 +213,7 @@ TEST_CASE("BVH keeps hits on the edges of flat boxes (float rounding of the slab
     // hits must survive the float node boxes and float slab arithmetic.
     std::mt19937_64 rng(9);
     std::uniform_real_distribution<double> u01(0.0, 1.0);
-    std::vector<Bounds3> boxes(400);
-    for (auto& b : boxes) {
-        const Vec3 c = (Vec3(u01(rng), u01(rng), u01(rng)) - 0.5) * 20.0;
-        Vec3 h = Vec3(u01(rng), u01(rng), u01(rng)) * 0.3;
-        h[rng() % 3] = 0.0;
-        b = {c - h, c + h};
-    }
+    const std::vector<Bounds3> boxes = randomFlatBoxes(rng, 400);
     const Bvh bvh = Bvh::build(boxes);
     int hits = 0;
     for (int trial = 0; trial < 20000; ++trial) {
@@ -297,16 +304,7 @@ TEST_CASE("BVH packet traversal hands every ray each leaf its own traversal acce
     std::uniform_real_distribution<double> u01(0.0, 1.0);
     // Grid boxes (a fifth flat) and flat boxes at arbitrary coordinates.
     std::vector<std::vector<Bounds3>> scenes{randomBoxes(rng, 2000)};
-    {
-        std::vector<Bounds3> flat(600);
-        for (auto& b : flat) {
-            const Vec3 c = (Vec3(u01(rng), u01(rng), u01(rng)) - 0.5) * 20.0;
-            Vec3 h = Vec3(u01(rng), u01(rng), u01(rng)) * 0.3;
-            h[rng() % 3] = 0.0;
-            b = {c - h, c + h};
-        }
-        scenes.push_back(flat);
-    }
+    scenes.push_back(randomFlatBoxes(rng, 600));
     int rays = 0, hits = 0;
     for (const auto& boxes : scenes) {
         for (int leafSize : {1, 4}) {
