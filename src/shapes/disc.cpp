@@ -27,6 +27,16 @@ std::optional<LocalHit> Disc::intersect(const Ray& ray, double tMin, double tMax
 }
 
 ConeClass Disc::classify(const LocalCone& cone) const {
+    return classifyWith(cone, [] {}, [](const ConeClass& out) { return out; });
+}
+
+ConeClass Disc::classifyRanging(LocalCone& cone, double t0, double t1,
+                                const RigidBounds& back) const {
+    return classifyWith(cone, [&] { cone.setRange(t0, t1, cone.absTol); }, back);
+}
+
+template <class SetRange, class Finish>
+ConeClass Disc::classifyWith(const LocalCone& cone, SetRange&& setRange, Finish&& finish) const {
     if (empty()) return missClass();
     const Vec3& p = cone.apex;
     const Vec3& axis = cone.axis;
@@ -50,10 +60,12 @@ ConeClass Disc::classify(const LocalCone& cone) const {
         const bool full = (outerNear > 0.0) & (q2 < outerNear * outerNear) &
                           ((hole_ == 0.0) | (q2 > holeFar * holeFar));
         if (miss) return missClass();
+        // The fast path's Miss needs no range (absTol only): it is set here.
+        setRange();
         const auto [tNear, tFar] = planeDepths(depth, an, g2, c, s);
         // Whether the range cuts the hits is as good as random from one cone
         // to the next: the answer is selected, not branched to.
-        if (full) return rangedClass(cone, false, true, tNear, tFar);
+        if (full) return finish(rangedClass(cone, false, true, tNear, tFar));
         // A circle near q: the ellipse itself against both circles.
         const CircleFootprint ellipse(cone, depth, an, k);
         const CircleRelation outer = ellipse.relation(radius_);
@@ -69,11 +81,13 @@ ConeClass Disc::classify(const LocalCone& cone) const {
                                      (inner == CircleRelation::EllipseOutside);
             // The disc's own distance (its bounding ball) against the range, too.
             const bool outOfRange = ballOutsideRange(cone, Vec3(0.0), radius_);
-            return rangedClass(cone, ellipseMiss | outOfRange, ellipseFull, tNear, tFar);
+            return finish(rangedClass(cone, ellipseMiss | outOfRange, ellipseFull, tNear, tFar));
         }
         // Within a few tolerances of tangency: the exact test below.
+    } else {
+        setRange();
     }
-    return classifyExactly(cone);
+    return finish(classifyExactly(cone));
 }
 
 ConeClass Disc::classifyExactly(const LocalCone& cone) const {

@@ -88,22 +88,17 @@ ConeClass Primitive::classifyRigid(const PreparedCone& cone) const {
     local.cosHalf = cone.cosHalf;
     local.sinHalf = cone.sinHalf;
     const double absTol = 1e-11 * (l1(local.apex) + sphereTolerance_);
-    if constexpr (kScaled)
-        local.setRange(cone.tMin * frame_.localPerWorld, cone.tMax * frame_.localPerWorld, absTol);
-    else
-        local.setRange(cone.tMin, cone.tMax, absTol);
-    ConeClass out = visit([&](const auto& s) { return s.classify(local); });
-    // No branch on the answer (as good as random from one cone to the
-    // next): a Miss's bounds (+inf, -inf) come through unchanged.
-    double tNear = out.tNear * (1.0 - kConeDistanceTolerance) - absTol;
-    double tFar = out.tFar * (1.0 + kConeDistanceTolerance) + absTol;
-    if constexpr (kScaled) {
-        tNear *= frame_.worldPerLocal;
-        tFar *= frame_.worldPerLocal;
+    const double t0 = kScaled ? cone.tMin * frame_.localPerWorld : cone.tMin;
+    const double t1 = kScaled ? cone.tMax * frame_.localPerWorld : cone.tMax;
+    const RigidBounds back{absTol, kScaled ? frame_.worldPerLocal : 1.0, cone.tMin, cone.tMax};
+    // A disc's Misses mostly need no range nor bounds: it sets the one and
+    // applies the other past them.
+    if (const Disc* disc = std::get_if<Disc>(&shape_)) {
+        local.absTol = absTol;
+        return disc->classifyRanging(local, t0, t1, back);
     }
-    out.tNear = std::max(cone.tMin, tNear);
-    out.tFar = std::min(cone.tMax, tFar);
-    return out;
+    local.setRange(t0, t1, absTol);
+    return back(visit([&](const auto& s) { return s.classify(local); }));
 }
 
 // Under a non-uniform scale or a shear the cone becomes elliptic in the local

@@ -2,6 +2,7 @@
 
 #include <cmath>
 
+#include "asos/shapes/disc.hpp"
 #include "asos/shapes/primitive.hpp"
 #include "shape_property.hpp"
 
@@ -105,4 +106,40 @@ TEST_CASE("Disc cone classification is conservative (property)", "[shapes][disc]
     CHECK(stats.full > 0);
     CHECK(stats.marginal > 0);
     CHECK(stats.miss > 0);
+}
+
+// Primitive::classifyRigid hands a disc its cone before the range is set
+// (Disc::classifyRanging): the answers must be those of classify on the
+// ranged cone, brought back by the same RigidBounds.
+TEST_CASE("Disc classifyRanging answers as classify does", "[shapes][disc]") {
+    shapetest::Rng rng(0xd15c4a6e);
+    int misses = 0, others = 0;
+    for (int i = 0; i < 20000; ++i) {
+        const double radius = rng.uniform(0.2, 2.0);
+        const Disc d(radius, rng.chance(0.4) ? radius * rng.uniform(0.1, 0.9) : 0.0);
+        LocalCone cone;
+        cone.apex = Vec3(rng.uniform(-4, 4), rng.uniform(-4, 4), rng.uniform(-4, 4));
+        cone.axis = rng.unitVector();
+        const double half = rng.uniform(0.0, 0.4);
+        cone.cosHalf = std::cos(half);
+        cone.sinHalf = std::sin(half);
+        const double t0 = rng.chance(0.5) ? 0.0 : rng.uniform(0.0, 4.0);
+        const double t1 = rng.chance(0.5) ? kInfinity : t0 + rng.uniform(0.0, 6.0);
+        const double absTol = 1e-11 * (std::abs(cone.apex.x) + std::abs(cone.apex.y) +
+                                       std::abs(cone.apex.z) + radius);
+        const RigidBounds back{absTol, rng.uniform(0.5, 2.0), t0 * 0.9, t1 * 1.1};
+        LocalCone ranged = cone;
+        ranged.setRange(t0, t1, absTol);
+        const ConeClass want = back(d.classify(ranged));
+        LocalCone unranged = cone;
+        unranged.absTol = absTol;
+        const ConeClass got = d.classifyRanging(unranged, t0, t1, back);
+        REQUIRE(static_cast<int>(got.coverage) == static_cast<int>(want.coverage));
+        REQUIRE(got.singleEdge == want.singleEdge);
+        REQUIRE(got.tNear == want.tNear);
+        REQUIRE(got.tFar == want.tFar);
+        (got.coverage == Coverage::Miss ? misses : others) += 1;
+    }
+    CHECK(misses > 1000);
+    CHECK(others > 1000);
 }

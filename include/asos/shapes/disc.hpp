@@ -29,8 +29,16 @@ public:
     // The two circles are the boundary, tested against the cone's elliptic
     // footprint in the disc's plane; see docs/geometry.md.
     ConeClass classify(const LocalCone& cone) const;
+    // A rigid frame's answer in world units (Primitive::classifyRigid), for
+    // a cone whose range is not set yet (apex, axis, angle and absTol are):
+    // the range [t0, t1] is set and `back` applied only past the fast path's
+    // Miss, which needs neither (docs/geometry.md, "Disc").
+    ConeClass classifyRanging(LocalCone& cone, double t0, double t1,
+                              const RigidBounds& back) const;
 
 private:
+    template <class SetRange, class Finish>
+    ConeClass classifyWith(const LocalCone& cone, SetRange&& setRange, Finish&& finish) const;
     // Both circles against the cone (the fast path's fallback near tangency).
     ConeClass classifyExactly(const LocalCone& cone) const;
 

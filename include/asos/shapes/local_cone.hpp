@@ -57,6 +57,21 @@ struct PreparedCone {
     }
 };
 
+// A rigid frame's answer in world units: the local bounds padded by the
+// distance tolerances (absTol in local units), scaled by worldPerLocal and
+// clipped to the world range [tMin, tMax]. No branch on the answer: a Miss's
+// bounds (+inf, -inf) come through unchanged, so a Miss needs none of this.
+struct RigidBounds {
+    double absTol, worldPerLocal, tMin, tMax;
+    ConeClass operator()(ConeClass out) const {
+        const double tNear = (out.tNear * (1.0 - kConeDistanceTolerance) - absTol) * worldPerLocal;
+        const double tFar = (out.tFar * (1.0 + kConeDistanceTolerance) + absTol) * worldPerLocal;
+        out.tNear = std::max(tMin, tNear);
+        out.tFar = std::min(tMax, tFar);
+        return out;
+    }
+};
+
 struct LocalCone {
     Vec3 apex{0.0};
     Vec3 axis{0.0, 0.0, 1.0};  // unit
