@@ -275,7 +275,8 @@ private:
     // Inline: forEachDescendant makes one per point sample.
     __attribute__((always_inline)) BeamRay toward(const Vec3& target) const {
         const Vec3 offset = target - apex_;
-        const double distance = glm::length(offset);
+        // glm::length's sqrt(dot) written out: GCC left glm::length a call.
+        const double distance = std::sqrt(glm::dot(offset, offset));
         return {Ray{apex_, offset / distance}, distance};
     }
     // The cone about unit `axis` through the widest of `directions` (of any

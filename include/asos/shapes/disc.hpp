@@ -23,8 +23,14 @@ public:
     Bounds3 worldBounds(const Mat3& worldFromLocal, const Vec3& offset) const;
 
     std::optional<LocalHit> intersect(const Ray& ray, double tMin, double tMax) const;
+    // intersect(ray, tMin, tMax).has_value(), inline and without the hit
+    // record (the inner loop of an area light's point samples).
     bool intersectAny(const Ray& ray, double tMin, double tMax) const {
-        return intersect(ray, tMin, tMax).has_value();
+        if (empty()) return false;
+        const auto hit = crossZPlane(ray, tMin, tMax);
+        if (!hit) return false;
+        const double r2 = hit->x * hit->x + hit->y * hit->y;
+        return !(r2 > radius_ * radius_ || r2 < hole_ * hole_);
     }
     // The two circles are the boundary, tested against the cone's elliptic
     // footprint in the disc's plane; see docs/geometry.md.

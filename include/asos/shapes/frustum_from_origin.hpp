@@ -41,7 +41,7 @@ public:
 
     // 1 for a hit, 0 for none, kUndecided near a boundary. `d` is the local
     // direction of any length; t counts along it.
-    int decide(const Vec3& d, double tMin, double tMax) const {
+    __attribute__((always_inline)) int decide(const Vec3& d, double tMin, double tMax) const {
         const double dd = d.x * d.x + d.y * d.y + d.z * d.z;
         // A length along t clears the margin when its square times |d|^2
         // exceeds the margin's (no division).

@@ -33,8 +33,14 @@ public:
     // The even-odd rule at a point of the plane.
     bool contains(double x, double y) const;
     std::optional<LocalHit> intersect(const Ray& ray, double tMin, double tMax) const;
+    // intersect(ray, tMin, tMax).has_value(), inline and without the hit
+    // record (the inner loop of an area light's point samples).
     bool intersectAny(const Ray& ray, double tMin, double tMax) const {
-        return intersect(ray, tMin, tMax).has_value();
+        if (empty()) return false;
+        const auto hit = crossZPlane(ray, tMin, tMax);
+        if (!hit) return false;
+        const double x = hit->x, y = hit->y;
+        return !(x < lo_.x || x > hi_.x || y < lo_.y || y > hi_.y) && contains(x, y);
     }
     // The edges are the boundary: Marginal iff one meets the cone; else the
     // cone's footprint is wholly inside or outside, as its axis point.

@@ -17,6 +17,7 @@
 #include "asos/geometry/transform.hpp"
 #include "asos/scene/description.hpp"
 #include "asos/shapes/box.hpp"
+#include "asos/shapes/box_from_origin.hpp"
 #include "asos/shapes/cylinder.hpp"
 #include "asos/shapes/disc.hpp"
 #include "asos/shapes/frustum_from_origin.hpp"
@@ -64,7 +65,7 @@ public:
     // intersectAny({worldOrigin, worldDir}, tMin, tMax), with the shape's kind
     // resolved (no dispatch per ray) and what does not depend on the
     // direction computed once where the shape allows it (a capped cylinder
-    // or cone: FrustumFromOrigin).
+    // or cone: FrustumFromOrigin; a box: BoxFromOrigin).
     template <class F>
     decltype(auto) withAnyTestFrom(const Vec3& worldOrigin, F&& f) const;
     ConeClass classify(const Cone& worldCone) const;
@@ -142,6 +143,12 @@ decltype(auto) Primitive::withAnyTestFrom(const Vec3& worldOrigin, F&& f) const 
                     return answer == FrustumFromOrigin::kUndecided ? exact(d, tMin, tMax) : answer != 0;
                 });
             }
+        }
+        if constexpr (std::is_same_v<S, Box>) {
+            const BoxFromOrigin fast(shape, localOrigin);
+            return f([&](const Vec3& worldDir, double tMin, double tMax) {
+                return fast.intersectAny(toLocal(worldDir), tMin, tMax);
+            });
         }
         return f([&](const Vec3& worldDir, double tMin, double tMax) {
             return exact(toLocal(worldDir), tMin, tMax);
