@@ -9,6 +9,7 @@
 #include "asos/shapes/disc.hpp"
 #include "asos/shapes/polygon.hpp"
 #include "asos/shapes/primitive.hpp"
+#include "any_test_from.hpp"
 
 using namespace asos;
 
@@ -106,19 +107,5 @@ TEST_CASE("Primitive::withAnyTestFrom answers as intersectAny: box, disc, polygo
         Primitive::make(hexagon, placed),
         Primitive::make(hexagon, stretched),
     };
-    std::mt19937 rng(98);
-    std::uniform_real_distribution<double> u(-1.0, 1.0);
-    for (const Primitive& p : prims) {
-        for (const Vec3 origin : {Vec3(0.3, 0.0, -3.2), Vec3(3.5, 0.0, -0.4), Vec3(-1.0, 0.5, 2.0)}) {
-            const Bounds3 b = p.worldBounds();
-            p.withAnyTestFrom(origin, [&](const auto& test) {
-                for (int i = 0; i < 2000; ++i) {
-                    const Vec3 target = b.lo + (b.hi - b.lo) * (0.5 + 0.6 * Vec3(u(rng), u(rng), u(rng)));
-                    const Vec3 d = glm::normalize(target - origin);
-                    const double tMax = i % 2 ? kInfinity : glm::length(target - origin);
-                    CHECK(test(d, 1e-6, tMax) == p.intersectAny(Ray{origin, d}, 1e-6, tMax));
-                }
-            });
-        }
-    }
+    test::checkAnyTestFromMatchesIntersectAny(prims, 98);
 }

@@ -8,6 +8,7 @@
 #include "asos/shapes/frustum.hpp"
 #include "asos/shapes/frustum_from_origin.hpp"
 #include "asos/shapes/primitive.hpp"
+#include "any_test_from.hpp"
 #include "asos/shapes/truncated_cone.hpp"
 
 using namespace asos;
@@ -118,19 +119,5 @@ TEST_CASE("Primitive::withAnyTestFrom answers as intersectAny", "[shapes][frustu
         Primitive::make(SphereShape{{0.5, 0.5, 0.2}, 0.7}, stretched),
         Primitive::make(BoxShape{{-0.5, 0, -0.5}, {0.5, 1, 0.5}}, placed),
     };
-    std::mt19937 rng(99);
-    std::uniform_real_distribution<double> u(-1.0, 1.0);
-    for (const Primitive& p : prims) {
-        for (const Vec3 origin : {Vec3(0.3, 0.0, -3.2), Vec3(3.5, 0.0, -0.4), Vec3(-1.0, 0.5, 2.0)}) {
-            const Bounds3 b = p.worldBounds();
-            p.withAnyTestFrom(origin, [&](const auto& test) {
-                for (int i = 0; i < 2000; ++i) {
-                    const Vec3 target = b.lo + (b.hi - b.lo) * (0.5 + 0.6 * Vec3(u(rng), u(rng), u(rng)));
-                    const Vec3 d = glm::normalize(target - origin);
-                    const double tMax = i % 2 ? kInfinity : glm::length(target - origin);
-                    CHECK(test(d, 1e-6, tMax) == p.intersectAny(Ray{origin, d}, 1e-6, tMax));
-                }
-            });
-        }
-    }
+    test::checkAnyTestFromMatchesIntersectAny(prims, 99);
 }
