@@ -145,9 +145,10 @@ ConeClass Box::classify(const LocalCone& cone) const {
         double enter = -kInfinity, exit = kInfinity, grownEnter = -kInfinity, grownExit = kInfinity;
         int enterAxis = -1;
         bool hits = true;
-        // The three reciprocals up front, independent of the branches below
-        // (one a[i] == 0 gives an infinity that is never used): they
-        // overlap instead of waiting on each other's iteration.
+        // The three reciprocals, named apart from the branches below (an
+        // a[i] == 0 gives an infinity that is never used). GCC still places
+        // each in its iteration; this build measured ~0.7 ns faster with
+        // them named here than without (docs/geometry.md, Box).
         const double invA[3] = {1.0 / a.x, 1.0 / a.y, 1.0 / a.z};
         for (int i = 0; i < 3; ++i) {
             if (a[i] == 0.0) {
