@@ -1,6 +1,7 @@
 #pragma once
 // POV-Ray's box { corner1, corner2 } (corners in any order), axis-aligned in
 // its local frame, which is the object frame.
+#include <cmath>
 #include <optional>
 
 #include "asos/geometry/bounds.hpp"
@@ -16,7 +17,10 @@ public:
     static constexpr const char* kName = "box";
 
     Box(const Vec3& corner1, const Vec3& corner2)
-        : lo_(glm::min(corner1, corner2)), hi_(glm::max(corner1, corner2)) {}
+        : lo_(glm::min(corner1, corner2)),
+          hi_(glm::max(corner1, corner2)),
+          cornerAbsSum_(std::abs(lo_.x) + std::abs(lo_.y) + std::abs(lo_.z) + std::abs(hi_.x) +
+                        std::abs(hi_.y) + std::abs(hi_.z)) {}
 
     const Vec3& lo() const { return lo_; }
     const Vec3& hi() const { return hi_; }
@@ -35,6 +39,10 @@ private:
     ConeClass classifyOnSurface(const LocalCone& cone, double tol) const;
 
     Vec3 lo_, hi_;
+    // |lo| + |hi| summed over the axes: the box's part of classify's
+    // positional tolerance, once per box instead of a chain of six
+    // dependent additions per cone.
+    double cornerAbsSum_;
 };
 
 }  // namespace asos
