@@ -67,27 +67,39 @@ ConeClass Disc::classifyWith(const LocalCone& cone, SetRange&& setRange, Finish&
         // to the next: the answer is selected, not branched to.
         if (full) return finish(rangedClass(cone, false, true, tNear, tFar));
         // A circle near q: the ellipse itself against both circles.
-        const CircleFootprint ellipse(cone, depth, an, k);
-        const CircleRelation outer = ellipse.relation(radius_);
-        const CircleRelation inner =
-            hole_ > 0.0 ? ellipse.relation(hole_) : CircleRelation::EllipseOutside;
-        const bool unsure = (outer == CircleRelation::Unsure) |
-                            ((outer == CircleRelation::EllipseInside) & (inner == CircleRelation::Unsure));
-        if (!unsure) {
-            const bool ellipseMiss = (outer == CircleRelation::EllipseOutside) |
-                                     ((outer == CircleRelation::EllipseInside) &
-                                      (inner == CircleRelation::EllipseInside));
-            const bool ellipseFull = (outer == CircleRelation::EllipseInside) &
-                                     (inner == CircleRelation::EllipseOutside);
-            // The disc's own distance (its bounding ball) against the range, too.
-            const bool outOfRange = ballOutsideRange(cone, Vec3(0.0), radius_);
-            return finish(rangedClass(cone, ellipseMiss | outOfRange, ellipseFull, tNear, tFar));
-        }
+        if (const auto out = bandClass(cone, depth, an, k, tNear, tFar)) return finish(*out);
         // Within a few tolerances of tangency: the exact test below.
     } else {
+        // The axis turned away from the plane (or along it), and so is every
+        // ray (az c > g s: no direction within the half-angle reaches the
+        // plane's side), the apex off the plane: a Miss, as the exact test
+        // would find after its bounding ball and its dot range.
+        const double az2c2 = axis.z * axis.z * c * c;
+        if ((c > 0.0) & (h * axis.z <= 0.0) & (g2 * s * s * (1.0 + 1e-12) < az2c2) &
+            (std::abs(h) > apexInPlaneTolerance(cone)))
+            return missClass();
         setRange();
     }
     return finish(classifyExactly(cone));
+}
+
+std::optional<ConeClass> Disc::bandClass(const LocalCone& cone, double depth, double an, double k,
+                                         double tNear, double tFar) const {
+    const CircleFootprint ellipse(cone, depth, an, k);
+    const CircleRelation outer = ellipse.relation(radius_);
+    const CircleRelation inner =
+        hole_ > 0.0 ? ellipse.relation(hole_) : CircleRelation::EllipseOutside;
+    const bool unsure = (outer == CircleRelation::Unsure) |
+                        ((outer == CircleRelation::EllipseInside) & (inner == CircleRelation::Unsure));
+    if (unsure) return std::nullopt;
+    const bool ellipseMiss = (outer == CircleRelation::EllipseOutside) |
+                             ((outer == CircleRelation::EllipseInside) &
+                              (inner == CircleRelation::EllipseInside));
+    const bool ellipseFull = (outer == CircleRelation::EllipseInside) &
+                             (inner == CircleRelation::EllipseOutside);
+    // The disc's own distance (its bounding ball) against the range, too.
+    const bool outOfRange = ballOutsideRange(cone, Vec3(0.0), radius_);
+    return rangedClass(cone, ellipseMiss | outOfRange, ellipseFull, tNear, tFar);
 }
 
 ConeClass Disc::classifyExactly(const LocalCone& cone) const {

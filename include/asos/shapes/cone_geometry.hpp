@@ -355,6 +355,9 @@ public:
         // The origin is in the ellipse: m^T M^-1 m <= 1, M^-1 = (I - a a^T / c^2) / (e^2 k).
         originIn_ = across2_ <= e2 * e2 * k * c * c;
         tolBase_ = cone.absTol * k + 1e-12 * (d_ + e * c);
+        mu_ = mu;
+        g2_ = glm::dot(a, a);
+        ec_ = e * c;
     }
 
     CircleRelation relation(double rho) const {
@@ -369,11 +372,31 @@ public:
         const bool pointOut = highD > outer * d_;
         const bool pointIn = inner > 0.0 && (originIn_ || near2_ < inner * inner * nearLimit_ ||
                                              d2_ < inner * inner);
-        return pointOut && pointIn ? CircleRelation::Crossing : CircleRelation::Unsure;
+        if (pointOut && pointIn) return CircleRelation::Crossing;
+        return inner > 0.0 && majorAxisCrosses(outer, inner) ? CircleRelation::Crossing
+                                                             : CircleRelation::Unsure;
     }
 
 private:
-    double k_, d2_, d_, sd_, across2_, near2_, nearLimit_, tolBase_;
+    // The major axis, the segment m + u a / g with |u| <= e c (g = |a|), lies
+    // in the ellipse: its point nearest the origin inside the circle and an
+    // end outside it prove a crossing. Times g^2, with T = u g:
+    // g^2 |m + u a / g|^2 = g^2 d^2 + 2 T (m.a) + T^2, no division.
+    // Rare (undecided by the cheap tests): kept out of line.
+    [[gnu::noinline, gnu::cold]] bool majorAxisCrosses(double outer, double inner) const {
+        const double g = std::sqrt(g2_), reach = ec_ * g;
+        const double nearest = std::clamp(-mu_, -reach, reach);
+        const double base = g2_ * d2_;
+        const bool in = base + nearest * (2.0 * mu_ + nearest) < inner * inner * g2_;
+        // The end farther from the origin: T = reach sign(m.a).
+        const bool out = base + reach * (2.0 * std::abs(mu_) + reach) > outer * outer * g2_;
+        const bool pointOut = out || d2_ + sd_ > outer * d_;
+        const bool pointIn = in || originIn_ || near2_ < inner * inner * nearLimit_ ||
+                             d2_ < inner * inner;
+        return pointOut && pointIn;
+    }
+
+    double k_, d2_, d_, sd_, across2_, near2_, nearLimit_, tolBase_, mu_, g2_, ec_;
     bool originIn_;
 };
 

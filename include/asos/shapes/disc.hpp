@@ -45,6 +45,12 @@ public:
 private:
     template <class SetRange, class Finish>
     ConeClass classifyWith(const LocalCone& cone, SetRange&& setRange, Finish&& finish) const;
+    // The fast path's cones near a circle: the footprint ellipse against both
+    // circles; nullopt within a few tolerances of tangency. Out of line, so
+    // that the commoner Miss and Full answers do not carry its registers.
+    [[gnu::noinline]] std::optional<ConeClass> bandClass(const LocalCone& cone, double depth,
+                                                         double an, double k, double tNear,
+                                                         double tFar) const;
     // Both circles against the cone (the fast path's fallback near tangency).
     ConeClass classifyExactly(const LocalCone& cone) const;
 
