@@ -87,8 +87,10 @@ std::optional<ConeClass> Disc::bandClass(const LocalCone& cone, double depth, do
                                          double tNear, double tFar) const {
     const CircleFootprint ellipse(cone, depth, an, k);
     const CircleRelation outer = ellipse.relation(radius_);
-    const CircleRelation inner =
-        hole_ > 0.0 ? ellipse.relation(hole_) : CircleRelation::EllipseOutside;
+    // The hole matters only to an ellipse inside the outer circle.
+    const CircleRelation inner = hole_ > 0.0 && outer == CircleRelation::EllipseInside
+                                     ? ellipse.relation(hole_)
+                                     : CircleRelation::EllipseOutside;
     const bool unsure = (outer == CircleRelation::Unsure) |
                         ((outer == CircleRelation::EllipseInside) & (inner == CircleRelation::Unsure));
     if (unsure) return std::nullopt;
