@@ -50,6 +50,9 @@ ConeClass Disc::classifyWith(const LocalCone& cone, SetRange&& setRange, Finish&
         // of |q| with their radii. Scaled by an k (an = |axis.z|), q and
         // radius need no division.
         const double an = std::abs(axis.z), depth = std::abs(h), ank = an * k;
+        // The depths' root, taken before the answer's branch so that a
+        // mispredicted Full does not wait for it.
+        const double g = std::sqrt(g2);
         const double qx = an * p.x + depth * axis.x, qy = an * p.y + depth * axis.y;
         const double q2 = (qx * qx + qy * qy) * (k * k);
         const double radius =
@@ -62,7 +65,7 @@ ConeClass Disc::classifyWith(const LocalCone& cone, SetRange&& setRange, Finish&
         if (miss) return missClass();
         // The fast path's Miss needs no range (absTol only): it is set here.
         setRange();
-        const auto [tNear, tFar] = planeDepths(depth, an, g2, c, s);
+        const auto [tNear, tFar] = planeDepthsWithG(depth, an, g2, g, c, s);
         // Whether the range cuts the hits is as good as random from one cone
         // to the next: the answer is selected, not branched to.
         if (full) return finish(rangedClass(cone, false, true, tNear, tFar));

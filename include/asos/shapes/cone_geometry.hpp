@@ -245,11 +245,14 @@ struct CrossingDepths {
 // greatest cosine of a ray with the normal (hi = 1 when the normal is in the
 // cone). One division by lo hi = an^2 c^2 - g2 s^2, which needs no root, so
 // that it runs beside the root of g2 rather than after it.
-inline CrossingDepths planeDepths(double depth, double an, double g2, double c, double s) {
+inline CrossingDepths planeDepthsWithG(double depth, double an, double g2, double g, double c,
+                                       double s) {
     const double scaled = depth / (an * an * c * c - g2 * s * s);
-    const double g = std::sqrt(g2);
     const double lo = an * c - g * s, hi = an * c + g * s;
     return {g2 <= s * s ? depth : lo * scaled, hi * scaled};
+}
+inline CrossingDepths planeDepths(double depth, double an, double g2, double c, double s) {
+    return planeDepthsWithG(depth, an, g2, std::sqrt(g2), c, s);
 }
 
 inline CrossingDepths crossingDepths(const LocalCone& cone, const FootprintReach& f) {
