@@ -319,7 +319,9 @@ private:
 // The footprint ellipse (on a plane z = zc every ray of the cone crosses, as
 // for a valid FootprintReach) against circles about (0, 0, zc), for footprints small next to the circles (a pixel's
 // cone against a disc): tight bounds from the ellipse's extent along the
-// direction n of its centre m, with no unit vector and no root but two.
+// direction n of its centre m, with no unit vector, no division and no root
+// but two (the major axis' certificates, when those leave a circle
+// undecided, take one more).
 //
 // With e = depth s / k the ellipse is {m + y : y^T M^-1 y <= 1},
 // M = e^2 (k I + a a^T) (a = the axis' (x, y)), whose support along a unit
