@@ -108,6 +108,9 @@ ConeClass Primitive::classifyRigid(const PreparedCone& cone) const {
 // the union of those ranges, and a Full answer stands only if its depth bounds
 // fall in every ray's own range (docs/geometry.md).
 ConeClass Primitive::classifyGeneral(const PreparedCone& cone) const {
+    // A disc is flat: its fast path needs no bounding cone (Disc).
+    if (const Disc* disc = std::get_if<Disc>(&shape_))
+        if (const auto out = disc->classifyAcrossScale(cone, frame_)) return *out;
     const Mat3& a = frame_.localFromWorld;
     const Vec3 aAxis = a * cone.axis;
     const double la2 = glm::dot(aAxis, aAxis);

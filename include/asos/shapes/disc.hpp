@@ -8,6 +8,7 @@
 #include "asos/geometry/cone.hpp"
 #include "asos/geometry/ray.hpp"
 #include "asos/shapes/local_cone.hpp"
+#include "asos/shapes/local_frame.hpp"
 #include "asos/shapes/local_hit.hpp"
 
 namespace asos {
@@ -41,6 +42,14 @@ public:
     // Miss, which needs neither (docs/geometry.md, "Disc").
     ConeClass classifyRanging(LocalCone& cone, double t0, double t1,
                               const RigidBounds& back) const;
+
+    // Under a non-uniform frame (Primitive::classifyGeneral): the fast path
+    // in world terms, the cone as it is and the disc's plane mapped, its
+    // in-plane reach scaled by the frame's largest singular value; a Miss or
+    // a Full in world units, or nullopt for the bounding-cone path
+    // (docs/geometry.md, "Disc").
+    std::optional<ConeClass> classifyAcrossScale(const PreparedCone& cone,
+                                                 const LocalFrame& frame) const;
 
 private:
     template <class SetRange, class Finish>
