@@ -58,10 +58,13 @@ std::optional<ConeClass> Disc::classifyAcrossScale(const PreparedCone& cone,
     const double qy = a[0][1] * qs.x + a[1][1] * qs.y + a[2][1] * qs.z;
     const double q2 = (qx * qx + qy * qy) * (k * k);
     // The world footprint lies within its reach of the crossing; mapped, within
-    // sigmaMax times that. absTol in world units: the coordinates' size and
-    // the disc's world extent (at most radius / sigmaMin).
-    const double absTol = 1e-11 * (std::abs(w.x) + std::abs(w.y) + std::abs(w.z) +
-                                   radius_ / frame.sigmaMin);
+    // sigmaMax times that. absTol in world units: the coordinates' size (the
+    // apex from the centre, and the centre itself, whose rounding the local
+    // offset carries) and the disc's world extent (at most radius / sigmaMin).
+    const Vec3& centre = frame.worldOffset;
+    const double absTol =
+        1e-11 * (std::abs(w.x) + std::abs(w.y) + std::abs(w.z) + std::abs(centre.x) +
+                 std::abs(centre.y) + std::abs(centre.z) + radius_ / frame.sigmaMin);
     const double reachWorld =
         depth * s * (c * an + 0.5 * (1.0 + g2) * s) * (1.0 + 1e-12) + absTol * ank;
     const double radius = reachWorld * frame.sigmaMax * (1.0 + 1e-12);
