@@ -35,6 +35,55 @@ ConeClass Disc::classifyRanging(LocalCone& cone, double t0, double t1,
     return classifyWith(cone, [&] { cone.setRange(t0, t1, cone.absTol); }, back);
 }
 
+std::optional<ConeClass> Disc::classifyAcrossScale(const PreparedCone& cone,
+                                                   const LocalFrame& frame) const {
+    if (empty()) return missClass();
+    // The plane z = 0, with its unit normal kept with the frame, through the
+    // disc's centre, the world image of the local origin.
+    const Mat3& a = frame.localFromWorld;
+    const Vec3& n = frame.planeNormal;
+    const Vec3 w = cone.apex - frame.worldOffset;
+    const double c = cone.cosHalf, s = cone.sinHalf;
+    // As in the local fast path below, in world units: h the apex's height
+    // under the plane, a_n = |n.axis|, g^2 the axis' part in the plane.
+    const double h = -glm::dot(n, w), az = glm::dot(n, cone.axis);
+    const Vec3 along = cone.axis - az * n;
+    const double g2 = glm::dot(along, along), k = c * c - g2;
+    if (!(c > 0.0 && h * az > 0.0 && k > 1e-6)) return std::nullopt;
+    const double an = std::abs(az), depth = std::abs(h), ank = an * k;
+    // The axis' crossing times a_n, a vector in the plane, and its local
+    // in-plane coordinates (rows 0 and 1 of localFromWorld).
+    const Vec3 qs = an * w + depth * cone.axis;
+    const double qx = a[0][0] * qs.x + a[1][0] * qs.y + a[2][0] * qs.z;
+    const double qy = a[0][1] * qs.x + a[1][1] * qs.y + a[2][1] * qs.z;
+    const double q2 = (qx * qx + qy * qy) * (k * k);
+    // The world footprint lies within its reach of the crossing; mapped, within
+    // sigmaMax times that. absTol in world units: the coordinates' size (the
+    // apex from the centre, and the centre itself, whose rounding the local
+    // offset carries) and the disc's world extent (at most radius / sigmaMin).
+    const Vec3& centre = frame.worldOffset;
+    const double absTol =
+        1e-11 * (std::abs(w.x) + std::abs(w.y) + std::abs(w.z) + std::abs(centre.x) +
+                 std::abs(centre.y) + std::abs(centre.z) + radius_ / frame.sigmaMin);
+    const double reachWorld =
+        depth * s * (c * an + 0.5 * (1.0 + g2) * s) * (1.0 + 1e-12) + absTol * ank;
+    const double radius = reachWorld * frame.sigmaMax * (1.0 + 1e-12);
+    const double outerFar = ank * radius_ + radius, outerNear = ank * radius_ - radius;
+    const double holeFar = ank * hole_ + radius, holeNear = ank * hole_ - radius;
+    const bool miss = (q2 > outerFar * outerFar) | ((holeNear > 0.0) & (q2 < holeNear * holeNear));
+    const bool full = (outerNear > 0.0) & (q2 < outerNear * outerNear) &
+                      ((hole_ == 0.0) | (q2 > holeFar * holeFar));
+    if (miss) return missClass();
+    if (!full) return std::nullopt;
+    // Every ray crosses the plane within the disc: the world depths against
+    // the world range, padded as a rigid frame's are.
+    LocalCone world;
+    world.setRange(cone.tMin, cone.tMax, absTol);
+    const auto [tNear, tFar] = planeDepths(depth, an, g2, c, s);
+    return RigidBounds{absTol, 1.0, cone.tMin, cone.tMax}(
+        rangedClass(world, false, true, tNear, tFar));
+}
+
 template <class SetRange, class Finish>
 ConeClass Disc::classifyWith(const LocalCone& cone, SetRange&& setRange, Finish&& finish) const {
     if (empty()) return missClass();
@@ -50,6 +99,9 @@ ConeClass Disc::classifyWith(const LocalCone& cone, SetRange&& setRange, Finish&
         // of |q| with their radii. Scaled by an k (an = |axis.z|), q and
         // radius need no division.
         const double an = std::abs(axis.z), depth = std::abs(h), ank = an * k;
+        // The depths' root, taken before the answer's branch so that a
+        // mispredicted Full does not wait for it.
+        const double g = std::sqrt(g2);
         const double qx = an * p.x + depth * axis.x, qy = an * p.y + depth * axis.y;
         const double q2 = (qx * qx + qy * qy) * (k * k);
         const double radius =
@@ -62,32 +114,46 @@ ConeClass Disc::classifyWith(const LocalCone& cone, SetRange&& setRange, Finish&
         if (miss) return missClass();
         // The fast path's Miss needs no range (absTol only): it is set here.
         setRange();
-        const auto [tNear, tFar] = planeDepths(depth, an, g2, c, s);
+        const auto [tNear, tFar] = planeDepthsWithG(depth, an, g2, g, c, s);
         // Whether the range cuts the hits is as good as random from one cone
         // to the next: the answer is selected, not branched to.
         if (full) return finish(rangedClass(cone, false, true, tNear, tFar));
         // A circle near q: the ellipse itself against both circles.
-        const CircleFootprint ellipse(cone, depth, an, k);
-        const CircleRelation outer = ellipse.relation(radius_);
-        const CircleRelation inner =
-            hole_ > 0.0 ? ellipse.relation(hole_) : CircleRelation::EllipseOutside;
-        const bool unsure = (outer == CircleRelation::Unsure) |
-                            ((outer == CircleRelation::EllipseInside) & (inner == CircleRelation::Unsure));
-        if (!unsure) {
-            const bool ellipseMiss = (outer == CircleRelation::EllipseOutside) |
-                                     ((outer == CircleRelation::EllipseInside) &
-                                      (inner == CircleRelation::EllipseInside));
-            const bool ellipseFull = (outer == CircleRelation::EllipseInside) &
-                                     (inner == CircleRelation::EllipseOutside);
-            // The disc's own distance (its bounding ball) against the range, too.
-            const bool outOfRange = ballOutsideRange(cone, Vec3(0.0), radius_);
-            return finish(rangedClass(cone, ellipseMiss | outOfRange, ellipseFull, tNear, tFar));
-        }
+        if (const auto out = bandClass(cone, depth, an, k, tNear, tFar)) return finish(*out);
         // Within a few tolerances of tangency: the exact test below.
     } else {
+        // The axis turned away from the plane (or along it), and so is every
+        // ray (az c > g s: no direction within the half-angle reaches the
+        // plane's side), the apex off the plane: a Miss, as the exact test
+        // would find after its bounding ball and its dot range.
+        const double az2c2 = axis.z * axis.z * c * c;
+        if ((c > 0.0) & (h * axis.z <= 0.0) & (g2 * s * s * (1.0 + 1e-12) < az2c2) &
+            (std::abs(h) > apexInPlaneTolerance(cone)))
+            return missClass();
         setRange();
     }
     return finish(classifyExactly(cone));
+}
+
+std::optional<ConeClass> Disc::bandClass(const LocalCone& cone, double depth, double an, double k,
+                                         double tNear, double tFar) const {
+    const CircleFootprint ellipse(cone, depth, an, k);
+    const CircleRelation outer = ellipse.relation(radius_);
+    // The hole matters only to an ellipse inside the outer circle.
+    const CircleRelation inner = hole_ > 0.0 && outer == CircleRelation::EllipseInside
+                                     ? ellipse.relation(hole_)
+                                     : CircleRelation::EllipseOutside;
+    const bool unsure = (outer == CircleRelation::Unsure) |
+                        ((outer == CircleRelation::EllipseInside) & (inner == CircleRelation::Unsure));
+    if (unsure) return std::nullopt;
+    const bool ellipseMiss = (outer == CircleRelation::EllipseOutside) |
+                             ((outer == CircleRelation::EllipseInside) &
+                              (inner == CircleRelation::EllipseInside));
+    const bool ellipseFull = (outer == CircleRelation::EllipseInside) &
+                             (inner == CircleRelation::EllipseOutside);
+    // The disc's own distance (its bounding ball) against the range, too.
+    const bool outOfRange = ballOutsideRange(cone, Vec3(0.0), radius_);
+    return rangedClass(cone, ellipseMiss | outOfRange, ellipseFull, tNear, tFar);
 }
 
 ConeClass Disc::classifyExactly(const LocalCone& cone) const {

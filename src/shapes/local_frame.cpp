@@ -102,6 +102,8 @@ LocalFrame LocalFrame::make(const Transform& worldFromObject, const Mat3& object
     const Mat3 localGram = glm::transpose(f.localFromWorld) * f.localFromWorld;
     f.gramTrace = localGram[0][0] + localGram[1][1] + localGram[2][2];
     f.gram = localGram;
+    f.planeNormal = glm::normalize(Vec3(f.localFromWorld[0][2], f.localFromWorld[1][2],
+                                        f.localFromWorld[2][2]));
     const double det = glm::determinant(f.localFromWorld);
     f.gramDeterminant = det * det;
     const Vec3 ev = symmetricEigenvalues(localGram);

@@ -108,6 +108,9 @@ ConeClass Primitive::classifyRigid(const PreparedCone& cone) const {
 // the union of those ranges, and a Full answer stands only if its depth bounds
 // fall in every ray's own range (docs/geometry.md).
 ConeClass Primitive::classifyGeneral(const PreparedCone& cone) const {
+    // A disc is flat: its fast path needs no bounding cone (Disc).
+    if (const Disc* disc = std::get_if<Disc>(&shape_))
+        if (const auto out = disc->classifyAcrossScale(cone, frame_)) return *out;
     const Mat3& a = frame_.localFromWorld;
     const Vec3 aAxis = a * cone.axis;
     const double la2 = glm::dot(aAxis, aAxis);
@@ -122,16 +125,18 @@ ConeClass Primitive::classifyGeneral(const PreparedCone& cone) const {
     // computed as a vector, without cancellation), and the Gram matrix of
     // (qu, qv) has trace tr(G) - la^2 - tau^2 and determinant
     // det(A)^2 / la^2, so its larger eigenvalue sigmaPerp^2 needs no basis.
+    // All of it is kept multiplied by la^2 (tau la = |G a - la^2 a|), so that
+    // the chain to the local angle is two roots and a division.
     const Vec3 back = frame_.gram * cone.axis - la2 * cone.axis;  // la A^T axis, off the world axis
-    const double tau2 = glm::dot(back, back) * invLa2;
-    const double tau = std::sqrt(tau2);
+    const double back2 = glm::dot(back, back);                   // (tau la)^2
+    const double tauLa = std::sqrt(back2);
     const double trace = frame_.gramTrace;
-    // Rounding: the trace's difference is off by a few ulps of the trace,
-    // the discriminant by a few ulps of trace * sum; both are padded upward.
-    const double sum = std::max(0.0, trace - la2 - tau2) + 1e-14 * trace;
-    const double product = frame_.gramDeterminant * invLa2;
-    const double spread = std::max(0.0, sum * sum - 4.0 * product) + 1e-13 * trace * sum;
-    const double sigmaPerp2 = 0.5 * (sum + std::sqrt(spread));
+    // Rounding: the trace's difference is off by a few ulps of trace la^2,
+    // the discriminant by a few ulps of trace la^2 sum; both are padded upward.
+    const double sum = std::max(0.0, (trace - la2) * la2 - back2) + 1e-14 * trace * la2;  // la^2 (...)
+    const double product = frame_.gramDeterminant * la2;                                   // la^4 (...)
+    const double spread = std::max(0.0, sum * sum - 4.0 * product) + 1e-13 * trace * la2 * sum;
+    const double sigmaPerp2 = 0.5 * (sum + std::sqrt(spread));  // la^2 sigmaPerp^2
     const double c = cone.cosHalf, s = cone.sinHalf;
 
     LocalCone local;
@@ -139,17 +144,18 @@ ConeClass Primitive::classifyGeneral(const PreparedCone& cone) const {
     local.axis = axis;
     // A direction at angle phi <= theta from the axis maps to one whose
     // tangent from the new axis is at most tan(phi) sigmaPerp / (la - tan(phi) tau),
-    // tl = s sigmaPerp / den: cos = den / |(den, s sigmaPerp)|, sin = tl cos.
+    // tl = s sigmaPerp / den: cos = den / |(den, s sigmaPerp)|, sin = tl cos
+    // (den and s sigmaPerp times la here; the norm's square from sigmaPerp^2,
+    // so that its root does not wait for sigmaPerp's).
+    const double den = c * la2 - s * tauLa;  // la (c la - s tau)
     local.cosHalf = -1.0;
     local.sinHalf = 0.0;
-    if (c > 0.0) {
-        const double den = c * la - s * tau;
-        if (den > 0.0) {
-            const double lift = s * std::sqrt(sigmaPerp2) * (1.0 + 1e-12) + 1e-300 * den;
-            const double inv = 1.0 / std::sqrt(den * den + lift * lift);
-            local.cosHalf = den * inv;
-            local.sinHalf = lift * inv;
-        }
+    if (c > 0.0 && den > 0.0) {
+        const double pad = 1.0 + 1e-12;
+        const double lift = s * std::sqrt(sigmaPerp2) * pad + 1e-300 * den;
+        const double norm = std::sqrt(den * den + (s * s) * sigmaPerp2 * (pad * pad));
+        local.cosHalf = den / norm;
+        local.sinHalf = lift / norm;
     }
     // Bounds on L = |A d| over the cone: |A(d - axis)| <= 2 sin(theta/2) sigmaMax,
     // and 2 sin(theta/2) = s / sqrt((1 + c) / 2) <= s (1 + (sqrt(2) - 1)(1 - c))
@@ -158,7 +164,7 @@ ConeClass Primitive::classifyGeneral(const PreparedCone& cone) const {
                          : c > -1.0 ? s / std::sqrt(0.5 * (1.0 + c))
                                     : 2.0;
     double lMin = std::max(frame_.sigmaMin, la - chord * frame_.sigmaMax);
-    if (c > 0.0) lMin = std::max(lMin, c * la - s * tau);
+    if (c > 0.0) lMin = std::max(lMin, den * invLa);
     const double lMax = std::min(frame_.sigmaMax, la + chord * frame_.sigmaMax);
     // Divided by below; the reciprocals are ready while the shape works.
     const double invLMin = 1.0 / lMin, invLMax = 1.0 / lMax;

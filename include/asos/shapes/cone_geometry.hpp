@@ -245,11 +245,14 @@ struct CrossingDepths {
 // greatest cosine of a ray with the normal (hi = 1 when the normal is in the
 // cone). One division by lo hi = an^2 c^2 - g2 s^2, which needs no root, so
 // that it runs beside the root of g2 rather than after it.
-inline CrossingDepths planeDepths(double depth, double an, double g2, double c, double s) {
+inline CrossingDepths planeDepthsWithG(double depth, double an, double g2, double g, double c,
+                                       double s) {
     const double scaled = depth / (an * an * c * c - g2 * s * s);
-    const double g = std::sqrt(g2);
     const double lo = an * c - g * s, hi = an * c + g * s;
     return {g2 <= s * s ? depth : lo * scaled, hi * scaled};
+}
+inline CrossingDepths planeDepths(double depth, double an, double g2, double c, double s) {
+    return planeDepthsWithG(depth, an, g2, std::sqrt(g2), c, s);
 }
 
 inline CrossingDepths crossingDepths(const LocalCone& cone, const FootprintReach& f) {
@@ -316,7 +319,9 @@ private:
 // The footprint ellipse (on a plane z = zc every ray of the cone crosses, as
 // for a valid FootprintReach) against circles about (0, 0, zc), for footprints small next to the circles (a pixel's
 // cone against a disc): tight bounds from the ellipse's extent along the
-// direction n of its centre m, with no unit vector and no root but two.
+// direction n of its centre m, with no unit vector, no division and no root
+// but two (the major axis' certificates, when those leave a circle
+// undecided, take one more).
 //
 // With e = depth s / k the ellipse is {m + y : y^T M^-1 y <= 1},
 // M = e^2 (k I + a a^T) (a = the axis' (x, y)), whose support along a unit
@@ -331,44 +336,72 @@ enum class CircleRelation { EllipseInside, EllipseOutside, Crossing, Unsure };
 class CircleFootprint {
 public:
     // depth, an, k: as in FootprintReach (the plane z = apex.z + depth sign(axis.z)).
-    CircleFootprint(const LocalCone& cone, double depth, double an, double k) {
+    // Every length is kept multiplied by k (m by k is k p + depth an a, e by k
+    // is depth s), so that no division is needed: a circle's radius is
+    // scaled by k in relation().
+    CircleFootprint(const LocalCone& cone, double depth, double an, double k) : k_(k) {
         const Vec3& p = cone.apex;
         const Vec2 a(cone.axis.x, cone.axis.y);
         const double c = cone.cosHalf;
-        const double invK = 1.0 / k;
-        const double t = depth * an * invK;
-        const Vec2 m(p.x + t * a.x, p.y + t * a.y);
-        const double e = depth * cone.sinHalf * invK, e2 = e * e;
+        const double ta = depth * an;
+        const Vec2 m(k * p.x + ta * a.x, k * p.y + ta * a.y);  // k m
+        const double e = depth * cone.sinHalf, e2 = e * e;        // k e
         d2_ = glm::dot(m, m);
         const double mu = glm::dot(m, a);
+        const double sd2 = e2 * (k * d2_ + mu * mu);  // (k^2 S d)^2
         d_ = std::sqrt(d2_);
-        sd_ = std::sqrt(e2 * (k * d2_ + mu * mu));  // S d
-        across2_ = e2 * (c * c * d2_ - mu * mu);      // S'^2 d^2
-        // m - M n / S = m - e^2 (k m + (m.a) a) / (S d).
-        const double w = e2 / sd_;
-        const Vec2 near = m - w * (k * m + mu * a);
+        sd_ = std::sqrt(sd2);                         // k^2 S d
+        across2_ = e2 * (c * c * d2_ - mu * mu);      // k^4 S'^2 d^2
+        // m - M n / S = m - e^2 (k m + (m.a) a) / (S d): times S d k^2 (in
+        // the scaled terms), k^2 S d m - e^2 (k m + (m.a) a), no division.
+        const Vec2 near = sd_ * m - e2 * (k * m + mu * a);
         near2_ = glm::dot(near, near);
+        nearLimit_ = sd2;  // near2_ < inner^2 sd2 puts the point inside
         // The origin is in the ellipse: m^T M^-1 m <= 1, M^-1 = (I - a a^T / c^2) / (e^2 k).
         originIn_ = across2_ <= e2 * e2 * k * c * c;
-        tolBase_ = cone.absTol + 1e-12 * (d_ + e * c);
+        tolBase_ = cone.absTol * k + 1e-12 * (d_ + e * c);
+        mu_ = mu;
+        g2_ = glm::dot(a, a);
+        ec_ = e * c;
     }
 
     CircleRelation relation(double rho) const {
-        const double tol = tolBase_ + 1e-12 * rho;
-        const double outer = rho + tol, inner = rho - tol;
+        const double kRho = k_ * rho;
+        const double tol = tolBase_ + 1e-12 * kRho;
+        const double outer = kRho + tol, inner = kRho - tol;
         // Multiplied by d: d - S > outer, and so on.
         const double lowD = d2_ - sd_, highD = d2_ + sd_;
         if (lowD > outer * d_) return CircleRelation::EllipseOutside;
         if (inner > 0.0 && highD * highD + across2_ < inner * inner * d2_)
             return CircleRelation::EllipseInside;
         const bool pointOut = highD > outer * d_;
-        const bool pointIn =
-            inner > 0.0 && (originIn_ || near2_ < inner * inner || d2_ < inner * inner);
-        return pointOut && pointIn ? CircleRelation::Crossing : CircleRelation::Unsure;
+        const bool pointIn = inner > 0.0 && (originIn_ || near2_ < inner * inner * nearLimit_ ||
+                                             d2_ < inner * inner);
+        if (pointOut && pointIn) return CircleRelation::Crossing;
+        return inner > 0.0 && majorAxisCrosses(outer, inner) ? CircleRelation::Crossing
+                                                             : CircleRelation::Unsure;
     }
 
 private:
-    double d2_, d_, sd_, across2_, near2_, tolBase_;
+    // The major axis, the segment m + u a / g with |u| <= e c (g = |a|), lies
+    // in the ellipse: its point nearest the origin inside the circle and an
+    // end outside it prove a crossing. Times g^2, with T = u g:
+    // g^2 |m + u a / g|^2 = g^2 d^2 + 2 T (m.a) + T^2, no division.
+    // Rare (undecided by the cheap tests): kept out of line.
+    [[gnu::noinline, gnu::cold]] bool majorAxisCrosses(double outer, double inner) const {
+        const double g = std::sqrt(g2_), reach = ec_ * g;
+        const double nearest = std::clamp(-mu_, -reach, reach);
+        const double base = g2_ * d2_;
+        const bool in = base + nearest * (2.0 * mu_ + nearest) < inner * inner * g2_;
+        // The end farther from the origin: T = reach sign(m.a).
+        const bool out = base + reach * (2.0 * std::abs(mu_) + reach) > outer * outer * g2_;
+        const bool pointOut = out || d2_ + sd_ > outer * d_;
+        const bool pointIn = in || originIn_ || near2_ < inner * inner * nearLimit_ ||
+                             d2_ < inner * inner;
+        return pointOut && pointIn;
+    }
+
+    double k_, d2_, d_, sd_, across2_, near2_, nearLimit_, tolBase_, mu_, g2_, ec_;
     bool originIn_;
 };
 

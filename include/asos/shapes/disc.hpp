@@ -8,6 +8,7 @@
 #include "asos/geometry/cone.hpp"
 #include "asos/geometry/ray.hpp"
 #include "asos/shapes/local_cone.hpp"
+#include "asos/shapes/local_frame.hpp"
 #include "asos/shapes/local_hit.hpp"
 
 namespace asos {
@@ -42,9 +43,23 @@ public:
     ConeClass classifyRanging(LocalCone& cone, double t0, double t1,
                               const RigidBounds& back) const;
 
+    // Under a non-uniform frame (Primitive::classifyGeneral): the fast path
+    // in world terms, the cone as it is and the disc's plane mapped, its
+    // in-plane reach scaled by the frame's largest singular value; a Miss or
+    // a Full in world units, or nullopt for the bounding-cone path
+    // (docs/geometry.md, "Disc").
+    std::optional<ConeClass> classifyAcrossScale(const PreparedCone& cone,
+                                                 const LocalFrame& frame) const;
+
 private:
     template <class SetRange, class Finish>
     ConeClass classifyWith(const LocalCone& cone, SetRange&& setRange, Finish&& finish) const;
+    // The fast path's cones near a circle: the footprint ellipse against both
+    // circles; nullopt within a few tolerances of tangency. Out of line, so
+    // that the commoner Miss and Full answers do not carry its registers.
+    [[gnu::noinline]] std::optional<ConeClass> bandClass(const LocalCone& cone, double depth,
+                                                         double an, double k, double tNear,
+                                                         double tFar) const;
     // Both circles against the cone (the fast path's fallback near tangency).
     ConeClass classifyExactly(const LocalCone& cone) const;
 

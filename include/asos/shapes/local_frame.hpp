@@ -35,6 +35,9 @@ struct LocalFrame {
     double gramTrace = 3.0;
     double gramDeterminant = 1.0;
     Mat3 gram{1.0};  // General: G itself
+    // General: the unit world normal of the local plane z = 0 (row 2 of
+    // localFromWorld, normalised), for flat shapes classified in world terms.
+    Vec3 planeNormal{0.0, 0.0, 1.0};
     Mat3 objectFromLocal{1.0};  // object = objectFromLocal * local + objectOffset
     Vec3 objectOffset{0.0};
 
