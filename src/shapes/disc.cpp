@@ -68,11 +68,7 @@ std::optional<ConeClass> Disc::classifyAcrossScale(const PreparedCone& cone,
     const double reachWorld =
         depth * s * (c * an + 0.5 * (1.0 + g2) * s) * (1.0 + 1e-12) + absTol * ank;
     const double radius = reachWorld * frame.sigmaMax * (1.0 + 1e-12);
-    const double outerFar = ank * radius_ + radius, outerNear = ank * radius_ - radius;
-    const double holeFar = ank * hole_ + radius, holeNear = ank * hole_ - radius;
-    const bool miss = (q2 > outerFar * outerFar) | ((holeNear > 0.0) & (q2 < holeNear * holeNear));
-    const bool full = (outerNear > 0.0) & (q2 < outerNear * outerNear) &
-                      ((hole_ == 0.0) | (q2 > holeFar * holeFar));
+    const auto [miss, full] = circlesAgainstReach(q2, ank, radius);
     if (miss) return missClass();
     if (!full) return std::nullopt;
     // Every ray crosses the plane within the disc: the world depths against
@@ -106,11 +102,7 @@ ConeClass Disc::classifyWith(const LocalCone& cone, SetRange&& setRange, Finish&
         const double q2 = (qx * qx + qy * qy) * (k * k);
         const double radius =
             depth * s * (c * an + 0.5 * (1.0 + g2) * s) * (1.0 + 1e-12) + cone.absTol * ank;
-        const double outerFar = ank * radius_ + radius, outerNear = ank * radius_ - radius;
-        const double holeFar = ank * hole_ + radius, holeNear = ank * hole_ - radius;
-        const bool miss = (q2 > outerFar * outerFar) | ((holeNear > 0.0) & (q2 < holeNear * holeNear));
-        const bool full = (outerNear > 0.0) & (q2 < outerNear * outerNear) &
-                          ((hole_ == 0.0) | (q2 > holeFar * holeFar));
+        const auto [miss, full] = circlesAgainstReach(q2, ank, radius);
         if (miss) return missClass();
         // The fast path's Miss needs no range (absTol only): it is set here.
         setRange();

@@ -52,6 +52,21 @@ public:
                                                  const LocalFrame& frame) const;
 
 private:
+    struct ReachAnswer {
+        bool miss, full;
+    };
+    // The fast paths' answer: every point of the footprint lies within
+    // `radius` of the axis' crossing q (|q|^2 = q2), all scaled by `ank`:
+    // Miss when that reach stays off the annulus, Full when inside it.
+    ReachAnswer circlesAgainstReach(double q2, double ank, double radius) const {
+        const double outerFar = ank * radius_ + radius, outerNear = ank * radius_ - radius;
+        const double holeFar = ank * hole_ + radius, holeNear = ank * hole_ - radius;
+        const bool miss = (q2 > outerFar * outerFar) | ((holeNear > 0.0) & (q2 < holeNear * holeNear));
+        const bool full = (outerNear > 0.0) & (q2 < outerNear * outerNear) &
+                          ((hole_ == 0.0) | (q2 > holeFar * holeFar));
+        return {miss, full};
+    }
+
     template <class SetRange, class Finish>
     ConeClass classifyWith(const LocalCone& cone, SetRange&& setRange, Finish&& finish) const;
     // The fast path's cones near a circle: the footprint ellipse against both
