@@ -65,8 +65,7 @@ std::optional<ConeClass> Disc::classifyAcrossScale(const PreparedCone& cone,
     const double absTol =
         1e-11 * (std::abs(w.x) + std::abs(w.y) + std::abs(w.z) + std::abs(centre.x) +
                  std::abs(centre.y) + std::abs(centre.z) + radius_ / frame.sigmaMin);
-    const double reachWorld =
-        depth * s * (c * an + 0.5 * (1.0 + g2) * s) * (1.0 + 1e-12) + absTol * ank;
+    const double reachWorld = scaledReach(depth, an, g2, c, s, absTol, ank);
     const double radius = reachWorld * frame.sigmaMax * (1.0 + 1e-12);
     const auto [miss, full] = circlesAgainstReach(q2, ank, radius);
     if (miss) return missClass();
@@ -100,8 +99,7 @@ ConeClass Disc::classifyWith(const LocalCone& cone, SetRange&& setRange, Finish&
         const double g = std::sqrt(g2);
         const double qx = an * p.x + depth * axis.x, qy = an * p.y + depth * axis.y;
         const double q2 = (qx * qx + qy * qy) * (k * k);
-        const double radius =
-            depth * s * (c * an + 0.5 * (1.0 + g2) * s) * (1.0 + 1e-12) + cone.absTol * ank;
+        const double radius = scaledReach(depth, an, g2, c, s, cone.absTol, ank);
         const auto [miss, full] = circlesAgainstReach(q2, ank, radius);
         if (miss) return missClass();
         // The fast path's Miss needs no range (absTol only): it is set here.

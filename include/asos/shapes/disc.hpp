@@ -52,6 +52,13 @@ public:
                                                  const LocalFrame& frame) const;
 
 private:
+    // The fast paths' reach, scaled by an k as their crossing is: every point
+    // of the footprint lies within it of the axis' crossing (footprintReach's
+    // bound, without its divisions), padded by absTol.
+    static double scaledReach(double depth, double an, double g2, double c, double s,
+                              double absTol, double ank) {
+        return depth * s * (c * an + 0.5 * (1.0 + g2) * s) * (1.0 + 1e-12) + absTol * ank;
+    }
     struct ReachAnswer {
         bool miss, full;
     };
