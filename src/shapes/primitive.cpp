@@ -111,6 +111,9 @@ ConeClass Primitive::classifyGeneral(const PreparedCone& cone) const {
     // A disc is flat: its fast path needs no bounding cone (Disc).
     if (const Disc* disc = std::get_if<Disc>(&shape_))
         if (const auto out = disc->classifyAcrossScale(cone, frame_)) return *out;
+    // An ellipsoid's commonest answers need no bounding cone either (Sphere).
+    if (const Sphere* sphere = std::get_if<Sphere>(&shape_))
+        if (const auto out = sphere->classifyAcrossScale(cone, frame_)) return *out;
     const Mat3& a = frame_.localFromWorld;
     const Vec3 aAxis = a * cone.axis;
     const double la2 = glm::dot(aAxis, aAxis);

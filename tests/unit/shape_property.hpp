@@ -80,8 +80,10 @@ struct TransformCase {
     std::string text;
 };
 
-inline TransformCase randomTransform(Rng& rng, double spread) {
-    const int kind = rng.index(6);
+// kinds: 0 identity, 1 translate, 2 rotate, 3 uniform scale, 4 non-uniform
+// scale, 5 matrix; `firstKind` limits the draw to kinds firstKind..5.
+inline TransformCase randomTransform(Rng& rng, double spread, int firstKind = 0) {
+    const int kind = firstKind + rng.index(6 - firstKind);
     const Vec3 offset = spread * Vec3(rng.uniform(-1, 1), rng.uniform(-1, 1), rng.uniform(-1, 1));
     auto rotation = [&] {
         if (rng.chance(0.3))
@@ -186,7 +188,7 @@ struct PropertyStats {
 // Runs `count` random cases of one primitive; returns the statistics.
 inline PropertyStats runConeProperty(const char* name, std::uint64_t baseSeed, int count,
                                      const std::function<ShapeCase(Rng&)>& makeShape,
-                                     const ProbeDensity& density = {}) {
+                                     const ProbeDensity& density = {}, int firstTransformKind = 0) {
     std::uint64_t only = 0;
     bool replay = false;
     if (const char* env = std::getenv("ASOS_SHAPE_REPLAY")) {
@@ -203,7 +205,7 @@ inline PropertyStats runConeProperty(const char* name, std::uint64_t baseSeed, i
         const std::uint64_t seed = replay ? only : splitmix(baseSeed + static_cast<std::uint64_t>(i));
         Rng rng(seed);
         const ShapeCase shape = makeShape(rng);
-        const TransformCase transform = randomTransform(rng, 5.0 * shape.size);
+        const TransformCase transform = randomTransform(rng, 5.0 * shape.size, firstTransformKind);
         const Primitive prim = Primitive::make(shape.shape, transform.worldFromObject);
         const Vec3 surface = transform.worldFromObject.point(shape.surfacePoint(rng));
         const Bounds3 bounds = prim.bounded() ? prim.worldBounds() : Bounds3{};

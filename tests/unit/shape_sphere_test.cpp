@@ -148,20 +148,94 @@ TEST_CASE("Sphere degenerate input has defined answers", "[shapes][sphere]") {
     CHECK_FALSE(std::isnan(bad.tNear + bad.tFar));
 }
 
+namespace {
+shapetest::ShapeCase randomSphere(shapetest::Rng& rng) {
+    using namespace shapetest;
+    ShapeCase sc;
+    const Vec3 center(rng.uniform(-2, 2), rng.uniform(-2, 2), rng.uniform(-2, 2));
+    const double radius = rng.logUniform(-1.0, 1.0);
+    sc.shape = SphereShape{center, radius};
+    sc.size = radius;
+    sc.surfacePoint = [=](Rng& r) { return center + radius * r.unitVector(); };
+    sc.text = "sphere { " + fmt(center) + ", " + fmt(radius) + " }";
+    return sc;
+}
+}  // namespace
+
 TEST_CASE("Sphere cone classification is conservative (property)", "[shapes][sphere][property]") {
     using namespace shapetest;
-    const PropertyStats stats = runConeProperty("sphere", 0x5b11e7e5ull, 100000, [](Rng& rng) {
-        ShapeCase sc;
-        const Vec3 center(rng.uniform(-2, 2), rng.uniform(-2, 2), rng.uniform(-2, 2));
-        const double radius = rng.logUniform(-1.0, 1.0);
-        sc.shape = SphereShape{center, radius};
-        sc.size = radius;
-        sc.surfacePoint = [=](Rng& r) { return center + radius * r.unitVector(); };
-        sc.text = "sphere { " + fmt(center) + ", " + fmt(radius) + " }";
-        return sc;
-    });
+    const PropertyStats stats = runConeProperty("sphere", 0x5b11e7e5ull, 100000, randomSphere);
     CHECK(stats.failures == 0);
     CHECK(stats.full > 0);
     CHECK(stats.marginal > 0);
     CHECK(stats.miss > 0);
+}
+
+// Ellipsoids alone (non-uniform scales and general matrices), where
+// Sphere::classifyAcrossScale answers in world terms before the bounding-cone
+// path: its Miss and Full must stay conservative too.
+TEST_CASE("Sphere cone classification under non-uniform scales is conservative (property)",
+          "[shapes][sphere][property]") {
+    using namespace shapetest;
+    const PropertyStats stats =
+        runConeProperty("ellipsoid", 0xe111b501ull, 100000, randomSphere, ProbeDensity{}, 4);
+    CHECK(stats.failures == 0);
+    CHECK(stats.full > 0);
+    CHECK(stats.marginal > 0);
+    CHECK(stats.miss > 0);
+}
+
+TEST_CASE("Sphere classification across a scale: known answers", "[shapes][sphere]") {
+    // The ellipsoid x^2/4 + y^2 + 4 z^2 = 1 (a unit sphere scaled <2, 1, 0.5>),
+    // rotated about z by 30 degrees and moved to <1, 2, 3>.
+    const Transform t = Transform::translate({1, 2, 3}) * Transform::rotateDegrees({0, 0, 30}) *
+                        Transform::scale({2, 1, 0.5});
+    const LocalFrame frame = LocalFrame::make(t, Mat3(1.0), Vec3(0.0));
+    REQUIRE(frame.kind == LocalFrame::Kind::General);
+    const Sphere sphere(1.0);
+    const Vec3 centre(1, 2, 3);
+    // Head-on along -z onto the pole at z = 3.5: Full, with depth bounds
+    // around the exact 6.5 within the pixel cone's spread.
+    Cone cone{centre + Vec3(0, 0, 10), {0, 0, -1}, 1e-3};
+    auto out = sphere.classifyAcrossScale(PreparedCone(cone), frame);
+    REQUIRE(out);
+    CHECK(out->coverage == Coverage::Full);
+    CHECK(out->tNear <= 9.5);
+    CHECK(out->tFar >= 9.5);
+    CHECK(out->tFar - out->tNear < 1e-3);
+    // The same cone ending before the pole: Miss; ending inside it: undecided.
+    cone.tMax = 9.0;
+    out = sphere.classifyAcrossScale(PreparedCone(cone), frame);
+    REQUIRE(out);
+    CHECK(out->coverage == Coverage::Miss);
+    cone.tMax = 9.5;
+    CHECK_FALSE(sphere.classifyAcrossScale(PreparedCone(cone), frame));
+    // Beside the ellipsoid: the long axis reaches 2 along the rotated x, so a
+    // cone 2.2 away along it misses and one 1.8 away is Full; at 2 it is on
+    // the silhouette: Marginal, its bounds holding the grazing hit at t = 10.
+    const Vec3 longAxis(std::cos(kPi / 6), std::sin(kPi / 6), 0.0);
+    for (const double along : {2.2, 1.8, 2.0}) {
+        const Cone beside{centre + along * longAxis + Vec3(0, 0, 10), {0, 0, -1}, 1e-3};
+        const auto answer = sphere.classifyAcrossScale(PreparedCone(beside), frame);
+        if (along == 2.2) {
+            REQUIRE(answer);
+            CHECK(answer->coverage == Coverage::Miss);
+        } else if (along == 1.8) {
+            REQUIRE(answer);
+            CHECK(answer->coverage == Coverage::Full);
+        } else {
+            REQUIRE(answer);
+            CHECK(answer->coverage == Coverage::Marginal);
+            CHECK(answer->tNear <= 10.0);
+            CHECK(answer->tFar >= 10.0);
+            CHECK(answer->tFar - answer->tNear < 0.1);
+        }
+    }
+    // A wide cone holding the whole ellipsoid: Marginal (its axis hits, and
+    // it is wider than the ellipsoid's bounding ball seen from the apex).
+    const auto wide = sphere.classifyAcrossScale(PreparedCone(Cone{centre + Vec3(0, 0, 10), {0, 0, -1}, 0.5}), frame);
+    REQUIRE(wide);
+    CHECK(wide->coverage == Coverage::Marginal);
+    // The apex inside: left to the local path.
+    CHECK_FALSE(sphere.classifyAcrossScale(PreparedCone(Cone{centre, {0, 0, 1}, 1e-3}), frame));
 }

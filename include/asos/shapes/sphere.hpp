@@ -9,6 +9,7 @@
 #include "asos/geometry/cone.hpp"
 #include "asos/geometry/ray.hpp"
 #include "asos/shapes/local_cone.hpp"
+#include "asos/shapes/local_frame.hpp"
 #include "asos/shapes/local_hit.hpp"
 
 namespace asos {
@@ -84,6 +85,13 @@ public:
     // Full iff the cone lies inside the sphere's tangent cone (seen from
     // outside) and every front hit is in range; see docs/geometry.md.
     ConeClass classify(const LocalCone& cone) const;
+    // Under a non-uniform scale or shear (an ellipsoid in the world), the
+    // commonest answers without carrying the cone into the local frame: Miss
+    // or Full for a world cone whose apex is outside, from bounds on u.d and
+    // |A d| over the cone (A = localFromWorld); nullopt where those bounds
+    // cannot decide, for the bounding-cone path. See docs/geometry.md.
+    std::optional<ConeClass> classifyAcrossScale(const PreparedCone& cone,
+                                                 const LocalFrame& frame) const;
 
 private:
     double radius_;
