@@ -22,55 +22,11 @@ Bounds3 Sphere::worldBounds(const Mat3& m, const Vec3& offset) const {
     return {offset - half, offset + half};
 }
 
-ConeClass Sphere::classify(const LocalCone& cone) const {
-    if (!(radius_ > 0.0)) return missClass();
+ConeClass Sphere::classifyApexNear(const LocalCone& cone, double d2, double p2, double sigma,
+                                   double band) const {
     const double r = radius_, r2 = r * r;
     const Vec3 w = -cone.apex;  // centre - apex
-    const double d2 = glm::dot(w, w);
     const double c = cone.cosHalf, s = cone.sinHalf;
-    // How far d2 - r2 may be from its sign: the apex is "on" the sphere within.
-    const double band = 4e-15 * (d2 + r2) + 2.0 * r * cone.absTol;
-    const double sigma = glm::dot(w, cone.axis);
-    const Vec3 perp = w - sigma * cone.axis;
-    const double p2 = glm::dot(perp, perp);
-
-    if (d2 - r2 > band) {
-        // Apex outside. The Full test comes first, so that the commonest
-        // answer skips the miss tests: a ball that covers the cone cannot lie
-        // outside it, and the Full test is conservative on its own.
-        const double t2 = d2 - r2;
-        // Full: angle(axis, w) + theta <= alpha (the tangent half-angle), i.e.
-        // sin(alpha - beta) = (r sigma - T |perp|) / d2 >= sin(theta), squared.
-        const double lead = r * sigma - s * d2;
-        if (c > 0.0 && lead >= 0.0 && lead * lead >= t2 * p2) {
-            // Front hits t(x) = T^2 / (x + sqrt(x^2 - T^2)) decrease in
-            // x = w.d, which ranges over [D cos(beta + theta), D cos(beta - theta)].
-            const double dp = std::sqrt(p2);
-            const double xLo = sigma * c - dp * s;
-            const double xHi = s * sigma >= c * dp ? std::sqrt(d2) : sigma * c + dp * s;
-            auto front = [&](double x) { return t2 / (x + std::sqrt(std::max(0.0, x * x - t2))); };
-            const double tNear = front(xHi), tFar = front(xLo);
-            if (cone.surelyWithin(tNear, tFar)) return fullClass(tNear, tFar);
-        }
-        // Angular miss: the ball lies outside the cone.
-        if (c >= 0.0) {
-            if (sigma < 0.0 && sigma * sigma * c * c > p2 * s * s) return missClass();
-            const double rhs = sigma * s + r;
-            if (rhs < 0.0 || p2 * c * c > rhs * rhs) return missClass();
-        } else {
-            const double dp = std::sqrt(p2);
-            if (s * sigma < c * dp && (sigma * c + dp * s < 0.0 || dp * c - sigma * s > r))
-                return missClass();
-        }
-        // The silhouette is inside the cone (or the range cuts the hits).
-        // Every front hit lies in [D - r, T]; a ray whose front hit is before
-        // the range may still hit the back, up to D + r.
-        const double dist = std::sqrt(d2), tangent = std::sqrt(t2);
-        const double nearest = t2 / (dist + r);  // dist - r
-        if (cone.surelyAfter(nearest) || cone.surelyBefore(dist + r)) return missClass();
-        return marginalClass(cone, nearest, nearest >= cone.tMinInner ? tangent : dist + r);
-    }
-
     const double dist = std::sqrt(d2);
     const double dp = std::sqrt(p2);
     if (r2 - d2 > band) {
@@ -118,60 +74,57 @@ std::optional<ConeClass> Sphere::classifyAcrossScale(const PreparedCone& cone,
     if (!(radius_ > 0.0)) return missClass();
     const double c = cone.cosHalf, s = cone.sinHalf;
     if (!(c > 0.0 && s > 0.0)) return std::nullopt;
-    const Mat3& m = frame.localFromWorld;
-    const Mat3& gm = frame.gram;
-    const Vec3& o = cone.apex;
-    const Vec3& a = cone.axis;
-    const Vec3& off = frame.localOffset;
-    // The local apex p, written out (glm's product is a call).
-    const Vec3 p(m[0][0] * o.x + m[1][0] * o.y + m[2][0] * o.z + off.x,
-                 m[0][1] * o.x + m[1][1] * o.y + m[2][1] * o.z + off.y,
-                 m[0][2] * o.x + m[1][2] * o.y + m[2][2] * o.z + off.z);
-    // A world ray o + t d (d unit) is the local ray p + t A d with the same t
-    // (A = localFromWorld): it meets the sphere where g t^2 - 2 x t + h = 0,
-    // with x = u.d for the world vector u = A^T (-p), g = d^T G d (G = A^T A)
-    // and h = |p|^2 - r^2. Its line meets the sphere iff
+    // In world terms, with the apex w from the centre and the Gram matrix
+    // G = A^T A of A = localFromWorld (symmetric; written out, as glm's
+    // product is a call): a world ray apex + t d (d unit) is the local ray
+    // A w + t A d, with the same t, so it meets the sphere where
+    // g t^2 - 2 x t + h = 0, with x = u.d for u = -G w, g = d^T G d and
+    // h = w^T G w - r^2. Its line meets the sphere iff
     // f(d) = x^2 - h g = d^T (u u^T - h G) d >= 0.
-    const Vec3 u(-(m[0][0] * p.x + m[0][1] * p.y + m[0][2] * p.z), -(m[1][0] * p.x + m[1][1] * p.y + m[1][2] * p.z),
-                 -(m[2][0] * p.x + m[2][1] * p.y + m[2][2] * p.z));
+    const Mat3& gm = frame.gram;
+    const Vec3& a = cone.axis;
+    const Vec3& centre = frame.worldOffset;
+    const Vec3 w = cone.apex - centre;
+    const Vec3 u(-(gm[0][0] * w.x + gm[1][0] * w.y + gm[2][0] * w.z), -(gm[0][1] * w.x + gm[1][1] * w.y + gm[2][1] * w.z),
+                 -(gm[0][2] * w.x + gm[1][2] * w.y + gm[2][2] * w.z));
     const Vec3 ga(gm[0][0] * a.x + gm[1][0] * a.y + gm[2][0] * a.z, gm[0][1] * a.x + gm[1][1] * a.y + gm[2][1] * a.z,
                   gm[0][2] * a.x + gm[1][2] * a.y + gm[2][2] * a.z);
-    const double r = radius_, r2 = r * r;
-    const double d2 = glm::dot(p, p), h = d2 - r2;
-    const double l1p = std::abs(p.x) + std::abs(p.y) + std::abs(p.z);
-    const double l1u = std::abs(u.x) + std::abs(u.y) + std::abs(u.z);
-    // p is known to absTol (classifyGeneral's tolerance), so h to `band` (its
-    // rounding and that tolerance, |p| <= l1p) and u to ue (A^T's rounding
-    // and the tolerance carried by it).
-    const double absTol = 1e-11 * (l1p + r);
-    const double band = 4e-15 * (d2 + r2) + absTol * (2.0 * (l1p + r) + absTol);
-    const double hLo = h - band, hHi = h + band;
-    if (!(hLo > 0.0)) return std::nullopt;  // apex inside or on the sphere: the local path
-    const double ue = frame.sigmaMax * (2e-15 * l1p + absTol) + 1e-15 * l1u;
+    const double r2 = radius_ * radius_;
+    const double uw = -glm::dot(u, w), h = uw - r2;
     const double ua = glm::dot(u, a), la2 = glm::dot(a, ga);
     const Vec3 uAcross = u - ua * a;  // as a vector: no cancellation near the axis
     const double uPerp2 = glm::dot(uAcross, uAcross), u2 = glm::dot(u, u);
     // f along the axis, and its gradient's part across the axis: Q a = u ua - h G a.
     const double fa = ua * ua - h * la2;
-    const Vec3 qa = ua * u - h * ga;
-    const Vec3 qPerp = qa - fa * a;
+    const Vec3 qPerp = ua * u - h * ga - fa * a;
+    const double qPerp2 = glm::dot(qPerp, qPerp);
+    // Tolerances. The apex and the centre are known to tolW (their
+    // coordinates' rounding, and the frame's offsets', far below it); so u to
+    // ue, h to `band`, f(a) to fTol and |Q a| to qTol, rounding included.
     const double sigma2 = frame.sigmaMax * frame.sigmaMax;
-    const double fTol = 2.0 * std::abs(ua) * ue + ue * ue + band * la2 + 1e-15 * (u2 + std::abs(h) * la2);
-    const double qTol = 2.0 * l1u * ue + band * sigma2 + 1e-15 * (u2 + std::abs(h) * sigma2);
+    const double tolW = 1e-11 * (std::abs(w.x) + std::abs(w.y) + std::abs(w.z) + std::abs(centre.x) +
+                                 std::abs(centre.y) + std::abs(centre.z));
+    const double l1u = std::abs(u.x) + std::abs(u.y) + std::abs(u.z);
+    const double ue = 1.001 * sigma2 * tolW;
+    const double band = 1e-15 * (uw + r2) + tolW * (2.0 * l1u + sigma2 * tolW);
+    const double hLo = h - band, hHi = h + band;
+    if (!(hLo > 0.0)) return std::nullopt;  // apex inside or on the sphere: the local path
+    const double fTol = (2.0 * l1u + ue) * ue + band * la2 + 1e-15 * (u2 + h * la2);
+    const double qTol = (2.0 * l1u + ue) * ue + band * sigma2 + 1e-15 * (u2 + h * sigma2);
     // For d = a + e in the cone: e.a in [c - 1, 0] and |e across a| <= s, so
     // f(d) = f(a) + 2 Q a.e + e^T Q e lies within `lin` of f(a) and, Q being
     // u u^T - h G, e^T Q e between -h e^T G e and (u.e)^2. With (x + y)^2 <=
     // (1 + s) x^2 + (1 + 1/s) y^2 for the parts across and along the axis:
     // (u.e)^2 <= (1 + s) s^2 |u across a|^2 + (1 + 1/s)(1 - c)^2 ua^2, and
     // e^T G e the same with G's largest value across the axis (at most its
-    // trace there, tr G - a.Ga, and at most sigmaMax^2) and a.Ga.
-    const double qPerpLen = std::sqrt(glm::dot(qPerp, qPerp)) * (1.0 + 1e-14) + qTol;
-    const double lin = 2.0 * (qPerpLen * s + (std::abs(fa) + fTol) * (1.0 - c)) + fTol;
+    // trace there, tr G - a.Ga, and at most sigmaMax^2) and a.Ga. And
     // (1 - c) / s <= s for c >= 0: no division.
     const double along = (1.0 - c) * ((1.0 - c) + s), across = (1.0 + s) * s * s;
     const double gAcross = std::min(sigma2, frame.gramTrace - la2 + 1e-14 * frame.gramTrace);
-    const double uTol = 2.0 * l1u * ue + ue * ue;
-    const double fHi = fa + lin + ((uPerp2 + uTol) * across + (ua * ua + uTol) * along) * (1.0 + 1e-14);
+    const double uTol = (2.0 * l1u + ue) * ue;
+    const double qPerpLen = std::sqrt(qPerp2) + qTol;
+    const double lin = 2.0 * (qPerpLen * s + (std::abs(fa) + fTol) * (1.0 - c)) + fTol;
+    const double fHi = (fa + lin + (uPerp2 + uTol) * across + (ua * ua + uTol) * along) * (1.0 + 1e-14);
     const double fLo = fa - lin - hHi * (gAcross * across + la2 * along) * (1.0 + 1e-13);
     // Miss: no ray's line meets the sphere, or every ray leaves the apex away
     // from it (x < 0 over the cone: both roots negative).
@@ -185,9 +138,9 @@ std::optional<ConeClass> Sphere::classifyAcrossScale(const PreparedCone& cone,
     const double xMax = (s * ua >= c * uPerp ? uLen : ua * c + uPerp * s) + ue;
     const double tNear = hLo / (xMax + std::sqrt(fHi)) * (1.0 - 1e-12);
     LocalCone world;
-    world.setRange(cone.tMin, cone.tMax, absTol / frame.sigmaMin);
+    world.setRange(cone.tMin, cone.tMax, tolW);
     if (world.surelyAfter(tNear)) return missClass();
-    const RigidBounds back{world.absTol, 1.0, cone.tMin, cone.tMax};
+    const RigidBounds back{tolW, 1.0, cone.tMin, cone.tMax};
     if (fLo >= 0.0) {
         // Full: every ray's line meets the sphere, and every front hit is in range.
         const double tFar = hHi / (xMin + std::sqrt(fLo)) * (1.0 + 1e-12);
@@ -200,9 +153,8 @@ std::optional<ConeClass> Sphere::classifyAcrossScale(const PreparedCone& cone,
     // r / sigmaMin about the centre) seen from the apex. Marginal then, when
     // every front hit (at most h / x, where a ray grazes) is in range, so
     // that it is each ray's first.
-    const Vec3 toCentre = frame.worldOffset - o;
     const double ballSpan = s * frame.sigmaMin;
-    const bool wider = ballSpan * ballSpan * glm::dot(toCentre, toCentre) > r2 * (1.0 + 1e-12);
+    const bool wider = ballSpan * ballSpan * glm::dot(w, w) > r2 * (1.0 + 1e-12);
     if (!(s < kAcrossScaleMarginalSin || (fa > fTol && wider))) return std::nullopt;
     const double tFar = hHi / xMin * (1.0 + 1e-12);
     if (!world.surelyWithin(tNear, tFar)) return std::nullopt;

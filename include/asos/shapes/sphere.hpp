@@ -8,6 +8,7 @@
 #include "asos/geometry/bounds.hpp"
 #include "asos/geometry/cone.hpp"
 #include "asos/geometry/ray.hpp"
+#include "asos/shapes/cone_geometry.hpp"
 #include "asos/shapes/local_cone.hpp"
 #include "asos/shapes/local_frame.hpp"
 #include "asos/shapes/local_hit.hpp"
@@ -82,9 +83,7 @@ public:
         return roots.real && ((roots.near >= tMin && roots.near <= tMax) ||
                               (roots.far >= tMin && roots.far <= tMax));
     }
-    // Full iff the cone lies inside the sphere's tangent cone (seen from
-    // outside) and every front hit is in range; see docs/geometry.md.
-    ConeClass classify(const LocalCone& cone) const;
+    ConeClass classify(const LocalCone& cone) const;  // inline, below
     // Under a non-uniform scale or shear (an ellipsoid in the world), the
     // commonest answers without carrying the cone into the local frame: Miss
     // or Full for a world cone whose apex is outside, from bounds on u.d and
@@ -94,7 +93,65 @@ public:
                                                  const LocalFrame& frame) const;
 
 private:
+    // classify's apex on or inside the sphere (to rounding), out of line;
+    // the arguments are classify's own.
+    ConeClass classifyApexNear(const LocalCone& cone, double d2, double p2, double sigma, double band) const;
+
     double radius_;
 };
+
+// Inline: a rigid frame's classification (Primitive) then keeps the local
+// cone in registers. Full iff the cone lies inside the sphere's tangent cone
+// (seen from outside) and every front hit is in range; see docs/geometry.md.
+inline ConeClass Sphere::classify(const LocalCone& cone) const {
+    if (!(radius_ > 0.0)) return conegeom::missClass();
+    const double r = radius_, r2 = r * r;
+    const Vec3 w = -cone.apex;  // centre - apex
+    const double d2 = glm::dot(w, w);
+    const double c = cone.cosHalf, s = cone.sinHalf;
+    // How far d2 - r2 may be from its sign: the apex is "on" the sphere within.
+    const double band = 4e-15 * (d2 + r2) + 2.0 * r * cone.absTol;
+    const double sigma = glm::dot(w, cone.axis);
+    const Vec3 perp = w - sigma * cone.axis;
+    const double p2 = glm::dot(perp, perp);
+
+    if (d2 - r2 > band) {
+        // Apex outside. The Full test comes first, so that the commonest
+        // answer skips the miss tests: a ball that covers the cone cannot lie
+        // outside it, and the Full test is conservative on its own.
+        const double t2 = d2 - r2;
+        // Full: angle(axis, w) + theta <= alpha (the tangent half-angle), i.e.
+        // sin(alpha - beta) = (r sigma - T |perp|) / d2 >= sin(theta), squared.
+        const double lead = r * sigma - s * d2;
+        if (c > 0.0 && lead >= 0.0 && lead * lead >= t2 * p2) {
+            // Front hits t(x) = T^2 / (x + sqrt(x^2 - T^2)) decrease in
+            // x = w.d, which ranges over [D cos(beta + theta), D cos(beta - theta)].
+            const double dp = std::sqrt(p2);
+            const double xLo = sigma * c - dp * s;
+            const double xHi = s * sigma >= c * dp ? std::sqrt(d2) : sigma * c + dp * s;
+            auto front = [&](double x) { return t2 / (x + std::sqrt(std::max(0.0, x * x - t2))); };
+            const double tNear = front(xHi), tFar = front(xLo);
+            if (cone.surelyWithin(tNear, tFar)) return conegeom::fullClass(tNear, tFar);
+        }
+        // Angular miss: the ball lies outside the cone.
+        if (c >= 0.0) {
+            if (sigma < 0.0 && sigma * sigma * c * c > p2 * s * s) return conegeom::missClass();
+            const double rhs = sigma * s + r;
+            if (rhs < 0.0 || p2 * c * c > rhs * rhs) return conegeom::missClass();
+        } else {
+            const double dp = std::sqrt(p2);
+            if (s * sigma < c * dp && (sigma * c + dp * s < 0.0 || dp * c - sigma * s > r))
+                return conegeom::missClass();
+        }
+        // The silhouette is inside the cone (or the range cuts the hits).
+        // Every front hit lies in [D - r, T]; a ray whose front hit is before
+        // the range may still hit the back, up to D + r.
+        const double dist = std::sqrt(d2), tangent = std::sqrt(t2);
+        const double nearest = t2 / (dist + r);  // dist - r
+        if (cone.surelyAfter(nearest) || cone.surelyBefore(dist + r)) return conegeom::missClass();
+        return conegeom::marginalClass(cone, nearest, nearest >= cone.tMinInner ? tangent : dist + r);
+    }
+    return classifyApexNear(cone, d2, p2, sigma, band);
+}
 
 }  // namespace asos
