@@ -30,11 +30,6 @@ ConeClass Disc::classify(const LocalCone& cone) const {
     return classifyWith(cone, [] {}, [](const ConeClass& out) { return out; });
 }
 
-ConeClass Disc::classifyRanging(LocalCone& cone, double t0, double t1,
-                                const RigidBounds& back) const {
-    return classifyWith(cone, [&] { cone.setRange(t0, t1, cone.absTol); }, back);
-}
-
 std::optional<ConeClass> Disc::classifyAcrossScale(const PreparedCone& cone,
                                                    const LocalFrame& frame) const {
     if (empty()) return missClass();
@@ -77,52 +72,6 @@ std::optional<ConeClass> Disc::classifyAcrossScale(const PreparedCone& cone,
     const auto [tNear, tFar] = planeDepths(depth, an, g2, c, s);
     return RigidBounds{absTol, 1.0, cone.tMin, cone.tMax}(
         rangedClass(world, false, true, tNear, tFar));
-}
-
-template <class SetRange, class Finish>
-ConeClass Disc::classifyWith(const LocalCone& cone, SetRange&& setRange, Finish&& finish) const {
-    if (empty()) return missClass();
-    const Vec3& p = cone.apex;
-    const Vec3& axis = cone.axis;
-    const double c = cone.cosHalf, s = cone.sinHalf;
-    const double h = -p.z;
-    const double g2 = axis.x * axis.x + axis.y * axis.y, k = c * c - g2;
-    if (c > 0.0 && h * axis.z > 0.0 && k > 1e-6) {
-        // Fast path. Every ray crosses the plane, at depths [tNear, tFar],
-        // and the footprint lies within `radius` of the axis' crossing q
-        // (see footprintReach): against the two circles that is a comparison
-        // of |q| with their radii. Scaled by an k (an = |axis.z|), q and
-        // radius need no division.
-        const double an = std::abs(axis.z), depth = std::abs(h), ank = an * k;
-        // The depths' root, taken before the answer's branch so that a
-        // mispredicted Full does not wait for it.
-        const double g = std::sqrt(g2);
-        const double qx = an * p.x + depth * axis.x, qy = an * p.y + depth * axis.y;
-        const double q2 = (qx * qx + qy * qy) * (k * k);
-        const double radius = scaledReach(depth, an, g2, c, s, cone.absTol, ank);
-        const auto [miss, full] = circlesAgainstReach(q2, ank, radius);
-        if (miss) return missClass();
-        // The fast path's Miss needs no range (absTol only): it is set here.
-        setRange();
-        const auto [tNear, tFar] = planeDepthsWithG(depth, an, g2, g, c, s);
-        // Whether the range cuts the hits is as good as random from one cone
-        // to the next: the answer is selected, not branched to.
-        if (full) return finish(rangedClass(cone, false, true, tNear, tFar));
-        // A circle near q: the ellipse itself against both circles.
-        if (const auto out = bandClass(cone, depth, an, k, tNear, tFar)) return finish(*out);
-        // Within a few tolerances of tangency: the exact test below.
-    } else {
-        // The axis turned away from the plane (or along it), and so is every
-        // ray (az c > g s: no direction within the half-angle reaches the
-        // plane's side), the apex off the plane: a Miss, as the exact test
-        // would find after its bounding ball and its dot range.
-        const double az2c2 = axis.z * axis.z * c * c;
-        if ((c > 0.0) & (h * axis.z <= 0.0) & (g2 * s * s * (1.0 + 1e-12) < az2c2) &
-            (std::abs(h) > apexInPlaneTolerance(cone)))
-            return missClass();
-        setRange();
-    }
-    return finish(classifyExactly(cone));
 }
 
 std::optional<ConeClass> Disc::bandClass(const LocalCone& cone, double depth, double an, double k,

@@ -7,6 +7,7 @@
 #include "asos/geometry/bounds.hpp"
 #include "asos/geometry/cone.hpp"
 #include "asos/geometry/ray.hpp"
+#include "asos/shapes/cone_geometry.hpp"
 #include "asos/shapes/local_cone.hpp"
 #include "asos/shapes/local_frame.hpp"
 #include "asos/shapes/local_hit.hpp"
@@ -41,7 +42,9 @@ public:
     // the range [t0, t1] is set and `back` applied only past the fast path's
     // Miss, which needs neither (docs/geometry.md, "Disc").
     ConeClass classifyRanging(LocalCone& cone, double t0, double t1,
-                              const RigidBounds& back) const;
+                              const RigidBounds& back) const {
+        return classifyWith(cone, [&] { cone.setRange(t0, t1, cone.absTol); }, back);
+    }
 
     // Under a non-uniform frame (Primitive::classifyGeneral): the fast path
     // in world terms, the cone as it is and the disc's plane mapped, its
@@ -74,6 +77,13 @@ private:
         return {miss, full};
     }
 
+    // A circle of radius `radius` about the centre passes within `inner`
+    // (> 0) of the crossing q, |q|^2 = q2 (all scaled alike).
+    static bool circleNearCrossing(double q2, double radius, double inner) {
+        const double far = radius + inner, near = radius - inner;
+        return (inner > 0.0) & (q2 < far * far) & ((near <= 0.0) | (q2 > near * near));
+    }
+
     template <class SetRange, class Finish>
     ConeClass classifyWith(const LocalCone& cone, SetRange&& setRange, Finish&& finish) const;
     // The fast path's cones near a circle: the footprint ellipse against both
@@ -88,5 +98,60 @@ private:
     double radius_;
     double hole_;
 };
+
+// Inline, as is classifyRanging: a rigid frame's classification
+// (Primitive) then keeps the local cone in registers.
+template <class SetRange, class Finish>
+inline ConeClass Disc::classifyWith(const LocalCone& cone, SetRange&& setRange, Finish&& finish) const {
+    if (empty()) return conegeom::missClass();
+    const Vec3& p = cone.apex;
+    const Vec3& axis = cone.axis;
+    const double c = cone.cosHalf, s = cone.sinHalf;
+    const double h = -p.z;
+    const double g2 = axis.x * axis.x + axis.y * axis.y, k = c * c - g2;
+    if (c > 0.0 && h * axis.z > 0.0 && k > 1e-6) {
+        // Fast path. Every ray crosses the plane, at depths [tNear, tFar],
+        // and the footprint lies within `radius` of the axis' crossing q
+        // (see footprintReach): against the two circles that is a comparison
+        // of |q| with their radii. Scaled by an k (an = |axis.z|), q and
+        // radius need no division.
+        const double an = std::abs(axis.z), depth = std::abs(h), ank = an * k;
+        // The depths' root, taken before the answer's branch so that a
+        // mispredicted Full does not wait for it.
+        const double g = std::sqrt(g2);
+        const double qx = an * p.x + depth * axis.x, qy = an * p.y + depth * axis.y;
+        const double q2 = (qx * qx + qy * qy) * (k * k);
+        const double radius = scaledReach(depth, an, g2, c, s, cone.absTol, ank);
+        const auto [miss, full] = circlesAgainstReach(q2, ank, radius);
+        if (miss) return conegeom::missClass();
+        // The fast path's Miss needs no range (absTol only): it is set here.
+        setRange();
+        const auto [tNear, tFar] = conegeom::planeDepthsWithG(depth, an, g2, g, c, s);
+        // Whether the range cuts the hits is as good as random from one cone
+        // to the next: the answer is selected, not branched to.
+        if (full) return finish(conegeom::rangedClass(cone, false, true, tNear, tFar));
+        // The footprint holds the disc of radius L s / (c + s) >= L s (1 - s)
+        // about the crossing (L = depth / an, the axis' depth): a circle
+        // through that disc has footprint points on both sides, in the
+        // annulus and off it, so the cone is Marginal without the ellipse.
+        const double inner = depth * k * s * (1.0 - s) * (1.0 - 1e-12) - cone.absTol * ank;
+        if (circleNearCrossing(q2, ank * radius_, inner) | ((hole_ > 0.0) & circleNearCrossing(q2, ank * hole_, inner)))
+            return finish(conegeom::rangedClass(cone, false, false, tNear, tFar));
+        // A circle near q: the ellipse itself against both circles.
+        if (const auto out = bandClass(cone, depth, an, k, tNear, tFar)) return finish(*out);
+        // Within a few tolerances of tangency: the exact test below.
+    } else {
+        // The axis turned away from the plane (or along it), and so is every
+        // ray (az c > g s: no direction within the half-angle reaches the
+        // plane's side), the apex off the plane: a Miss, as the exact test
+        // would find after its bounding ball and its dot range.
+        const double az2c2 = axis.z * axis.z * c * c;
+        if ((c > 0.0) & (h * axis.z <= 0.0) & (g2 * s * s * (1.0 + 1e-12) < az2c2) &
+            (std::abs(h) > conegeom::apexInPlaneTolerance(cone)))
+            return conegeom::missClass();
+        setRange();
+    }
+    return finish(classifyExactly(cone));
+}
 
 }  // namespace asos
