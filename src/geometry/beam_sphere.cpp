@@ -6,45 +6,93 @@
 
 namespace asos {
 
+Vec2 concentricDisc(double s, double t) {
+    const double a = 2.0 * s - 1.0, b = 2.0 * t - 1.0;
+    if (a == 0.0 && b == 0.0) return Vec2(0.0);
+    double r, phi;
+    if (std::abs(a) > std::abs(b)) {
+        r = a;
+        phi = 0.25 * kPi * (b / a);
+    } else {
+        r = b;
+        phi = 0.5 * kPi - 0.25 * kPi * (a / b);
+    }
+    return {r * std::cos(phi), r * std::sin(phi)};
+}
+
+double innerRadius(const DiscCell& c) {
+    // The radius is the largest coordinate's size (square rings to circles),
+    // least at the cell's nearest point to the centre.
+    const auto gap = [](double lo, double hi) { return lo > 0.0 ? lo : (hi < 0.0 ? -hi : 0.0); };
+    return std::max(gap(2.0 * c.s0 - 1.0, 2.0 * c.s1 - 1.0), gap(2.0 * c.t0 - 1.0, 2.0 * c.t1 - 1.0));
+}
+
+PolarBounds polarBounds(const DiscCell& c) {
+    const double a[2] = {2.0 * c.s0 - 1.0, 2.0 * c.s1 - 1.0}, b[2] = {2.0 * c.t0 - 1.0, 2.0 * c.t1 - 1.0};
+    PolarBounds p;
+    p.r0 = innerRadius(c);
+    p.r1 = std::max(std::max(std::abs(a[0]), std::abs(a[1])), std::max(std::abs(b[0]), std::abs(b[1])));
+    // A cell across an axis (the whole square): every angle.
+    if ((a[0] < 0.0 && a[1] > 0.0) || (b[0] < 0.0 && b[1] > 0.0)) return p;
+    // The quadrant, and the corners turned into the first one by quarter
+    // turns (the map commutes with them); there the angle is (pi/4) y/x below
+    // the diagonal and pi/2 - (pi/4) x/y above it, growing with atan2(y, x),
+    // so a convex cell's angles lie between its corners' (the centre, where
+    // it is a corner, has none).
+    const double ac = a[0] + a[1], bc = b[0] + b[1];
+    const int quadrant = ac > 0.0 ? (bc > 0.0 ? 0 : 3) : (bc > 0.0 ? 1 : 2);
+    p.phi0 = 2.0 * kPi;
+    p.phi1 = 0.0;
+    for (int i = 0; i < 4; ++i) {
+        const double u = a[i & 1], v = b[i >> 1];
+        double x = u, y = v;
+        switch (quadrant) {
+            case 1: x = v, y = -u; break;
+            case 2: x = -u, y = -v; break;
+            case 3: x = -v, y = u; break;
+            default: break;
+        }
+        if (x == 0.0 && y == 0.0) continue;
+        const double within = x >= y ? 0.25 * kPi * (y / x) : 0.5 * kPi - 0.25 * kPi * (x / y);
+        const double phi = 0.5 * kPi * quadrant + within;
+        p.phi0 = std::min(p.phi0, phi);
+        p.phi1 = std::max(p.phi1, phi);
+    }
+    return p;
+}
+
 namespace {
 
-// How far a polar rectangle is from square: its radial extent against its
-// arc length at the area-median radius, as a ratio >= 1.
-double aspect(const DiscRegion& d) {
-    const double radial = d.r1 - d.r0;
-    const double arc = std::sqrt(0.5 * (d.r0 * d.r0 + d.r1 * d.r1)) * (d.phi1 - d.phi0);
-    return std::max(radial / arc, arc / radial);
-}
-
-// The radius splitting [r0, r1] at fraction f of its area.
-double areaRadius(double r0, double r1, double f) {
-    return std::sqrt(r0 * r0 + f * (r1 * r1 - r0 * r0));
-}
-
-std::array<DiscRegion, 4> splitRegion(const DiscRegion& d, int level) {
-    const auto phiAt = [&](double f) { return d.phi0 + f * (d.phi1 - d.phi0); };
-    if (level == 0) {
-        // The whole disc: its quadrants.
-        return {DiscRegion{0.0, 1.0, 0.0, 0.5 * kPi}, DiscRegion{0.0, 1.0, 0.5 * kPi, kPi},
-                DiscRegion{0.0, 1.0, kPi, 1.5 * kPi}, DiscRegion{0.0, 1.0, 1.5 * kPi, 2.0 * kPi}};
-    }
-    const double rm = areaRadius(d.r0, d.r1, 0.5), pm = phiAt(0.5);
-    const std::array<DiscRegion, 4> grid = {DiscRegion{d.r0, rm, d.phi0, pm}, DiscRegion{rm, d.r1, d.phi0, pm},
-                                            DiscRegion{d.r0, rm, pm, d.phi1}, DiscRegion{rm, d.r1, pm, d.phi1}};
-    const double p1 = phiAt(0.25), p3 = phiAt(0.75);
-    const std::array<DiscRegion, 4> wedges = {DiscRegion{d.r0, d.r1, d.phi0, p1}, DiscRegion{d.r0, d.r1, p1, pm},
-                                              DiscRegion{d.r0, d.r1, pm, p3}, DiscRegion{d.r0, d.r1, p3, d.phi1}};
-    const double r1 = areaRadius(d.r0, d.r1, 0.25), r3 = areaRadius(d.r0, d.r1, 0.75);
-    const std::array<DiscRegion, 4> rings = {DiscRegion{d.r0, r1, d.phi0, d.phi1}, DiscRegion{r1, rm, d.phi0, d.phi1},
-                                             DiscRegion{rm, r3, d.phi0, d.phi1}, DiscRegion{r3, d.r1, d.phi0, d.phi1}};
-    const auto worst = [](const std::array<DiscRegion, 4>& pieces) {
-        double w = 0.0;
-        for (const DiscRegion& p : pieces) w = std::max(w, aspect(p));
-        return w;
+// The solid angle of the directions through the part of the concentric image
+// of the square cell [a0, a1] x [b0, b1] (coordinates a = 2s - 1, b = 2t - 1)
+// in the sector a > |b|, where the disc point has r = a and phi = (pi/4) b/a,
+// for a tangent cone with tan(alpha) = tanAlpha. With tan(psi) = r tan(alpha),
+// the solid angle element sin(psi) dpsi dphi is w(a) da db with
+// w(a) = (pi/4) T^2 / (1 + a^2 T^2)^(3/2); the cell's extent in b at a,
+// L(a) = |[b0, b1] n (-a, a)|, is piecewise linear, and w and a w have the
+// closed antiderivatives (pi/4) T sin(psi) and -(pi/4) cos(psi).
+double sectorSolidAngle(double a0, double a1, double b0, double b1, double T) {
+    const double lo = std::max(a0, 0.0), hi = a1;
+    if (!(hi > lo)) return 0.0;
+    const auto extent = [&](double a) { return std::max(0.0, std::min(b1, a) - std::max(b0, -a)); };
+    const auto sinPsiT = [&](double a) { return T * (a * T) / std::sqrt(1.0 + a * a * T * T); };
+    // cos psi(u) - cos psi(v), without the cancellation of the difference.
+    const auto cosDrop = [&](double u, double v) {
+        const double su = std::sqrt(1.0 + u * u * T * T), sv = std::sqrt(1.0 + v * v * T * T);
+        return (v - u) * (v + u) * T * T / ((su + sv) * su * sv);
     };
-    const double g = worst(grid), w = worst(wedges), r = worst(rings);
-    if (g <= w && g <= r) return grid;
-    return w <= r ? wedges : rings;
+    std::array<double, 7> cuts = {lo, hi, b1, -b0, b0, -b1, 0.0};
+    std::sort(cuts.begin(), cuts.end());
+    double total = 0.0, u = lo;
+    for (double cut : cuts) {
+        const double v = std::min(cut, hi);
+        if (!(v > u)) continue;
+        const double slope = (extent(v) - extent(u)) / (v - u);
+        const double offset = extent(u) - slope * u;
+        total += offset * (sinPsiT(v) - sinPsiT(u)) + slope * cosDrop(u, v);
+        u = v;
+    }
+    return 0.25 * kPi * total;
 }
 
 }  // namespace
@@ -54,40 +102,45 @@ std::optional<SphereShadowCone> SphereShadowCone::make(const Vec3& point, const 
     if (!(radius > 0.0)) throw std::invalid_argument("spherical light of radius <= 0");
     const double distance = glm::length(centre - point);
     if (!(distance > radius * (1.0 + 1e-12))) return std::nullopt;
-    return SphereShadowCone(point, centre, radius, DiscRegion{}, 0, tMin);
+    return SphereShadowCone(point, centre, radius, DiscCell{}, 0, tMin);
 }
 
 SphereShadowCone::SphereShadowCone(const Vec3& point, const Vec3& centre, double radius,
-                                   const DiscRegion& region, int level, double tMin)
+                                   const DiscCell& region, int level, double tMin)
     : point_(point), centre_(centre), radius_(radius), region_(region), level_(level), tMin_(tMin) {
     const Vec3 toCentre = centre_ - point_;
     const double distance = glm::length(toCentre);
     alpha_ = std::asin(std::min(1.0, radius_ / distance));
     frame_ = Frame::around(toCentre / distance);
-    const double far = distanceAtDiscRadius(region_.r1, 1.0) * (1.0 + 1e-12);
+    if (level_ > 0) bounds_ = polarBounds(region_);
+    const double far = distanceAtDiscRadius(bounds_.r1, 1.0) * (1.0 + 1e-12);
     if (level_ == 0) {
         cone_ = {point_, frame_.w, alpha_ + kConeAnglePad, tMin_, far};
         return;
     }
-    // The piece lies in the convex hull of its two inner corners and its
-    // outer arc (its angular span is at most pi/2). The smallest cone of the
-    // four corner directions has its axis inside the piece's angular range,
-    // so its widest angle to the outer arc is at an end of the arc: the cone
-    // holds the arc, hence the hull (a cone below pi/2 meets the disc's plane
-    // in a convex set), hence the piece. docs/accel.md has the details.
-    const std::array<Vec3, 4> corners = {
-        directionAt(region_.r0 * std::cos(region_.phi0), region_.r0 * std::sin(region_.phi0)),
-        directionAt(region_.r0 * std::cos(region_.phi1), region_.r0 * std::sin(region_.phi1)),
-        directionAt(region_.r1 * std::cos(region_.phi0), region_.r1 * std::sin(region_.phi0)),
-        directionAt(region_.r1 * std::cos(region_.phi1), region_.r1 * std::sin(region_.phi1))};
+    // The piece lies in its polar rectangle, which lies in the convex hull
+    // of its two inner corners and its outer arc (its angular span is at
+    // most pi/2). The smallest cone of the four corner directions has its
+    // axis inside the angular range, so its widest angle to the outer arc is
+    // at an end of the arc: the cone holds the arc, hence the hull (a cone
+    // below pi/2 meets the disc's plane in a convex set), hence the piece.
+    // docs/accel.md has the details.
+    const PolarBounds& b = bounds_;
+    const std::array<Vec3, 4> corners = {directionAt(b.r0 * std::cos(b.phi0), b.r0 * std::sin(b.phi0)),
+                                         directionAt(b.r0 * std::cos(b.phi1), b.r0 * std::sin(b.phi1)),
+                                         directionAt(b.r1 * std::cos(b.phi0), b.r1 * std::sin(b.phi0)),
+                                         directionAt(b.r1 * std::cos(b.phi1), b.r1 * std::sin(b.phi1))};
     const DirectionCone bound = smallestEnclosingCone(corners);
     cone_ = {point_, bound.axis, bound.halfAngle, tMin_, far};
 }
 
 std::array<SphereShadowCone, 4> SphereShadowCone::split() const {
-    const std::array<DiscRegion, 4> pieces = splitRegion(region_, level_);
-    const auto piece = [&](int i) {
-        return SphereShadowCone(point_, centre_, radius_, pieces[i], level_ + 1, tMin_);
+    const double s[3] = {region_.s0, 0.5 * (region_.s0 + region_.s1), region_.s1};
+    const double t[3] = {region_.t0, 0.5 * (region_.t0 + region_.t1), region_.t1};
+    const auto piece = [&](int q) {
+        const int i = q & 1, j = q >> 1;
+        return SphereShadowCone(point_, centre_, radius_, DiscCell{s[i], s[i + 1], t[j], t[j + 1]}, level_ + 1,
+                                tMin_);
     };
     return {piece(0), piece(1), piece(2), piece(3)};
 }
@@ -121,17 +174,16 @@ double SphereShadowCone::distanceAtDiscRadius(double r, double widen) const {
 BeamRay SphereShadowCone::central() const {
     Vec3 dir = frame_.w;
     if (level_ > 0) {
-        const double r = areaRadius(region_.r0, region_.r1, 0.5);
-        const double phi = 0.5 * (region_.phi0 + region_.phi1);
-        dir = directionAt(r * std::cos(phi), r * std::sin(phi));
+        const Vec2 p = concentricDisc(0.5 * (region_.s0 + region_.s1), 0.5 * (region_.t0 + region_.t1));
+        dir = directionAt(p.x, p.y);
     }
     return {Ray{point_, dir}, distanceToLight(dir)};
 }
 
 BeamRay SphereShadowCone::sample(double xi1, double xi2) const {
-    const double r = areaRadius(region_.r0, region_.r1, xi1);
-    const double phi = region_.phi0 + xi2 * (region_.phi1 - region_.phi0);
-    const Vec3 dir = directionAt(r * std::cos(phi), r * std::sin(phi));
+    const Vec2 p = concentricDisc(region_.s0 + xi1 * (region_.s1 - region_.s0),
+                                  region_.t0 + xi2 * (region_.t1 - region_.t0));
+    const Vec3 dir = directionAt(p.x, p.y);
     return {Ray{point_, dir}, distanceToLight(dir)};
 }
 
@@ -140,16 +192,17 @@ double SphereShadowCone::weight() const { return std::ldexp(1.0, -2 * level_); }
 double SphereShadowCone::area() const { return weight() * kPi * radius_ * radius_; }
 
 double SphereShadowCone::solidAngle() const {
-    // The directions of disc radius r make tan(psi) = r tan(alpha) with the
-    // axis; integrating the solid angle element over r and phi gives
-    // (phi1 - phi0) (cos psi(r0) - cos psi(r1)).
-    const double tanAlpha = std::tan(alpha_);
-    const auto cosPsi = [&](double r) { return 1.0 / std::sqrt(1.0 + tanAlpha * tanAlpha * r * r); };
-    return (region_.phi1 - region_.phi0) * (cosPsi(region_.r0) - cosPsi(region_.r1));
+    // The four sectors of the concentric map, each turned onto a > |b| by
+    // quarter turns of the cell (the map commutes with them).
+    const double T = std::tan(alpha_);
+    const double a0 = 2.0 * region_.s0 - 1.0, a1 = 2.0 * region_.s1 - 1.0;
+    const double b0 = 2.0 * region_.t0 - 1.0, b1 = 2.0 * region_.t1 - 1.0;
+    return sectorSolidAngle(a0, a1, b0, b1, T) + sectorSolidAngle(b0, b1, -a1, -a0, T) +
+           sectorSolidAngle(-a1, -a0, -b1, -b0, T) + sectorSolidAngle(-b1, -b0, a0, a1, T);
 }
 
 double SphereShadowCone::nearestLightDistance() const {
-    return distanceAtDiscRadius(region_.r0, -1.0) * (1.0 - 1e-12);
+    return distanceAtDiscRadius(bounds_.r0, -1.0) * (1.0 - 1e-12);
 }
 
 }  // namespace asos

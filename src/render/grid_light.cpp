@@ -9,20 +9,6 @@
 
 namespace asos {
 
-Vec2 concentricDisc(double s, double t) {
-    const double a = 2.0 * s - 1.0, b = 2.0 * t - 1.0;
-    if (a == 0.0 && b == 0.0) return Vec2(0.0);
-    double r, phi;
-    if (std::abs(a) > std::abs(b)) {
-        r = a;
-        phi = 0.25 * kPi * (b / a);
-    } else {
-        r = b;
-        phi = 0.5 * kPi - 0.25 * kPi * (a / b);
-    }
-    return {r * std::cos(phi), r * std::sin(phi)};
-}
-
 namespace {
 
 constexpr double kTolerance = kPovShadowTolerance;

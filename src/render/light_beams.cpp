@@ -6,53 +6,6 @@
 
 namespace asos {
 
-namespace {
-
-// The radius splitting [r0, r1] at fraction f of its area.
-double areaRadius(double r0, double r1, double f) { return std::sqrt(r0 * r0 + f * (r1 * r1 - r0 * r0)); }
-
-// How far a polar rectangle is from square (as geometry/beam_sphere.cpp
-// measures it): radial extent against arc length at the area-median radius.
-double aspect(double r0, double r1, double phi0, double phi1) {
-    const double radial = r1 - r0;
-    const double arc = std::sqrt(0.5 * (r0 * r0 + r1 * r1)) * (phi1 - phi0);
-    return std::max(radial / arc, arc / radial);
-}
-
-// The children of a disc piece (r in [r0, r1], phi in [phi0, phi1]) at
-// `level`: the equal-area pieces of geometry/beam_sphere.cpp, as
-// {r0, r1, phi0, phi1} each.
-std::array<std::array<double, 4>, 4> discChildren(int level, double r0, double r1, double phi0, double phi1) {
-    // The disc's quadrants, then 2 x 2, 1 x 4 or 4 x 1 in r^2 and phi, whichever
-    // leaves the pieces closest to square.
-    std::array<std::array<double, 4>, 4> pieces;  // r0, r1, phi0, phi1
-    const auto phiAt = [&](double f) { return phi0 + f * (phi1 - phi0); };
-    if (level == 0) {
-        pieces = {{{0.0, 1.0, 0.0, 0.5 * kPi}, {0.0, 1.0, 0.5 * kPi, kPi},
-                   {0.0, 1.0, kPi, 1.5 * kPi}, {0.0, 1.0, 1.5 * kPi, 2.0 * kPi}}};
-    } else {
-        const double rm = areaRadius(r0, r1, 0.5), pm = phiAt(0.5);
-        const std::array<std::array<double, 4>, 4> grid = {
-            {{r0, rm, phi0, pm}, {rm, r1, phi0, pm}, {r0, rm, pm, phi1}, {rm, r1, pm, phi1}}};
-        const double p1 = phiAt(0.25), p3 = phiAt(0.75);
-        const std::array<std::array<double, 4>, 4> wedges = {
-            {{r0, r1, phi0, p1}, {r0, r1, p1, pm}, {r0, r1, pm, p3}, {r0, r1, p3, phi1}}};
-        const double q1 = areaRadius(r0, r1, 0.25), q3 = areaRadius(r0, r1, 0.75);
-        const std::array<std::array<double, 4>, 4> rings = {
-            {{r0, q1, phi0, phi1}, {q1, rm, phi0, phi1}, {rm, q3, phi0, phi1}, {q3, r1, phi0, phi1}}};
-        const auto worst = [](const std::array<std::array<double, 4>, 4>& set) {
-            double w = 0.0;
-            for (const auto& d : set) w = std::max(w, aspect(d[0], d[1], d[2], d[3]));
-            return w;
-        };
-        const double g = worst(grid), w = worst(wedges), r = worst(rings);
-        pieces = (g <= w && g <= r) ? grid : (w <= r ? wedges : rings);
-    }
-    return pieces;
-}
-
-}  // namespace
-
 LightBeams::LightBeams(const LightModel& model, const Vec3& apex, double tMin)
     : shape_(model.shape), apex_(apex), tMin_(tMin) {
     switch (shape_) {
@@ -104,9 +57,11 @@ LightBeams::LightBeams(const LightModel& model, const Vec3& apex, double tMin)
     }
 }
 
-Vec3 LightBeams::discDirection(double r, double phi) const {
-    const double x = r * std::cos(phi), y = r * std::sin(phi);
-    return glm::normalize(frame_.toWorld(tanAlpha_ * x, tanAlpha_ * y, 1.0));
+Vec3 LightBeams::discDirection(const Vec2& p) const {
+    // SphereShadowCone::directionAt's expression: the grid's points are made
+    // by it, and a level-K piece's central ray is the 2^K x 2^K grid's point
+    // bit for bit.
+    return glm::normalize(frame_.toWorld(tanAlpha_ * p.x, tanAlpha_ * p.y, 1.0));
 }
 
 double LightBeams::sphereDistance(const Vec3& dir) const {
@@ -184,18 +139,10 @@ LightPiece LightBeams::make(double a0, double b0, double a1, double b1, int leve
             break;
         }
         case LightShape::Sphere: {
-            const double far = sphereDistanceAtRadius(a1, 1.0);
-            if (level == 0) {
-                p.central = {Ray{apex_, frame_.w}, sphereDistance(frame_.w)};
-                p.cone = {apex_, frame_.w, alpha_ + kConeAnglePad, tMin_, far * (1.0 + 1e-12)};
-                break;
-            }
-            const Vec3 dir = discDirection(areaRadius(a0, a1, 0.5), 0.5 * (b0 + b1));
-            p.central = {Ray{apex_, dir}, sphereDistance(dir)};
-            if (!cone) break;
-            const Vec3 corners[4] = {discDirection(a0, b0), discDirection(a0, b1), discDirection(a1, b0),
-                                     discDirection(a1, b1)};
-            p.cone = coneAbout(dir, corners, 4, far, p.tanHalf);
+            if (level > 0) return makeDiscPiece(DiscPieceTable::piece(DiscCell{a0, a1, b0, b1}), level, path, cone);
+            // The whole disc: the tangent cone.
+            p.central = {Ray{apex_, frame_.w}, sphereDistance(frame_.w)};
+            p.cone = {apex_, frame_.w, alpha_ + kConeAnglePad, tMin_, sphereDistanceAtRadius(1.0, 1.0) * (1.0 + 1e-12)};
             break;
         }
         case LightShape::Point: break;
@@ -203,30 +150,28 @@ LightPiece LightBeams::make(double a0, double b0, double a1, double b1, int leve
     return p;
 }
 
-DiscPieceTable::Trig DiscPieceTable::AngleCache::of(double phi) {
-    for (int i = 0; i < count; ++i)
-        if (entries[i].phi == phi) return entries[i].trig;
-    const Trig t{std::cos(phi), std::sin(phi)};
-    if (count < kSize) entries[count++] = {phi, t};
-    return t;
-}
-
-DiscPieceTable::Piece DiscPieceTable::piece(double r0, double r1, double phi0, double phi1, AngleCache& angles) {
-    return {r0, r1, phi0, phi1, areaRadius(r0, r1, 0.5), angles.of(0.5 * (phi0 + phi1)), angles.of(phi0),
-            angles.of(phi1)};
+DiscPieceTable::Piece DiscPieceTable::piece(const DiscCell& cell) {
+    const PolarBounds b = polarBounds(cell);
+    return {cell,
+            concentricDisc(0.5 * (cell.s0 + cell.s1), 0.5 * (cell.t0 + cell.t1)),
+            b.r0,
+            b.r1,
+            {std::cos(b.phi0), std::sin(b.phi0)},
+            {std::cos(b.phi1), std::sin(b.phi1)}};
 }
 
 DiscPieceTable::DiscPieceTable() {
-    AngleCache none;
-    pieces_.push_back(piece(0.0, 1.0, 0.0, 2.0 * kPi, none));
+    pieces_.push_back(piece(DiscCell{}));
     for (int level = 0; level < kLevels; ++level) {
         const std::size_t first = ((std::size_t(1) << (2 * level)) - 1) / 3;
         const std::size_t count = std::size_t(1) << (2 * level);
         for (std::size_t i = first; i < first + count; ++i) {
-            const Piece parent = pieces_[i];
-            const auto children = discChildren(level, parent.r0, parent.r1, parent.phi0, parent.phi1);
-            AngleCache angles;
-            for (const auto& c : children) pieces_.push_back(piece(c[0], c[1], c[2], c[3], angles));
+            const DiscCell c = pieces_[i].cell;
+            const double s[3] = {c.s0, 0.5 * (c.s0 + c.s1), c.s1}, t[3] = {c.t0, 0.5 * (c.t0 + c.t1), c.t1};
+            for (int q = 0; q < 4; ++q) {
+                const int u = q & 1, v = q >> 1;
+                pieces_.push_back(piece(DiscCell{s[u], s[u + 1], t[v], t[v + 1]}));
+            }
         }
     }
 }
@@ -236,17 +181,13 @@ const DiscPieceTable& discPieceTable() {
     return table;
 }
 
-Vec3 LightBeams::discDirection(double r, const DiscPieceTable::Trig& t) const {
-    return glm::normalize(discOffset(r, t));
-}
-
 Vec3 LightBeams::discOffset(double r, const DiscPieceTable::Trig& t) const {
     return frame_.toWorld(tanAlpha_ * r * t.c, tanAlpha_ * r * t.s, 1.0);
 }
 
 LightPiece LightBeams::makeDiscPiece(const DiscPieceTable::Piece& d, int level, std::uint64_t path, bool cone) const {
-    LightPiece p{d.r0, d.phi0, d.r1, d.phi1, level, path, {}, {}};
-    const Vec3 dir = discDirection(d.rc, d.central);
+    LightPiece p{d.cell.s0, d.cell.t0, d.cell.s1, d.cell.t1, level, path, {}, {}};
+    const Vec3 dir = discDirection(d.centre);
     p.central = {Ray{apex_, dir}, sphereDistance(dir)};
     if (!cone) return p;
     // Unnormalised: coneAbout needs no unit directions.
@@ -257,7 +198,7 @@ LightPiece LightBeams::makeDiscPiece(const DiscPieceTable::Piece& d, int level, 
 }
 
 LightPiece LightBeams::root() const {
-    return shape_ == LightShape::Sphere ? make(0.0, 0.0, 1.0, 2.0 * kPi, 0, 0) : make(0.0, 0.0, 1.0, 1.0, 0, 0);
+    return make(0.0, 0.0, 1.0, 1.0, 0, 0);
 }
 
 int LightBeams::splitRectangle(const LightPiece& p, LightPiece* out, bool cones) const {
@@ -306,14 +247,13 @@ int LightBeams::split(const LightPiece& p, LightPiece* out, bool cones) const {
                     out[q] = makeDiscPiece(d[q], level, 4 * p.path + std::uint64_t(q), cones);
                 return 4;
             }
-            const std::array<std::array<double, 4>, 4> pieces = discChildren(p.level, p.a0, p.a1, p.b0, p.b1);
-            // Neighbouring pieces share their edges' angles (bitwise): each
-            // angle's cosine and sine is computed once.
-            DiscPieceTable::AngleCache angles;
-            for (int q = 0; q < 4; ++q)
-                out[q] = makeDiscPiece(DiscPieceTable::piece(pieces[q][0], pieces[q][1], pieces[q][2],
-                                                             pieces[q][3], angles),
-                                       level, 4 * p.path + std::uint64_t(q), cones);
+            // Deeper: the cell's quarters, as in the table.
+            const double s[3] = {p.a0, 0.5 * (p.a0 + p.a1), p.a1}, t[3] = {p.b0, 0.5 * (p.b0 + p.b1), p.b1};
+            for (int q = 0; q < 4; ++q) {
+                const int i = q & 1, j = q >> 1;
+                out[q] = makeDiscPiece(DiscPieceTable::piece(DiscCell{s[i], s[i + 1], t[j], t[j + 1]}), level,
+                                       4 * p.path + std::uint64_t(q), cones);
+            }
             return 4;
         }
         case LightShape::Point: break;
@@ -327,7 +267,7 @@ BeamRay LightBeams::sample(const LightPiece& p, const Vec2& xi) const {
             return toward(rectPoint(p.a0 + xi.x * (p.a1 - p.a0), p.b0 + xi.y * (p.b1 - p.b0)));
         case LightShape::Segment: return toward(corner_ + (p.a0 + xi.x * (p.a1 - p.a0)) * edgeA_);
         case LightShape::Sphere: {
-            const Vec3 dir = discDirection(areaRadius(p.a0, p.a1, xi.x), p.b0 + xi.y * (p.b1 - p.b0));
+            const Vec3 dir = discDirection(concentricDisc(p.a0 + xi.x * (p.a1 - p.a0), p.b0 + xi.y * (p.b1 - p.b0)));
             return {Ray{apex_, dir}, sphereDistance(dir)};
         }
         case LightShape::Point: break;
@@ -349,15 +289,16 @@ double LightBeams::nearestLightDistance(const LightPiece& p) const {
             const Vec3 nearest = corner_ + std::clamp(footS_, p.a0, p.a1) * edgeA_;
             return glm::length(nearest - apex_) * (1.0 - 1e-12);
         }
-        case LightShape::Sphere: return sphereDistanceAtRadius(p.a0, -1.0) * (1.0 - 1e-12);
+        case LightShape::Sphere:
+            return sphereDistanceAtRadius(innerRadius(DiscCell{p.a0, p.a1, p.b0, p.b1}), -1.0) * (1.0 - 1e-12);
         case LightShape::Point: break;
     }
     return 0.0;
 }
 
 int LightBeams::probeRays(const LightPiece& p, BeamRay* out) const {
-    const auto disc = [&](double r, double phi) {
-        const Vec3 dir = discDirection(r, phi);
+    const auto disc = [&](const Vec2& point) {
+        const Vec3 dir = discDirection(point);
         return BeamRay{Ray{apex_, dir}, sphereDistance(dir)};
     };
     switch (shape_) {
@@ -375,14 +316,19 @@ int LightBeams::probeRays(const LightPiece& p, BeamRay* out) const {
             return 2;
         case LightShape::Sphere: {
             if (p.level == 0) {
-                for (int i = 0; i < 4; ++i) out[i] = disc(1.0, 0.5 * kPi * ((i & 1) * 2 + (i >> 1)));
+                // Opposite points of the rim: angles 0 and pi, pi/2 and 3 pi/2.
+                for (int i = 0; i < 4; ++i) {
+                    const double phi = 0.5 * kPi * ((i & 1) * 2 + (i >> 1));
+                    out[i] = disc(Vec2(std::cos(phi), std::sin(phi)));
+                }
                 return 4;
             }
-            const double rm = areaRadius(p.a0, p.a1, 0.5), pm = 0.5 * (p.b0 + p.b1);
-            out[0] = disc(p.a0, pm);
-            out[1] = disc(p.a1, pm);
-            out[2] = disc(rm, p.b0);
-            out[3] = disc(rm, p.b1);
+            // The images of the cell's edges' midpoints.
+            const double sm = 0.5 * (p.a0 + p.a1), tm = 0.5 * (p.b0 + p.b1);
+            out[0] = disc(concentricDisc(p.a0, tm));
+            out[1] = disc(concentricDisc(p.a1, tm));
+            out[2] = disc(concentricDisc(sm, p.b0));
+            out[3] = disc(concentricDisc(sm, p.b1));
             return 4;
         }
         case LightShape::Point: break;

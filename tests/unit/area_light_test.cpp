@@ -11,6 +11,7 @@
 #include <cmath>
 #include <functional>
 
+#include "asos/geometry/beam_sphere.hpp"
 #include "asos/render/area_light.hpp"
 #include "asos/render/area_light_shadow.hpp"
 #include "asos/render/grid_light.hpp"

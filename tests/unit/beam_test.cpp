@@ -253,6 +253,73 @@ TEST_CASE("Segment shadow pyray: halves tile the light, rays inside the cone", "
     CHECK_THROWS_AS(SegmentShadowPyray::make(Vec3(0, 1, 0), Vec3(0.0), Vec3(0.0)), std::invalid_argument);
 }
 
+TEST_CASE("Concentric map: polar bounds of cells and the pieces' solid angles against a numerical sum", "[beam]") {
+    std::mt19937_64 rng(27);
+    std::uniform_real_distribution<double> u01(0.0, 1.0);
+    // Every cell of levels 1 to 4: its image's radii and angles, sampled
+    // densely, lie in its polar bounds and reach them.
+    for (int level = 1; level <= 4; ++level) {
+        const int n = 1 << level;
+        for (int j = 0; j < n; ++j)
+            for (int i = 0; i < n; ++i) {
+                const DiscCell c{double(i) / n, double(i + 1) / n, double(j) / n, double(j + 1) / n};
+                const PolarBounds b = polarBounds(c);
+                CHECK(b.phi1 - b.phi0 <= 0.5 * kPi + 1e-15);
+                CHECK(innerRadius(c) == b.r0);
+                double r0 = 2.0, r1 = 0.0, phi0 = 10.0, phi1 = -10.0;
+                for (int v = 0; v <= 16; ++v)
+                    for (int u = 0; u <= 16; ++u) {
+                        const Vec2 d = concentricDisc(c.s0 + u / 16.0 * (c.s1 - c.s0), c.t0 + v / 16.0 * (c.t1 - c.t0));
+                        const double rho = glm::length(d);
+                        r0 = std::min(r0, rho);
+                        r1 = std::max(r1, rho);
+                        if (rho < 1e-12) continue;
+                        double phi = std::atan2(d.y, d.x);
+                        if (phi < b.phi0 - 1e-9) phi += 2.0 * kPi;
+                        phi0 = std::min(phi0, phi);
+                        phi1 = std::max(phi1, phi);
+                    }
+                INFO("level " << level << " cell " << i << "," << j);
+                CHECK(r0 == Approx(b.r0).margin(1e-12));
+                CHECK(r1 == Approx(b.r1).margin(1e-12));
+                CHECK(phi0 == Approx(b.phi0).margin(1e-9));
+                CHECK(phi1 == Approx(b.phi1).margin(1e-9));
+            }
+    }
+    // The whole square: the whole disc.
+    const PolarBounds whole = polarBounds(DiscCell{});
+    CHECK(whole.r0 == 0.0);
+    CHECK(whole.r1 == 1.0);
+    CHECK(whole.phi1 - whole.phi0 == 2.0 * kPi);
+    // Solid angles: the closed form against the midpoint rule over the cell
+    // (the map has constant Jacobian pi, and the solid angle per unit disc
+    // area at radius r is T^2 / (1 + r^2 T^2)^(3/2)), along random paths.
+    for (int trial = 0; trial < 12; ++trial) {
+        const double radius = 0.2 + u01(rng);
+        const double distance = radius * (1.0 + std::pow(10.0, -2.0 + 3.0 * u01(rng)));
+        const auto made = SphereShadowCone::make(Vec3(0.0), Vec3(0, 0, distance), radius);
+        REQUIRE(made);
+        const double T = std::tan(made->tangentHalfAngle());
+        SphereShadowCone p = *made;
+        for (int level = 0; level <= 3; ++level) {
+            const DiscCell& c = p.region();
+            constexpr int kSteps = 240;
+            double sum = 0.0;
+            for (int v = 0; v < kSteps; ++v)
+                for (int u = 0; u < kSteps; ++u) {
+                    const double s = c.s0 + (u + 0.5) / kSteps * (c.s1 - c.s0);
+                    const double t = c.t0 + (v + 0.5) / kSteps * (c.t1 - c.t0);
+                    const double r = std::max(std::abs(2 * s - 1), std::abs(2 * t - 1));
+                    sum += kPi * T * T / std::pow(1.0 + r * r * T * T, 1.5);
+                }
+            sum *= (c.s1 - c.s0) * (c.t1 - c.t0) / (double(kSteps) * kSteps);
+            INFO("trial " << trial << " level " << level);
+            CHECK(p.solidAngle() == Approx(sum).epsilon(1e-4));
+            p = p.split()[rng() % 4];
+        }
+    }
+}
+
 TEST_CASE("Sphere shadow cone: the tangent cone, equal-area pieces, rays inside their cones", "[beam]") {
     std::mt19937_64 rng(26);
     std::uniform_real_distribution<double> u01(0.0, 1.0);
@@ -277,46 +344,56 @@ TEST_CASE("Sphere shadow cone: the tangent cone, equal-area pieces, rays inside 
                 weights += q.weight();
                 solid += q.solidAngle();
                 CHECK(q.weight() == std::ldexp(1.0, -2 * (level + 1)));
+                const PolarBounds& bounds = q.bounds();
+                const DiscCell& c = q.region();
                 for (int k = 0; k < 60; ++k) {
-                    // Corners of the piece first, then along its outer and
-                    // inner arcs (where a cone of the corners alone could
-                    // fall short), then inside.
+                    // Corners of the piece first, then along its four edges
+                    // (curves on the disc, where a cone of the corners alone
+                    // could fall short), then inside.
                     double xi1 = u01(rng), xi2 = u01(rng);
                     if (k < 4) {
                         xi1 = k & 1;
                         xi2 = k >> 1 & 1;
-                    } else if (k < 30) {
-                        xi1 = 1.0;
-                        xi2 = (k - 4) / 25.0;
-                    } else if (k < 40) {
-                        xi1 = 0.0;
-                        xi2 = (k - 30) / 9.0;
+                    } else if (k < 44) {
+                        const double along = (k - 4) % 10 / 9.0;
+                        const int edge = (k - 4) / 10;
+                        xi1 = edge < 2 ? edge : along;
+                        xi2 = edge < 2 ? along : edge - 2;
                     }
                     const BeamRay r = k == 4 ? q.central() : q.sample(xi1, xi2);
-                    INFO("level " << level + 1 << " region r [" << q.region().r0 << "," << q.region().r1 << "] phi ["
-                                  << q.region().phi0 << "," << q.region().phi1 << "]");
+                    INFO("level " << level + 1 << " cell s [" << c.s0 << "," << c.s1 << "] t [" << c.t0 << ","
+                                  << c.t1 << "]");
                     CHECK(directionInCone(q.cone(), r.ray.dir));
                     CHECK(directionInCone(made->cone(), r.ray.dir));
                     // It meets the sphere where the beam says, within the cone's t-range.
                     CHECK(glm::length(r.ray.at(r.distance) - centre) == Approx(radius).epsilon(1e-6));
                     CHECK(r.distance <= q.cone().tMax);
                     CHECK(r.distance >= q.nearestLightDistance() * (1 - 1e-9));
+                    // Its disc point lies in the piece's polar rectangle.
+                    const Vec2 d = concentricDisc(c.s0 + xi1 * (c.s1 - c.s0), c.t0 + xi2 * (c.t1 - c.t0));
+                    const double rho = glm::length(d);
+                    CHECK(rho >= bounds.r0 - 1e-12);
+                    CHECK(rho <= bounds.r1 + 1e-12);
+                    if (rho > 1e-9) {
+                        double phi = std::atan2(d.y, d.x);
+                        if (phi < bounds.phi0 - 1e-9) phi += 2.0 * kPi;
+                        CHECK(phi >= bounds.phi0 - 1e-9);
+                        CHECK(phi <= bounds.phi1 + 1e-9);
+                    }
                 }
             }
             CHECK(weights == p.weight());
             CHECK(solid == Approx(p.solidAngle()).epsilon(1e-9));
-            // The pieces' regions tile the parent's: equal areas (r^2 dphi) summing to it.
-            double area = 0.0;
+            // The pieces' cells are the parent's quarters.
+            const DiscCell& e = p.region();
             for (const auto& q : pieces) {
-                const DiscRegion& d = q.region();
-                const double a = (d.r1 * d.r1 - d.r0 * d.r0) * (d.phi1 - d.phi0);
-                const DiscRegion& e = p.region();
-                CHECK(a == Approx(0.25 * (e.r1 * e.r1 - e.r0 * e.r0) * (e.phi1 - e.phi0)).epsilon(1e-12));
-                CHECK(d.r0 >= e.r0);
-                CHECK(d.r1 <= e.r1);
-                CHECK(d.phi0 >= e.phi0);
-                CHECK(d.phi1 <= e.phi1);
-                area += a;
+                const DiscCell& d = q.region();
+                CHECK((d.s1 - d.s0) == 0.5 * (e.s1 - e.s0));
+                CHECK((d.t1 - d.t0) == 0.5 * (e.t1 - e.t0));
+                CHECK(d.s0 >= e.s0);
+                CHECK(d.s1 <= e.s1);
+                CHECK(d.t0 >= e.t0);
+                CHECK(d.t1 <= e.t1);
             }
             p = pieces[rng() % 4];
         }

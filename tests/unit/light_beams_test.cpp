@@ -4,6 +4,7 @@
 // that hold every ray of the piece.
 #include <catch2/catch.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <random>
 #include <vector>
@@ -28,8 +29,13 @@ void checkSame(const BeamRay& a, const BeamRay& b) {
 // Rays of the piece lie in its cone and reach the light within its range.
 void checkInside(const LightBeams& beams, const LightPiece& p, std::mt19937_64& rng) {
     std::uniform_real_distribution<double> u01(0.0, 1.0);
-    for (int k = 0; k < 24; ++k) {
-        const Vec2 xi = k < 4 ? Vec2(k & 1, k >> 1 & 1) : (k < 12 ? Vec2(k < 8 ? 1.0 : 0.0, u01(rng)) : Vec2(u01(rng), u01(rng)));
+    for (int k = 0; k < 28; ++k) {
+        // The corners, points along each of the four edges, then inside.
+        const double along = u01(rng);
+        const int edge = (k - 4) / 4;
+        const Vec2 xi = k < 4    ? Vec2(k & 1, k >> 1 & 1)
+                        : k < 20 ? (edge < 2 ? Vec2(edge, along) : Vec2(along, edge - 2))
+                                 : Vec2(u01(rng), u01(rng));
         const BeamRay r = k == 0 ? p.central : beams.sample(p, xi);
         CHECK(angleBetween(p.cone.axis, r.ray.dir) <= p.cone.halfAngle);
         CHECK(r.distance <= p.cone.tMax);
@@ -127,7 +133,7 @@ TEST_CASE("Sphere beams: the tangent cone's equal-area pieces", "[lights]") {
         LightPiece p = beams.root();
         SphereShadowCone q = *reference;
         CHECK(p.cone.halfAngle == Approx(q.cone().halfAngle).margin(1e-12));
-        for (int level = 0; level < 4; ++level) {
+        for (int level = 0; level < 7; ++level) {  // past the table (DiscPieceTable::kLevels)
             checkSame(p.central, q.central());
             checkSame(beams.sample(p, {0.4, 0.9}), q.sample(0.4, 0.9));
             checkInside(beams, p, rng);
@@ -135,10 +141,10 @@ TEST_CASE("Sphere beams: the tangent cone's equal-area pieces", "[lights]") {
             REQUIRE(beams.split(p, pieces) == 4);
             const auto reference4 = q.split();
             for (int i = 0; i < 4; ++i) {
-                CHECK(pieces[i].a0 == reference4[i].region().r0);
-                CHECK(pieces[i].a1 == reference4[i].region().r1);
-                CHECK(pieces[i].b0 == reference4[i].region().phi0);
-                CHECK(pieces[i].b1 == reference4[i].region().phi1);
+                CHECK(pieces[i].a0 == reference4[i].region().s0);
+                CHECK(pieces[i].a1 == reference4[i].region().s1);
+                CHECK(pieces[i].b0 == reference4[i].region().t0);
+                CHECK(pieces[i].b1 == reference4[i].region().t1);
                 checkInside(beams, pieces[i], rng);
             }
             const int pick = int(rng() % 4);
@@ -152,6 +158,41 @@ TEST_CASE("Sphere beams: the tangent cone's equal-area pieces", "[lights]") {
     m.position = Vec3(0.0);
     m.radius = 1.0;
     CHECK_FALSE(LightBeams(m, Vec3(0.5, 0, 0), 0.0).valid());
+}
+
+TEST_CASE("Sphere beams: the level-K pieces' central rays are the 2^K x 2^K grid's points, bit for bit", "[lights]") {
+    // The grid method places a spherical light's n x n points at the images
+    // of the cells' centres under the concentric map (render/grid_light.cpp):
+    // ASOS pieces subdivided to level K sample the same points.
+    std::mt19937_64 rng(58);
+    std::uniform_real_distribution<double> u01(0.0, 1.0);
+    for (int trial = 0; trial < 20; ++trial) {
+        LightModel m;
+        m.shape = LightShape::Sphere;
+        m.position = Vec3(u01(rng), 6, u01(rng));
+        m.radius = 0.05 + 2 * u01(rng);
+        const Vec3 apex = m.position + randomUnit(rng) * (m.radius * (1.0 + std::pow(10.0, -2.0 + 4.0 * u01(rng))));
+        const LightBeams beams(m, apex, 1e-4);
+        const auto reference = SphereShadowCone::make(apex, m.position, m.radius, 1e-4);
+        REQUIRE(reference);
+        for (int level = 1; level <= 6; ++level) {
+            std::vector<BeamRay> rays;
+            beams.forEachCentralRay(beams.root(), level, [&](const BeamRay& r) { rays.push_back(r); });
+            const int n = 1 << level;
+            REQUIRE(rays.size() == std::size_t(n) * std::size_t(n));
+            int found = 0;
+            for (int j = 0; j < n; ++j)
+                for (int i = 0; i < n; ++i) {
+                    const Vec2 d = concentricDisc((i + 0.5) / n, (j + 0.5) / n);
+                    const Vec3 dir = reference->directionAt(d.x, d.y);
+                    found += std::count_if(rays.begin(), rays.end(), [&](const BeamRay& r) {
+                        return r.ray.dir == dir && r.distance == reference->distanceToLight(dir);
+                    }) == 1;
+                }
+            INFO("trial " << trial << " level " << level);
+            CHECK(found == n * n);
+        }
+    }
 }
 
 TEST_CASE("Central rays of descendants: the pieces' of repeated splits, in order, bit for bit", "[lights]") {

@@ -4,11 +4,13 @@
 // sphere, and its subdivision. The paper weights each sub-cone by I A, with A
 // the area of a disc facing the point; so the pieces are regions of equal area
 // of the light's apparent disc (any cross-section of the tangent cone
-// perpendicular to its axis, in unit-disc coordinates): polar rectangles
-// r in [r0, r1], phi in [phi0, phi1], split four ways into equal areas (the
-// level-0 disc into its quadrants; below, 2 x 2, 1 x 4 or 4 x 1 in r^2 and
-// phi, whichever keeps the pieces closest to square). Each piece is bounded
-// by its own cone.
+// perpendicular to its axis, in unit-disc coordinates). They are the images of
+// the quadtree's cells of the unit square [0, 1]^2 under Shirley and Chiu's
+// equal-area concentric map, the map the grid method places its points by
+// (render/grid_light.hpp): so a piece's central ray at level K is the grid's
+// point of the 2^K x 2^K array, and both methods sample the same points where
+// ASOS subdivides to the bottom. Each piece is bounded by its own cone, made
+// from the polar rectangle (radius and angle ranges) that holds its image.
 #include <array>
 #include <optional>
 
@@ -16,10 +18,29 @@
 
 namespace asos {
 
-// r in [r0, r1] (unit-disc radius), phi in [phi0, phi1] (radians).
-struct DiscRegion {
+// Shirley and Chiu's concentric map from [0, 1]^2 onto the unit disc: equal
+// areas to equal areas, square rings to circles, rays from the square's
+// centre to rays from the disc's.
+Vec2 concentricDisc(double s, double t);
+
+// A cell of the unit square, s in [s0, s1], t in [t0, t1].
+struct DiscCell {
+    double s0 = 0.0, s1 = 1.0, t0 = 0.0, t1 = 1.0;
+};
+
+// The polar rectangle r in [r0, r1], phi in [phi0, phi1] (phi1 - phi0 <=
+// pi / 2) that holds the concentric image of a cell lying in one quadrant of
+// the square (every cell but the whole square); the whole square's is the
+// whole disc, phi in [0, 2 pi]. The radius of the image of (s, t) is
+// max(|2s - 1|, |2t - 1|), and its angle grows with the angle of (2s - 1,
+// 2t - 1): the bounds are exact (the cell's corners and its nearest point to
+// the centre attain them).
+struct PolarBounds {
     double r0 = 0.0, r1 = 1.0, phi0 = 0.0, phi1 = 2.0 * kPi;
 };
+PolarBounds polarBounds(const DiscCell& cell);
+// Its r0 alone: the least radius of the cell's image.
+double innerRadius(const DiscCell& cell);
 
 class SphereShadowCone {
 public:
@@ -29,14 +50,15 @@ public:
     static std::optional<SphereShadowCone> make(const Vec3& point, const Vec3& centre, double radius,
                                                 double tMin = 0.0);
 
-    // The four level K+1 pieces, of equal area.
+    // The four level K+1 pieces, of equal area: the images of the cell's
+    // quarters, in the order s-half + 2 t-half.
     std::array<SphereShadowCone, 4> split() const;
 
-    // Toward the piece's area-median point (r^2 and phi at their middles;
-    // the light's centre for the level-0 cone); distance: to the sphere.
+    // Toward the image of the cell's centre (the light's centre for the
+    // level-0 cone); distance: to the sphere.
     BeamRay central() const;
-    // Toward the point r = sqrt(r0^2 + xi1 (r1^2 - r0^2)), phi = phi0 + xi2
-    // (phi1 - phi0): uniform over the piece's area for uniform xi1, xi2.
+    // Toward the image of (s0 + xi1 (s1 - s0), t0 + xi2 (t1 - t0)): uniform
+    // over the piece's area for uniform xi1, xi2.
     BeamRay sample(double xi1, double xi2) const;
 
     // The share of the apparent disc's area: 4^-level, exactly.
@@ -48,7 +70,9 @@ public:
     double solidAngle() const;
     // The tangent cone's half-angle, asin(radius / distance to the centre).
     double tangentHalfAngle() const { return alpha_; }
-    const DiscRegion& region() const { return region_; }
+    const DiscCell& region() const { return region_; }
+    // The polar rectangle holding the piece's image.
+    const PolarBounds& bounds() const { return bounds_; }
     const Vec3& point() const { return point_; }
     int level() const { return level_; }
     // The direction of the disc point (x, y) (unit-disc coordinates).
@@ -65,15 +89,16 @@ public:
     const Cone& cone() const { return cone_; }
 
 private:
-    SphereShadowCone(const Vec3& point, const Vec3& centre, double radius, const DiscRegion& region,
-                     int level, double tMin);
+    SphereShadowCone(const Vec3& point, const Vec3& centre, double radius, const DiscCell& region, int level,
+                     double tMin);
     double distanceAtDiscRadius(double r, double widen) const;
 
     Vec3 point_{0.0}, centre_{0.0};
     double radius_ = 1.0;
     double alpha_ = 0.0;
     Frame frame_{};
-    DiscRegion region_;
+    DiscCell region_;
+    PolarBounds bounds_;
     int level_ = 0;
     double tMin_ = 0.0;
     Cone cone_;

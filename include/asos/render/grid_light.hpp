@@ -14,7 +14,8 @@
 // its cell, so that every count samples the same light; with adaptive, on
 // POV-Ray's lattice from edge to edge (i / (n - 1)), jitter moving a point by
 // up to half a step (kept on the light). A spherical light's cells are mapped
-// onto its apparent disc by Shirley and Chiu's equal-area concentric map.
+// onto its apparent disc by Shirley and Chiu's equal-area concentric map
+// (geometry/beam_sphere.hpp, concentricDisc), as the ASOS beams' pieces are.
 #include <span>
 
 #include "asos/render/area_light.hpp"
@@ -27,9 +28,5 @@ std::span<const LightSample> gridAreaLightSamples(const Scene& scene, const Ligh
                                                   const AreaLightQuery& query,
                                                   AreaLightScratch& scratch, RenderCounters& counters,
                                                   bool culling = false);
-
-// Shirley and Chiu's concentric map from [0, 1]^2 onto the unit disc: equal
-// areas to equal areas, square rings to circles.
-Vec2 concentricDisc(double s, double t);
 
 }  // namespace asos

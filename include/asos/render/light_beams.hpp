@@ -3,7 +3,7 @@
 // shadows split them (paper: "Distributed Light Sources", Figure 5): the
 // pyray to a rectangle's corners and its quarters, the triangle to a
 // segment's ends and its halves, the cone tangent to a sphere and its
-// equal-area pieces. These are the pieces of geometry/beam_rect.hpp,
+// equal-area pieces (the concentric images of square cells). These are the pieces of geometry/beam_rect.hpp,
 // beam_segment.hpp and beam_sphere.hpp (the same regions, central rays,
 // random rays and weights; tests/unit/light_beams_test.cpp compares them),
 // made for speed: a piece is a small value, and its bounding cone is the
@@ -11,8 +11,9 @@
 // (the beams' smallest cones try every pair and triple of corners, forty).
 // A cone about the central ray holds the piece because the piece's corner
 // rays lie within it and the cone is convex (half-angle below pi/2); for a
-// sphere piece, because the central ray lies within the piece's angular
-// range (docs/accel.md, "Sphere pieces").
+// sphere piece, the corners of the polar rectangle that holds it, because the
+// central ray lies within its angular range (docs/accel.md, "Sphere pieces").
+#include <algorithm>
 #include <array>
 #include <bit>
 #include <cmath>
@@ -23,6 +24,7 @@
 #include <vector>
 
 #include "asos/geometry/beam.hpp"
+#include "asos/geometry/beam_sphere.hpp"
 #include "asos/render/light_model.hpp"
 
 namespace asos {
@@ -32,7 +34,7 @@ namespace asos {
 // pieces of that level (for random numbers), its central ray and its cone.
 struct LightPiece {
     // Rectangle: s in [a0, a1], t in [b0, b1]; segment: s in [a0, a1];
-    // sphere: disc radius r in [a0, a1], angle phi in [b0, b1].
+    // sphere: the concentric map's cell s in [a0, a1], t in [b0, b1].
     double a0 = 0.0, b0 = 0.0, a1 = 1.0, b1 = 1.0;
     int level = 0;
     std::uint64_t path = 0;
@@ -44,32 +46,23 @@ struct LightPiece {
     double tanHalf = std::numeric_limits<double>::quiet_NaN();
 };
 
-// The pieces of a sphere light's apparent disc in the disc's own coordinates
-// (radius r in [0, 1], angle phi): their layout does not depend on the point,
-// so the first levels are made once (discPieceTable()), with the cosines and
-// sines of their angles; deeper pieces are made as they are needed.
+// The pieces of a sphere light's apparent disc: the concentric images of the
+// quadtree's cells of the unit square (geometry/beam_sphere.hpp). Their
+// layout does not depend on the point, so the first levels are made once
+// (discPieceTable()), with their central points and the cosines and sines of
+// their polar bounds' angles; deeper pieces are made as they are needed.
 class DiscPieceTable {
 public:
     struct Trig {
         double c, s;
     };
     struct Piece {
-        double r0, r1, phi0, phi1;
-        double rc;                // the central radius (the median of the area)
-        Trig central, at0, at1;   // of the central angle, phi0 and phi1
+        DiscCell cell;
+        Vec2 centre;     // the image of the cell's centre on the unit disc
+        double r0, r1;   // the polar rectangle holding the image: radii,
+        Trig at0, at1;   // and its angles' cosines and sines
     };
-    // Cosines and sines of the few angles of one split, each computed once.
-    struct AngleCache {
-        static constexpr int kSize = 12;
-        struct Entry {
-            double phi;
-            Trig trig;
-        };
-        Entry entries[kSize];
-        int count = 0;
-        Trig of(double phi);
-    };
-    static Piece piece(double r0, double r1, double phi0, double phi1, AngleCache& angles);
+    static Piece piece(const DiscCell& cell);
 
     static constexpr int kLevels = 5;  // 1365 pieces
     DiscPieceTable();
@@ -266,9 +259,10 @@ private:
                     bool cone = true) const;
     int splitRectangle(const LightPiece& piece, LightPiece* out, bool cones) const;
     Vec3 rectPoint(double s, double t) const { return corner_ + s * edgeA_ + t * edgeB_; }
-    Vec3 discDirection(double r, double phi) const;
-    Vec3 discDirection(double r, const DiscPieceTable::Trig& t) const;
-    Vec3 discOffset(double r, const DiscPieceTable::Trig& t) const;  // the same, not normalised
+    // The direction through the unit disc's point p, and the offset (not
+    // normalised) through the point of radius r at the angle of t.
+    Vec3 discDirection(const Vec2& p) const;
+    Vec3 discOffset(double r, const DiscPieceTable::Trig& t) const;
     LightPiece makeDiscPiece(const DiscPieceTable::Piece& d, int level, std::uint64_t path, bool cone) const;
     double sphereDistance(const Vec3& dir) const;
     double sphereDistanceAtRadius(double r, double widen) const;
