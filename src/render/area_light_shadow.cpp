@@ -459,7 +459,27 @@ private:
     // a rule exact for quadratics: the central ray and the probes
     // (LightBeams::ruleWeights); otherwise the pieces are refined alike,
     // down to MAX.
+    //
+    // The tangent plane (the horizon) through a piece is the exception: the
+    // clamped cosine has a kink along it, which second differences do not
+    // bound (a rule through probes on both sides overestimates a convex kink,
+    // by 1.2 EPS on a segment in the tests), so neither rule is trusted
+    // across it: such a piece is refined to MAX, where its central ray alone
+    // carries it, as a grid point would. Rectangles and segments know exactly
+    // and without rays whether the horizon crosses a piece
+    // (LightBeams::horizonSide); sphere pieces find it from their five
+    // directions.
     void refineLit(const LightPiece& piece) {
+        const bool deepest = piece.level >= model_.asos.maxLevel;
+        switch (beams_.horizonSide(piece, q_.normal)) {
+            case HorizonSide::Below: return;  // it would light nothing
+            case HorizonSide::Across:
+                if (deepest) emit(piece.central, beams_.share(piece.level));
+                else refineChildren(piece);
+                return;
+            case HorizonSide::Above:
+            case HorizonSide::Unknown: break;
+        }
         BeamRay probes[4];
         const int n = beams_.probeRays(piece, probes);
         // Each direction's emitter weight and cosine of incidence, computed
@@ -475,22 +495,33 @@ private:
         for (int i = 0; i < n; i += 2)
             differences += std::abs(0.5 * (measure(i, probes[i].ray.dir) + measure(i + 1, probes[i + 1].ray.dir)) - centre);
         const double share = beams_.share(piece.level);
+        bool above = cosine[4] >= kPovEpsilon, below = !above;
+        for (int i = 0; i < n; ++i) (cosine[i] >= kPovEpsilon ? above : below) = true;
+        if (above && below) {
+            if (deepest) emitMeasured(piece.central, share, weight[4], cosine[4]);
+            else refineChildren(piece);
+            return;
+        }
         if (differences / 3.0 <= model_.asos.eps / 64.0) {
             emitMeasured(piece.central, share, weight[4], cosine[4]);
             return;
         }
-        if (piece.level < model_.asos.maxLevel && 0.5 * differences > model_.asos.eps) {
-            // No cones: nothing is classified here. A child wholly below the
-            // horizon carries nothing (every probe's cosine is clamped to 0,
-            // and emit drops its central ray), as if it had been left out.
-            LightPiece children[LightBeams::kMaxChildren];
-            const int count = beams_.split(piece, children, false);
-            for (int i = 0; i < count; ++i) refineLit(children[i]);
+        if (!deepest && 0.5 * differences > model_.asos.eps) {
+            refineChildren(piece);
             return;
         }
         const auto [centreWeight, probeWeight] = beams_.ruleWeights(piece);
         emitMeasured(piece.central, share * centreWeight, weight[4], cosine[4]);
         for (int i = 0; i < n; ++i) emitMeasured(probes[i], share * probeWeight, weight[i], cosine[i]);
+    }
+
+    // refineLit over the piece's children. No cones: nothing is classified
+    // here. A child wholly below the horizon carries nothing, as if it had
+    // been left out.
+    void refineChildren(const LightPiece& piece) {
+        LightPiece children[LightBeams::kMaxChildren];
+        const int count = beams_.split(piece, children, false);
+        for (int i = 0; i < count; ++i) refineLit(children[i]);
     }
 
     // emit, with the direction's emitter weight and cosine of incidence

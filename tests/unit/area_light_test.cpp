@@ -144,6 +144,59 @@ TEST_CASE("An unoccluded rectangular light is integrated to EPS, near and far, h
     CHECK(far.received(LightMethod::Grid, settings, {0, 0, 0}, up) == Approx(1.0).epsilon(1e-6));
 }
 
+TEST_CASE("Lights across the surface's horizon: the clamped cosine's kink refined, not smoothed over",
+          "[lights]") {
+    // Unoccluded lights that the shaded point's tangent plane cuts (a
+    // terminator): the cosine of incidence is clamped at the plane, a kink
+    // that second differences do not bound. ASOS refines the pieces it
+    // crosses to MAX, where the central rays alone carry them, so its error
+    // is that of MAX's pieces along the kink: checked here at EPS / 8 (the
+    // errors are 0.02-0.04 EPS). The five-point rule accepted across the kink
+    // missed the segment's by 1.2 EPS at the last normal.
+    const AsosSettings settings{1.0 / 64.0, 4, false};
+    const Vec3 origin(0.0);
+    int checked = 0;
+    for (double tilt : {-0.6, -0.25, 0.0, 0.3, 0.55}) {
+        // The normal leans toward +x: the plane x cos + y sin = 0 passes
+        // through every light below, centred straight above.
+        const Vec3 n = glm::normalize(Vec3(1.0, tilt, 0.0));
+        INFO("normal " << n.x << " " << n.y);
+        {
+            LightSetupScene s(areaLight({0, 2, 0}, {3, 0, 0}, {0, 0, 3}, 4, 4), {});
+            const LightModel model = makeLightModel(s.d.lights[0], settings);
+            const double exact = exactRectangle(model, origin, n);
+            const double asos = s.received(LightMethod::Asos, settings, origin, n);
+            INFO("rectangle: exact " << exact << ", asos " << asos);
+            CHECK(std::abs(asos - exact) <= settings.eps / 8.0);
+        }
+        {
+            LightSetupScene s(areaLight({0, 2, 0}, {3, 0, 0}, {0, 0, 0}, 16, 1), {});
+            const double exact = integrate(20000, 1, [&](double f, double) {
+                return std::max(0.0, glm::dot(n, glm::normalize(Vec3(-1.5 + 3.0 * f, 2.0, 0.0))));
+            });
+            const double asos = s.received(LightMethod::Asos, settings, origin, n);
+            INFO("segment: exact " << exact << ", asos " << asos);
+            CHECK(std::abs(asos - exact) <= settings.eps / 8.0);
+        }
+        {
+            LightSetupScene s(areaLight({0, 2, 0}, {3, 0, 0}, {0, 0, 3}, 8, 8, true), {});
+            const Vec3 toCentre(0, 2, 0);
+            const double tanAlpha = std::tan(std::asin(1.5 / 2.0));
+            const Frame frame = Frame::around(toCentre / 2.0);
+            // Uniform over the apparent disc by the concentric map (equal areas).
+            const double exact = integrate(500, 500, [&](double s1, double s2) {
+                const Vec2 d = concentricDisc(s1, s2);
+                return std::max(0.0, glm::dot(n, glm::normalize(frame.toWorld(tanAlpha * d.x, tanAlpha * d.y, 1.0))));
+            });
+            const double asos = s.received(LightMethod::Asos, settings, origin, n);
+            INFO("sphere: exact " << exact << ", asos " << asos);
+            CHECK(std::abs(asos - exact) <= settings.eps / 8.0);
+        }
+        ++checked;
+    }
+    CHECK(checked == 5);
+}
+
 TEST_CASE("A spherical light partly hidden by a sphere: across the penumbra within EPS",
           "[lights]") {
     // EPS 1/32 and a MAX deep enough that the paper's bound, not MAX, stops.

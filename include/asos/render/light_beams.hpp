@@ -79,6 +79,11 @@ private:
 // The one table, made on first use and constant after.
 const DiscPieceTable& discPieceTable();
 
+// Where a piece lies against the plane through the apex with a given normal
+// (LightBeams::horizonSide): every direction above it, every direction at or
+// below it, across it, or not known without rays.
+enum class HorizonSide { Above, Below, Across, Unknown };
+
 class LightBeams {
 public:
     // Beams from `apex` toward an area light (model.isArea()); rays start at
@@ -183,6 +188,22 @@ public:
     // coordinates) 1/3 and 1/6; the whole disc 1/2 and 1/8; a segment
     // (Simpson's rule) 2/3 and 1/6.
     std::pair<double, double> ruleWeights(const LightPiece& piece) const;
+    // Whether the plane through the apex with this normal crosses the piece,
+    // exactly up to rounding (Across where it is in doubt): the height of a
+    // rectangle's or segment's point above the plane is affine in its
+    // coordinates, so its range over the piece is at the piece's corners.
+    // Sphere pieces: Unknown.
+    HorizonSide horizonSide(const LightPiece& piece, const Vec3& normal) const {
+        if (shape_ != LightShape::Rectangle && shape_ != LightShape::Segment) return HorizonSide::Unknown;
+        const double h0 = glm::dot(normal, corner_ - apex_), hA = glm::dot(normal, edgeA_);
+        const double hB = shape_ == LightShape::Rectangle ? glm::dot(normal, edgeB_) : 0.0;
+        const double lo = h0 + std::min(piece.a0 * hA, piece.a1 * hA) + std::min(piece.b0 * hB, piece.b1 * hB);
+        const double hi = h0 + std::max(piece.a0 * hA, piece.a1 * hA) + std::max(piece.b0 * hB, piece.b1 * hB);
+        const double margin = 1e-12 * (std::abs(h0) + std::abs(hA) + std::abs(hB));
+        if (lo > margin) return HorizonSide::Above;
+        if (hi < -margin) return HorizonSide::Below;
+        return HorizonSide::Across;
+    }
     // The emitter's weighting along a direction: |cos theta| between the
     // rectangle's normal and the direction; 1 for segments and spheres.
     // Inline: it is asked for every sample.
