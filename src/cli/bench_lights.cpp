@@ -257,11 +257,11 @@ int runBenchLights(const BenchLightsArgs& args) {
             const std::optional<Run> run = render(scene, s, std::max(args.passes, 1));
             if (!run) return false;
             const Errors e = compare(run->image, *reference);
-            std::printf("%-12s %-34s %9.2f %12s %11s %10.5f %10.4f", kind.name, what.c_str(), run->seconds,
+            std::printf("%-12s %-34s %9.2f %12s %11s %10.6f %10.4f", kind.name, what.c_str(), run->seconds,
                         count(run->shadowRays).c_str(), count(run->coneTests).c_str(), e.rms, e.max);
             if (converged) {
                 const Errors c = compare(run->image, *converged, &run->samples);
-                std::printf(" %10.5f %10.4f", c.rms, c.max);
+                std::printf(" %10.6f %10.4f", c.rms, c.max);
             }
             std::printf("\n");
             std::fflush(stdout);
