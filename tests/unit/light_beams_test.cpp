@@ -43,6 +43,21 @@ void checkInside(const LightBeams& beams, const LightPiece& p, std::mt19937_64& 
     }
 }
 
+// A spherical light and a point outside it, from just outside to far away.
+struct SphereLightCase {
+    LightModel model;
+    Vec3 apex;
+};
+SphereLightCase randomSphereLight(std::mt19937_64& rng) {
+    std::uniform_real_distribution<double> u01(0.0, 1.0);
+    LightModel m;
+    m.shape = LightShape::Sphere;
+    m.position = Vec3(u01(rng), 6, u01(rng));
+    m.radius = 0.05 + 2 * u01(rng);
+    const double distance = m.radius * (1.0 + std::pow(10.0, -2.0 + 4.0 * u01(rng)));
+    return {m, m.position + randomUnit(rng) * distance};
+}
+
 }  // namespace
 
 TEST_CASE("Rectangle beams: the shadow pyray's quarters, with cones about their central rays", "[lights]") {
@@ -118,14 +133,8 @@ TEST_CASE("Segment beams: the shadow pyray's halves", "[lights]") {
 
 TEST_CASE("Sphere beams: the tangent cone's equal-area pieces", "[lights]") {
     std::mt19937_64 rng(33);
-    std::uniform_real_distribution<double> u01(0.0, 1.0);
     for (int trial = 0; trial < 100; ++trial) {
-        LightModel m;
-        m.shape = LightShape::Sphere;
-        m.position = Vec3(u01(rng), 6, u01(rng));
-        m.radius = 0.05 + 2 * u01(rng);
-        const double distance = m.radius * (1.0 + std::pow(10.0, -2.0 + 4.0 * u01(rng)));
-        const Vec3 apex = m.position + randomUnit(rng) * distance;
+        const auto [m, apex] = randomSphereLight(rng);
         const LightBeams beams(m, apex, 1e-4);
         const auto reference = SphereShadowCone::make(apex, m.position, m.radius, 1e-4);
         REQUIRE(beams.valid() == reference.has_value());
@@ -165,13 +174,8 @@ TEST_CASE("Sphere beams: the level-K pieces' central rays are the 2^K x 2^K grid
     // of the cells' centres under the concentric map (render/grid_light.cpp):
     // ASOS pieces subdivided to level K sample the same points.
     std::mt19937_64 rng(58);
-    std::uniform_real_distribution<double> u01(0.0, 1.0);
     for (int trial = 0; trial < 20; ++trial) {
-        LightModel m;
-        m.shape = LightShape::Sphere;
-        m.position = Vec3(u01(rng), 6, u01(rng));
-        m.radius = 0.05 + 2 * u01(rng);
-        const Vec3 apex = m.position + randomUnit(rng) * (m.radius * (1.0 + std::pow(10.0, -2.0 + 4.0 * u01(rng))));
+        const auto [m, apex] = randomSphereLight(rng);
         const LightBeams beams(m, apex, 1e-4);
         const auto reference = SphereShadowCone::make(apex, m.position, m.radius, 1e-4);
         REQUIRE(reference);
