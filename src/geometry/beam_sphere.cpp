@@ -97,6 +97,17 @@ double sectorSolidAngle(double a0, double a1, double b0, double b1, double T) {
 
 }  // namespace
 
+TangentCone TangentCone::make(const Vec3& point, const Vec3& centre, double radius) {
+    TangentCone c;
+    const Vec3 toCentre = centre - point;
+    c.distance = glm::length(toCentre);
+    c.frame = Frame::around(toCentre / c.distance);
+    c.sinAlpha = std::min(1.0, radius / c.distance);
+    c.tanAlpha = std::tan(std::asin(c.sinAlpha));
+    c.cos2Alpha = std::max(0.0, (c.distance - radius) * (c.distance + radius)) / (c.distance * c.distance);
+    return c;
+}
+
 std::optional<SphereShadowCone> SphereShadowCone::make(const Vec3& point, const Vec3& centre,
                                                        double radius, double tMin) {
     if (!(radius > 0.0)) throw std::invalid_argument("spherical light of radius <= 0");
@@ -108,10 +119,9 @@ std::optional<SphereShadowCone> SphereShadowCone::make(const Vec3& point, const 
 SphereShadowCone::SphereShadowCone(const Vec3& point, const Vec3& centre, double radius,
                                    const DiscCell& region, int level, double tMin)
     : point_(point), centre_(centre), radius_(radius), region_(region), level_(level), tMin_(tMin) {
-    const Vec3 toCentre = centre_ - point_;
-    const double distance = glm::length(toCentre);
-    alpha_ = std::asin(std::min(1.0, radius_ / distance));
-    frame_ = Frame::around(toCentre / distance);
+    tangent_ = TangentCone::make(point_, centre_, radius_);
+    alpha_ = std::asin(tangent_.sinAlpha);
+    frame_ = tangent_.frame;
     if (level_ > 0) bounds_ = polarBounds(region_);
     const double far = distanceAtDiscRadius(bounds_.r1, 1.0) * (1.0 + 1e-12);
     if (level_ == 0) {
@@ -145,11 +155,6 @@ std::array<SphereShadowCone, 4> SphereShadowCone::split() const {
     return {piece(0), piece(1), piece(2), piece(3)};
 }
 
-Vec3 SphereShadowCone::directionAt(double x, double y) const {
-    const double tanAlpha = std::tan(alpha_);
-    return glm::normalize(frame_.toWorld(tanAlpha * x, tanAlpha * y, 1.0));
-}
-
 double SphereShadowCone::distanceToLight(const Vec3& dir) const {
     const Vec3 toCentre = centre_ - point_;
     const double along = glm::dot(dir, toCentre);
@@ -172,19 +177,13 @@ double SphereShadowCone::distanceAtDiscRadius(double r, double widen) const {
 }
 
 BeamRay SphereShadowCone::central() const {
-    Vec3 dir = frame_.w;
-    if (level_ > 0) {
-        const Vec2 p = concentricDisc(0.5 * (region_.s0 + region_.s1), 0.5 * (region_.t0 + region_.t1));
-        dir = directionAt(p.x, p.y);
-    }
-    return {Ray{point_, dir}, distanceToLight(dir)};
+    if (level_ == 0) return tangent_.ray(point_, Vec2(0.0));
+    return tangent_.ray(point_, concentricDisc(0.5 * (region_.s0 + region_.s1), 0.5 * (region_.t0 + region_.t1)));
 }
 
 BeamRay SphereShadowCone::sample(double xi1, double xi2) const {
-    const Vec2 p = concentricDisc(region_.s0 + xi1 * (region_.s1 - region_.s0),
-                                  region_.t0 + xi2 * (region_.t1 - region_.t0));
-    const Vec3 dir = directionAt(p.x, p.y);
-    return {Ray{point_, dir}, distanceToLight(dir)};
+    return tangent_.ray(point_, concentricDisc(region_.s0 + xi1 * (region_.s1 - region_.s0),
+                                               region_.t0 + xi2 * (region_.t1 - region_.t0)));
 }
 
 double SphereShadowCone::weight() const { return std::ldexp(1.0, -2 * level_); }

@@ -40,8 +40,7 @@ public:
             case LightShape::Segment: target = model_.start + s * (model_.end - model_.start); break;
             case LightShape::Sphere: {
                 const Vec2 disc = concentricDisc(s, t);
-                const Vec3 dir = sphere_->directionAt(disc.x, disc.y);
-                return {Ray{point_, dir}, sphere_->distanceToLight(dir)};
+                return sphere_->rayAt(disc.x, disc.y);
             }
             case LightShape::Point: target = model_.position; break;
         }

@@ -47,9 +47,9 @@ LightBeams::LightBeams(const LightModel& model, const Vec3& apex, double tMin)
             const Vec3 toCentre = centre_ - apex_;
             distance_ = glm::length(toCentre);
             if (!(radius_ > 0.0) || !(distance_ > radius_ * (1.0 + 1e-12))) return;
-            alpha_ = std::asin(std::min(1.0, radius_ / distance_));
-            tanAlpha_ = std::tan(alpha_);
-            frame_ = Frame::around(toCentre / distance_);
+            // SphereShadowCone's tangent cone, made alike: the same rays.
+            tangent_ = TangentCone::make(apex_, centre_, radius_);
+            alpha_ = std::asin(tangent_.sinAlpha);
             valid_ = true;
             return;
         }
@@ -57,25 +57,10 @@ LightBeams::LightBeams(const LightModel& model, const Vec3& apex, double tMin)
     }
 }
 
-Vec3 LightBeams::discDirection(const Vec2& p) const {
-    // SphereShadowCone::directionAt's expression: the grid's points are made
-    // by it, and a level-K piece's central ray is the 2^K x 2^K grid's point
-    // bit for bit.
-    return glm::normalize(frame_.toWorld(tanAlpha_ * p.x, tanAlpha_ * p.y, 1.0));
-}
-
-double LightBeams::sphereDistance(const Vec3& dir) const {
-    const Vec3 toCentre = centre_ - apex_;
-    const double along = glm::dot(dir, toCentre);
-    const Vec3 off = glm::cross(dir, toCentre);
-    const double inside = radius_ * radius_ - glm::dot(off, off);
-    return along - std::sqrt(std::max(0.0, inside));
-}
-
 double LightBeams::sphereDistanceAtRadius(double r, double widen) const {
     // As SphereShadowCone: near the rim the distance is the square root of a
     // small difference; `widen` moves it out (in) past the uncertainty.
-    const double tanPsi = tanAlpha_ * r;
+    const double tanPsi = tangent_.tanAlpha * r;
     const double cosPsi = 1.0 / std::sqrt(1.0 + tanPsi * tanPsi);
     const double sinPsi = tanPsi * cosPsi;
     const double inside = radius_ * radius_ - distance_ * distance_ * sinPsi * sinPsi -
@@ -141,8 +126,8 @@ LightPiece LightBeams::make(double a0, double b0, double a1, double b1, int leve
         case LightShape::Sphere: {
             if (level > 0) return makeDiscPiece(DiscPieceTable::piece(DiscCell{a0, a1, b0, b1}), level, path, cone);
             // The whole disc: the tangent cone.
-            p.central = {Ray{apex_, frame_.w}, sphereDistance(frame_.w)};
-            p.cone = {apex_, frame_.w, alpha_ + kConeAnglePad, tMin_, sphereDistanceAtRadius(1.0, 1.0) * (1.0 + 1e-12)};
+            p.central = tangent_.ray(apex_, 0.0, 0.0, 0.0, 1.0);
+            p.cone = {apex_, tangent_.frame.w, alpha_ + kConeAnglePad, tMin_, sphereDistanceAtRadius(1.0, 1.0) * (1.0 + 1e-12)};
             break;
         }
         case LightShape::Point: break;
@@ -152,8 +137,13 @@ LightPiece LightBeams::make(double a0, double b0, double a1, double b1, int leve
 
 DiscPieceTable::Piece DiscPieceTable::piece(const DiscCell& cell) {
     const PolarBounds b = polarBounds(cell);
+    const Vec2 centre = concentricDisc(0.5 * (cell.s0 + cell.s1), 0.5 * (cell.t0 + cell.t1));
+    // As TangentCone::ray(origin, p) computes them.
+    const double rho2 = std::min(1.0, centre.x * centre.x + centre.y * centre.y);
     return {cell,
-            concentricDisc(0.5 * (cell.s0 + cell.s1), 0.5 * (cell.t0 + cell.t1)),
+            centre,
+            rho2,
+            std::sqrt(1.0 - rho2),
             b.r0,
             b.r1,
             {std::cos(b.phi0), std::sin(b.phi0)},
@@ -182,13 +172,14 @@ const DiscPieceTable& discPieceTable() {
 }
 
 Vec3 LightBeams::discOffset(double r, const DiscPieceTable::Trig& t) const {
-    return frame_.toWorld(tanAlpha_ * r * t.c, tanAlpha_ * r * t.s, 1.0);
+    const double k = tangent_.tanAlpha * r;
+    return tangent_.frame.toWorld(k * t.c, k * t.s, 1.0);
 }
 
 LightPiece LightBeams::makeDiscPiece(const DiscPieceTable::Piece& d, int level, std::uint64_t path, bool cone) const {
     LightPiece p{d.cell.s0, d.cell.t0, d.cell.s1, d.cell.t1, level, path, {}, {}};
-    const Vec3 dir = discDirection(d.centre);
-    p.central = {Ray{apex_, dir}, sphereDistance(dir)};
+    p.central = tangent_.ray(apex_, d.centre.x, d.centre.y, d.rho2, d.rim);
+    const Vec3& dir = p.central.ray.dir;
     if (!cone) return p;
     // Unnormalised: coneAbout needs no unit directions.
     const Vec3 corners[4] = {discOffset(d.r0, d.at0), discOffset(d.r0, d.at1), discOffset(d.r1, d.at0),
@@ -267,8 +258,7 @@ BeamRay LightBeams::sample(const LightPiece& p, const Vec2& xi) const {
             return toward(rectPoint(p.a0 + xi.x * (p.a1 - p.a0), p.b0 + xi.y * (p.b1 - p.b0)));
         case LightShape::Segment: return toward(corner_ + (p.a0 + xi.x * (p.a1 - p.a0)) * edgeA_);
         case LightShape::Sphere: {
-            const Vec3 dir = discDirection(concentricDisc(p.a0 + xi.x * (p.a1 - p.a0), p.b0 + xi.y * (p.b1 - p.b0)));
-            return {Ray{apex_, dir}, sphereDistance(dir)};
+            return tangent_.ray(apex_, concentricDisc(p.a0 + xi.x * (p.a1 - p.a0), p.b0 + xi.y * (p.b1 - p.b0)));
         }
         case LightShape::Point: break;
     }
@@ -298,8 +288,7 @@ double LightBeams::nearestLightDistance(const LightPiece& p) const {
 
 int LightBeams::probeRays(const LightPiece& p, BeamRay* out) const {
     const auto disc = [&](const Vec2& point) {
-        const Vec3 dir = discDirection(point);
-        return BeamRay{Ray{apex_, dir}, sphereDistance(dir)};
+        return tangent_.ray(apex_, point);
     };
     switch (shape_) {
         case LightShape::Rectangle: {

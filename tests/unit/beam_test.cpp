@@ -320,6 +320,39 @@ TEST_CASE("Concentric map: polar bounds of cells and the pieces' solid angles ag
     }
 }
 
+TEST_CASE("Tangent cone rays: unit directions, and distances to the sphere from far away to just outside",
+          "[beam]") {
+    std::mt19937_64 rng(28);
+    std::uniform_real_distribution<double> u01(0.0, 1.0);
+    for (int trial = 0; trial < 200; ++trial) {
+        const Vec3 centre(u01(rng), 6, u01(rng));
+        const double radius = 0.05 + 2 * u01(rng);
+        const double distance = radius * (1.0 + std::pow(10.0, -6.0 + 8.0 * u01(rng)));
+        const Vec3 point = centre + randomUnit(rng) * distance;
+        const TangentCone cone = TangentCone::make(point, centre, radius);
+        CHECK(cone.sinAlpha == Approx(radius / distance).epsilon(1e-12));
+        CHECK(cone.cos2Alpha == Approx(1.0 - (radius / distance) * (radius / distance)).epsilon(1e-6));
+        for (int k = 0; k < 12; ++k) {
+            // The centre, the rim, and points between.
+            const double rho = k == 0 ? 0.0 : (k < 4 ? 1.0 : u01(rng));
+            const double phi = 2.0 * kPi * u01(rng);
+            const BeamRay r = cone.ray(point, Vec2(rho * std::cos(phi), rho * std::sin(phi)));
+            CHECK(glm::length(r.ray.dir) == Approx(1.0).epsilon(1e-15));
+            // The hit is on the sphere, to the rounding of the point's own
+            // coordinates (which the distance to the centre carries).
+            CHECK(std::abs(glm::length(r.ray.at(r.distance) - centre) - radius) <= 1e-13 * (distance + 6.0));
+            // The angle from the centre's direction is atan(rho tan alpha).
+            CHECK(angleBetween(r.ray.dir, centre - point) ==
+                  Approx(std::atan(rho * cone.tanAlpha)).margin(1e-12));
+            // At the rim, the distance to the tangent point: a square root of
+            // the direction's rounding (1e-16) moves it by about 1e-8.
+            if (rho == 1.0)
+                CHECK(std::abs(r.distance - std::sqrt((distance - radius) * (distance + radius))) <= 1e-7 * distance);
+            if (rho == 0.0) CHECK(std::abs(r.distance - (distance - radius)) <= 1e-13 * distance);
+        }
+    }
+}
+
 TEST_CASE("Sphere shadow cone: the tangent cone, equal-area pieces, rays inside their cones", "[beam]") {
     std::mt19937_64 rng(26);
     std::uniform_real_distribution<double> u01(0.0, 1.0);

@@ -187,10 +187,11 @@ TEST_CASE("Sphere beams: the level-K pieces' central rays are the 2^K x 2^K grid
             int found = 0;
             for (int j = 0; j < n; ++j)
                 for (int i = 0; i < n; ++i) {
+                    // The grid's point (render/grid_light.cpp makes it so).
                     const Vec2 d = concentricDisc((i + 0.5) / n, (j + 0.5) / n);
-                    const Vec3 dir = reference->directionAt(d.x, d.y);
+                    const BeamRay point = reference->rayAt(d.x, d.y);
                     found += std::count_if(rays.begin(), rays.end(), [&](const BeamRay& r) {
-                        return r.ray.dir == dir && r.distance == reference->distanceToLight(dir);
+                        return r.ray.dir == point.ray.dir && r.distance == point.distance;
                     }) == 1;
                 }
             INFO("trial " << trial << " level " << level);

@@ -11,7 +11,9 @@
 // point of the 2^K x 2^K array, and both methods sample the same points where
 // ASOS subdivides to the bottom. Each piece is bounded by its own cone, made
 // from the polar rectangle (radius and angle ranges) that holds its image.
+#include <algorithm>
 #include <array>
+#include <cmath>
 #include <optional>
 
 #include "asos/geometry/beam.hpp"
@@ -41,6 +43,36 @@ struct PolarBounds {
 PolarBounds polarBounds(const DiscCell& cell);
 // Its r0 alone: the least radius of the cell's image.
 double innerRadius(const DiscCell& cell);
+
+// The cone from a point tangent to a sphere, as a map from the unit disc (the
+// cone's cross-section) onto rays: the shadow cone below, the grid's points
+// and the renderer's beams all make their rays by ray(), so that they are the
+// same rays bit for bit.
+struct TangentCone {
+    Frame frame{};                // w toward the centre
+    double distance = 1.0;        // to the centre, d
+    double tanAlpha = 0.0, sinAlpha = 0.0;
+    double cos2Alpha = 1.0;       // cos^2 alpha, as (d - r)(d + r) / d^2
+    // Requires distance > radius > 0.
+    static TangentCone make(const Vec3& point, const Vec3& centre, double radius);
+    // The ray from `origin` (the point) through the disc point (x, y), with
+    // rho2 = x^2 + y^2 <= 1 and rim = sqrt(1 - rho2) given: the direction
+    // (w + tan alpha (x u + y v)) cos psi, cos psi = 1 / sqrt(1 + tan^2 alpha
+    // rho2), and the distance to the sphere along it, d cos psi (1 - sin alpha
+    // rim), computed as d cos psi (cos^2 alpha + sin^2 alpha rho2) / (1 + sin
+    // alpha rim) (the same, without the difference that loses digits where
+    // the point is near the sphere).
+    BeamRay ray(const Vec3& origin, double x, double y, double rho2, double rim) const {
+        const double cosPsi = 1.0 / std::sqrt(1.0 + tanAlpha * tanAlpha * rho2);
+        const Vec3 dir = frame.toWorld(tanAlpha * x, tanAlpha * y, 1.0) * cosPsi;
+        const double t = distance * cosPsi * (cos2Alpha + sinAlpha * sinAlpha * rho2) / (1.0 + sinAlpha * rim);
+        return {Ray{origin, dir}, t};
+    }
+    BeamRay ray(const Vec3& origin, const Vec2& p) const {
+        const double rho2 = std::min(1.0, p.x * p.x + p.y * p.y);
+        return ray(origin, p.x, p.y, rho2, std::sqrt(1.0 - rho2));
+    }
+};
 
 class SphereShadowCone {
 public:
@@ -76,7 +108,9 @@ public:
     const Vec3& point() const { return point_; }
     int level() const { return level_; }
     // The direction of the disc point (x, y) (unit-disc coordinates).
-    Vec3 directionAt(double x, double y) const;
+    Vec3 directionAt(double x, double y) const { return tangent_.ray(point_, Vec2(x, y)).ray.dir; }
+    // The ray through the disc point (x, y), to the sphere (TangentCone::ray).
+    BeamRay rayAt(double x, double y) const { return tangent_.ray(point_, Vec2(x, y)); }
     // The distance along a unit direction from the point to the sphere
     // (rays of the tangent cone; at its rim, the distance to the tangent
     // point).
@@ -97,6 +131,7 @@ private:
     double radius_ = 1.0;
     double alpha_ = 0.0;
     Frame frame_{};
+    TangentCone tangent_;
     DiscCell region_;
     PolarBounds bounds_;
     int level_ = 0;

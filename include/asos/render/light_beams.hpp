@@ -58,8 +58,9 @@ public:
     };
     struct Piece {
         DiscCell cell;
-        Vec2 centre;     // the image of the cell's centre on the unit disc
-        double r0, r1;   // the polar rectangle holding the image: radii,
+        Vec2 centre;       // the image of the cell's centre on the unit disc,
+        double rho2, rim;  // its |centre|^2 and sqrt(1 - |centre|^2)
+        double r0, r1;     // the polar rectangle holding the image: radii,
         Trig at0, at1;   // and its angles' cosines and sines
     };
     static Piece piece(const DiscCell& cell);
@@ -280,12 +281,10 @@ private:
                     bool cone = true) const;
     int splitRectangle(const LightPiece& piece, LightPiece* out, bool cones) const;
     Vec3 rectPoint(double s, double t) const { return corner_ + s * edgeA_ + t * edgeB_; }
-    // The direction through the unit disc's point p, and the offset (not
-    // normalised) through the point of radius r at the angle of t.
-    Vec3 discDirection(const Vec2& p) const;
+    // The offset (not normalised) through the disc's point of radius r at
+    // the angle of t.
     Vec3 discOffset(double r, const DiscPieceTable::Trig& t) const;
     LightPiece makeDiscPiece(const DiscPieceTable::Piece& d, int level, std::uint64_t path, bool cone) const;
-    double sphereDistance(const Vec3& dir) const;
     double sphereDistanceAtRadius(double r, double widen) const;
     // Inline: forEachDescendant makes one per point sample.
     __attribute__((always_inline)) BeamRay toward(const Vec3& target) const {
@@ -309,8 +308,8 @@ private:
     double footS_ = 0.0, footT_ = 0.0, height_ = 0.0;
     // Sphere.
     Vec3 centre_{0.0};
-    double radius_ = 0.0, distance_ = 0.0, tanAlpha_ = 0.0, alpha_ = 0.0;
-    Frame frame_{};
+    double radius_ = 0.0, distance_ = 0.0, alpha_ = 0.0;
+    TangentCone tangent_;
 };
 
 }  // namespace asos
