@@ -45,6 +45,21 @@ struct Orthographic {
     Ray operator()(double u, double v) const { return {centre + (2 * u - 1) * right + (2 * v - 1) * up, dir}; }
 };
 
+// A sphere and a point outside it, 10^lo to 10^(lo + span) radii beyond its
+// surface (from just outside to far away).
+struct SphereAndPoint {
+    Vec3 centre;
+    double radius, distance;
+    Vec3 point;
+};
+SphereAndPoint randomSphereAndPoint(std::mt19937_64& rng, double lo, double span) {
+    std::uniform_real_distribution<double> u01(0.0, 1.0);
+    const Vec3 centre(u01(rng), 6, u01(rng));
+    const double radius = 0.05 + 2 * u01(rng);
+    const double distance = radius * (1.0 + std::pow(10.0, lo + span * u01(rng)));
+    return {centre, radius, distance, centre + randomUnit(rng) * distance};
+}
+
 }  // namespace
 
 TEST_CASE("Smallest enclosing cone holds its directions and cannot shrink", "[beam]") {
@@ -325,10 +340,7 @@ TEST_CASE("Tangent cone rays: unit directions, and distances to the sphere from 
     std::mt19937_64 rng(28);
     std::uniform_real_distribution<double> u01(0.0, 1.0);
     for (int trial = 0; trial < 200; ++trial) {
-        const Vec3 centre(u01(rng), 6, u01(rng));
-        const double radius = 0.05 + 2 * u01(rng);
-        const double distance = radius * (1.0 + std::pow(10.0, -6.0 + 8.0 * u01(rng)));
-        const Vec3 point = centre + randomUnit(rng) * distance;
+        const auto [centre, radius, distance, point] = randomSphereAndPoint(rng, -6.0, 8.0);
         const TangentCone cone = TangentCone::make(point, centre, radius);
         CHECK(cone.sinAlpha == Approx(radius / distance).epsilon(1e-12));
         CHECK(cone.cos2Alpha == Approx(1.0 - (radius / distance) * (radius / distance)).epsilon(1e-6));
@@ -357,11 +369,7 @@ TEST_CASE("Sphere shadow cone: the tangent cone, equal-area pieces, rays inside 
     std::mt19937_64 rng(26);
     std::uniform_real_distribution<double> u01(0.0, 1.0);
     for (int trial = 0; trial < 150; ++trial) {
-        const Vec3 centre(u01(rng), 6, u01(rng));
-        const double radius = 0.05 + 2 * u01(rng);
-        // From far away to just outside the surface.
-        const double distance = radius * (1.0 + std::pow(10.0, -3.0 + 5.0 * u01(rng)));
-        const Vec3 point = centre + randomUnit(rng) * distance;
+        const auto [centre, radius, distance, point] = randomSphereAndPoint(rng, -3.0, 5.0);
         const auto made = SphereShadowCone::make(point, centre, radius, 1e-4);
         REQUIRE(made);
         CHECK(made->cone().halfAngle == Approx(std::asin(radius / distance)).margin(1e-12));
