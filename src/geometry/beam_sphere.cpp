@@ -101,11 +101,21 @@ TangentCone TangentCone::make(const Vec3& point, const Vec3& centre, double radi
     TangentCone c;
     const Vec3 toCentre = centre - point;
     c.distance = glm::length(toCentre);
+    c.radius = radius;
     c.frame = Frame::around(toCentre / c.distance);
     c.sinAlpha = std::min(1.0, radius / c.distance);
     c.tanAlpha = std::tan(std::asin(c.sinAlpha));
     c.cos2Alpha = std::max(0.0, (c.distance - radius) * (c.distance + radius)) / (c.distance * c.distance);
     return c;
+}
+
+double TangentCone::distanceAtRadius(double r, double widen) const {
+    const double tanPsi = tanAlpha * r;
+    const double cosPsi = 1.0 / std::sqrt(1.0 + tanPsi * tanPsi);
+    const double sinPsi = tanPsi * cosPsi;
+    const double inside =
+        radius * radius - distance * distance * sinPsi * sinPsi - widen * 1e-14 * distance * distance;
+    return distance * cosPsi - std::sqrt(std::max(0.0, inside));
 }
 
 std::optional<SphereShadowCone> SphereShadowCone::make(const Vec3& point, const Vec3& centre,
@@ -121,11 +131,10 @@ SphereShadowCone::SphereShadowCone(const Vec3& point, const Vec3& centre, double
     : point_(point), centre_(centre), radius_(radius), region_(region), level_(level), tMin_(tMin) {
     tangent_ = TangentCone::make(point_, centre_, radius_);
     alpha_ = std::asin(tangent_.sinAlpha);
-    frame_ = tangent_.frame;
     if (level_ > 0) bounds_ = polarBounds(region_);
-    const double far = distanceAtDiscRadius(bounds_.r1, 1.0) * (1.0 + 1e-12);
+    const double far = tangent_.distanceAtRadius(bounds_.r1, 1.0) * (1.0 + 1e-12);
     if (level_ == 0) {
-        cone_ = {point_, frame_.w, alpha_ + kConeAnglePad, tMin_, far};
+        cone_ = {point_, tangent_.frame.w, alpha_ + kConeAnglePad, tMin_, far};
         return;
     }
     // The piece lies in its polar rectangle, which lies in the convex hull
@@ -163,19 +172,6 @@ double SphereShadowCone::distanceToLight(const Vec3& dir) const {
     return along - std::sqrt(std::max(0.0, inside));
 }
 
-double SphereShadowCone::distanceAtDiscRadius(double r, double widen) const {
-    const double distance = glm::length(centre_ - point_);
-    const double tanPsi = std::tan(alpha_) * r;
-    const double cosPsi = 1.0 / std::sqrt(1.0 + tanPsi * tanPsi);
-    const double sinPsi = tanPsi * cosPsi;
-    // Near the rim the distance is a square root of a small difference, so
-    // a direction off by rounding (1e-16 rad) moves it by ~1e-8 relative;
-    // `widen` > 0 (< 0) moves the result out (in) past that uncertainty.
-    const double inside =
-        radius_ * radius_ - distance * distance * sinPsi * sinPsi - widen * 1e-14 * distance * distance;
-    return distance * cosPsi - std::sqrt(std::max(0.0, inside));
-}
-
 BeamRay SphereShadowCone::central() const {
     if (level_ == 0) return tangent_.ray(point_, Vec2(0.0));
     return tangent_.ray(point_, concentricDisc(0.5 * (region_.s0 + region_.s1), 0.5 * (region_.t0 + region_.t1)));
@@ -193,7 +189,7 @@ double SphereShadowCone::area() const { return weight() * kPi * radius_ * radius
 double SphereShadowCone::solidAngle() const {
     // The four sectors of the concentric map, each turned onto a > |b| by
     // quarter turns of the cell (the map commutes with them).
-    const double T = std::tan(alpha_);
+    const double T = tangent_.tanAlpha;
     const double a0 = 2.0 * region_.s0 - 1.0, a1 = 2.0 * region_.s1 - 1.0;
     const double b0 = 2.0 * region_.t0 - 1.0, b1 = 2.0 * region_.t1 - 1.0;
     return sectorSolidAngle(a0, a1, b0, b1, T) + sectorSolidAngle(b0, b1, -a1, -a0, T) +
@@ -201,7 +197,7 @@ double SphereShadowCone::solidAngle() const {
 }
 
 double SphereShadowCone::nearestLightDistance() const {
-    return distanceAtDiscRadius(bounds_.r0, -1.0) * (1.0 - 1e-12);
+    return tangent_.distanceAtRadius(bounds_.r0, -1.0) * (1.0 - 1e-12);
 }
 
 }  // namespace asos

@@ -42,30 +42,16 @@ LightBeams::LightBeams(const LightModel& model, const Vec3& apex, double tMin)
             return;
         }
         case LightShape::Sphere: {
-            centre_ = model.position;
-            radius_ = model.radius;
-            const Vec3 toCentre = centre_ - apex_;
-            distance_ = glm::length(toCentre);
-            if (!(radius_ > 0.0) || !(distance_ > radius_ * (1.0 + 1e-12))) return;
+            const double radius = model.radius;
+            if (!(radius > 0.0) || !(glm::length(model.position - apex_) > radius * (1.0 + 1e-12))) return;
             // SphereShadowCone's tangent cone, made alike: the same rays.
-            tangent_ = TangentCone::make(apex_, centre_, radius_);
+            tangent_ = TangentCone::make(apex_, model.position, radius);
             alpha_ = std::asin(tangent_.sinAlpha);
             valid_ = true;
             return;
         }
         case LightShape::Point: return;
     }
-}
-
-double LightBeams::sphereDistanceAtRadius(double r, double widen) const {
-    // As SphereShadowCone: near the rim the distance is the square root of a
-    // small difference; `widen` moves it out (in) past the uncertainty.
-    const double tanPsi = tangent_.tanAlpha * r;
-    const double cosPsi = 1.0 / std::sqrt(1.0 + tanPsi * tanPsi);
-    const double sinPsi = tanPsi * cosPsi;
-    const double inside = radius_ * radius_ - distance_ * distance_ * sinPsi * sinPsi -
-                          widen * 1e-14 * distance_ * distance_;
-    return distance_ * cosPsi - std::sqrt(std::max(0.0, inside));
 }
 
 Cone LightBeams::coneAbout(const Vec3& axis, const Vec3* directions, int count, double farthest,
@@ -127,7 +113,8 @@ LightPiece LightBeams::make(double a0, double b0, double a1, double b1, int leve
             if (level > 0) return makeDiscPiece(DiscPieceTable::piece(DiscCell{a0, a1, b0, b1}), level, path, cone);
             // The whole disc: the tangent cone.
             p.central = tangent_.ray(apex_, 0.0, 0.0, 0.0, 1.0);
-            p.cone = {apex_, tangent_.frame.w, alpha_ + kConeAnglePad, tMin_, sphereDistanceAtRadius(1.0, 1.0) * (1.0 + 1e-12)};
+            p.cone = {apex_, tangent_.frame.w, alpha_ + kConeAnglePad, tMin_,
+                      tangent_.distanceAtRadius(1.0, 1.0) * (1.0 + 1e-12)};
             break;
         }
         case LightShape::Point: break;
@@ -138,12 +125,11 @@ LightPiece LightBeams::make(double a0, double b0, double a1, double b1, int leve
 DiscPieceTable::Piece DiscPieceTable::piece(const DiscCell& cell) {
     const PolarBounds b = polarBounds(cell);
     const Vec2 centre = concentricDisc(0.5 * (cell.s0 + cell.s1), 0.5 * (cell.t0 + cell.t1));
-    // As TangentCone::ray(origin, p) computes them.
-    const double rho2 = std::min(1.0, centre.x * centre.x + centre.y * centre.y);
+    const TangentCone::Radial radial = TangentCone::radial(centre);
     return {cell,
             centre,
-            rho2,
-            std::sqrt(1.0 - rho2),
+            radial.rho2,
+            radial.rim,
             b.r0,
             b.r1,
             {std::cos(b.phi0), std::sin(b.phi0)},
@@ -184,7 +170,7 @@ LightPiece LightBeams::makeDiscPiece(const DiscPieceTable::Piece& d, int level, 
     // Unnormalised: coneAbout needs no unit directions.
     const Vec3 corners[4] = {discOffset(d.r0, d.at0), discOffset(d.r0, d.at1), discOffset(d.r1, d.at0),
                              discOffset(d.r1, d.at1)};
-    p.cone = coneAbout(dir, corners, 4, sphereDistanceAtRadius(d.r1, 1.0), p.tanHalf);
+    p.cone = coneAbout(dir, corners, 4, tangent_.distanceAtRadius(d.r1, 1.0), p.tanHalf);
     return p;
 }
 
@@ -280,7 +266,7 @@ double LightBeams::nearestLightDistance(const LightPiece& p) const {
             return glm::length(nearest - apex_) * (1.0 - 1e-12);
         }
         case LightShape::Sphere:
-            return sphereDistanceAtRadius(innerRadius(DiscCell{p.a0, p.a1, p.b0, p.b1}), -1.0) * (1.0 - 1e-12);
+            return tangent_.distanceAtRadius(innerRadius(DiscCell{p.a0, p.a1, p.b0, p.b1}), -1.0) * (1.0 - 1e-12);
         case LightShape::Point: break;
     }
     return 0.0;

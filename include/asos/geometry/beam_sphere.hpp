@@ -51,6 +51,7 @@ double innerRadius(const DiscCell& cell);
 struct TangentCone {
     Frame frame{};                // w toward the centre
     double distance = 1.0;        // to the centre, d
+    double radius = 0.0;          // the sphere's, r
     double tanAlpha = 0.0, sinAlpha = 0.0;
     double cos2Alpha = 1.0;       // cos^2 alpha, as (d - r)(d + r) / d^2
     // Requires distance > radius > 0.
@@ -68,10 +69,25 @@ struct TangentCone {
         const double t = distance * cosPsi * (cos2Alpha + sinAlpha * sinAlpha * rho2) / (1.0 + sinAlpha * rim);
         return {Ray{origin, dir}, t};
     }
-    BeamRay ray(const Vec3& origin, const Vec2& p) const {
+    // A disc point's rho2 and rim, as ray(origin, p) takes them (tables of
+    // disc points keep them made so, for the same rays bit for bit).
+    struct Radial {
+        double rho2, rim;
+    };
+    static Radial radial(const Vec2& p) {
         const double rho2 = std::min(1.0, p.x * p.x + p.y * p.y);
-        return ray(origin, p.x, p.y, rho2, std::sqrt(1.0 - rho2));
+        return {rho2, std::sqrt(1.0 - rho2)};
     }
+    BeamRay ray(const Vec3& origin, const Vec2& p) const {
+        const Radial q = radial(p);
+        return ray(origin, p.x, p.y, q.rho2, q.rim);
+    }
+    // The distance to the sphere along the rays at disc radius r (tan psi = r
+    // tan alpha) by the direct formula. Near the rim it is the square root of
+    // a small difference, so a direction off by rounding (1e-16 rad) moves
+    // it by ~1e-8 relative; `widen` > 0 (< 0) moves the result out (in) past
+    // that uncertainty: the bounds of the beams' t-ranges.
+    double distanceAtRadius(double r, double widen) const;
 };
 
 class SphereShadowCone {
@@ -125,12 +141,10 @@ public:
 private:
     SphereShadowCone(const Vec3& point, const Vec3& centre, double radius, const DiscCell& region, int level,
                      double tMin);
-    double distanceAtDiscRadius(double r, double widen) const;
 
     Vec3 point_{0.0}, centre_{0.0};
     double radius_ = 1.0;
     double alpha_ = 0.0;
-    Frame frame_{};
     TangentCone tangent_;
     DiscCell region_;
     PolarBounds bounds_;

@@ -3,10 +3,10 @@
 // shadows split them (paper: "Distributed Light Sources", Figure 5): the
 // pyray to a rectangle's corners and its quarters, the triangle to a
 // segment's ends and its halves, the cone tangent to a sphere and its
-// equal-area pieces (the concentric images of square cells). These are the pieces of geometry/beam_rect.hpp,
-// beam_segment.hpp and beam_sphere.hpp (the same regions, central rays,
-// random rays and weights; tests/unit/light_beams_test.cpp compares them),
-// made for speed: a piece is a small value, and its bounding cone is the
+// equal-area pieces (the concentric images of square cells). These are the
+// pieces of geometry/beam_rect.hpp, beam_segment.hpp and beam_sphere.hpp (the
+// same regions, central rays, random rays and weights;
+// tests/unit/light_beams_test.cpp compares them), made for speed: a piece is a small value, and its bounding cone is the
 // cone about its central ray through its widest corner, one arctangent
 // (the beams' smallest cones try every pair and triple of corners, forty).
 // A cone about the central ray holds the piece because the piece's corner
@@ -285,7 +285,6 @@ private:
     // the angle of t.
     Vec3 discOffset(double r, const DiscPieceTable::Trig& t) const;
     LightPiece makeDiscPiece(const DiscPieceTable::Piece& d, int level, std::uint64_t path, bool cone) const;
-    double sphereDistanceAtRadius(double r, double widen) const;
     // Inline: forEachDescendant makes one per point sample.
     __attribute__((always_inline)) BeamRay toward(const Vec3& target) const {
         const Vec3 offset = target - apex_;
@@ -307,8 +306,7 @@ private:
     bool rectangular_ = false;  // edges at right angles: nearest points by clamping
     double footS_ = 0.0, footT_ = 0.0, height_ = 0.0;
     // Sphere.
-    Vec3 centre_{0.0};
-    double radius_ = 0.0, distance_ = 0.0, alpha_ = 0.0;
+    double alpha_ = 0.0;
     TangentCone tangent_;
 };
 
