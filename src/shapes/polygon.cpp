@@ -10,6 +10,36 @@ namespace asos {
 
 using namespace conegeom;
 
+namespace {
+
+// Whether the closed loop of vertices [begin, end) bounds a convex region:
+// its turns (repeated points left out) all go one way, none turns back on
+// itself, and they add up to one full turn (a star's add up to more).
+bool convexLoop(const std::vector<Vec2>& vertices, std::uint32_t begin, std::uint32_t end) {
+    std::vector<Vec2> edges;
+    for (std::uint32_t i = begin; i < end; ++i) {
+        const Vec2 e = vertices[i + 1 < end ? i + 1 : begin] - vertices[i];
+        if (e.x != 0.0 || e.y != 0.0) edges.push_back(e);
+    }
+    if (edges.size() < 3) return false;
+    double turning = 0.0;
+    int way = 0;
+    for (std::size_t k = 0; k < edges.size(); ++k) {
+        const Vec2 a = edges[k], b = edges[(k + 1) % edges.size()];
+        const double cross = a.x * b.y - a.y * b.x, dot = a.x * b.x + a.y * b.y;
+        if (cross == 0.0 && dot < 0.0) return false;
+        const int sign = (cross > 0.0) - (cross < 0.0);
+        if (sign != 0) {
+            if (way != 0 && sign != way) return false;
+            way = sign;
+        }
+        turning += std::atan2(cross, dot);
+    }
+    return way != 0 && std::abs(std::abs(turning) - 2.0 * kPi) < 1e-6;
+}
+
+}  // namespace
+
 Polygon::Polygon(std::vector<Vec2> vertices, std::vector<std::uint32_t> loopEnds)
     : vertices_(std::move(vertices)), loopEnds_(std::move(loopEnds)) {
     if (vertices_.empty()) return;
@@ -29,6 +59,7 @@ Polygon::Polygon(std::vector<Vec2> vertices, std::vector<std::uint32_t> loopEnds
         }
         begin = end;
     }
+    convex_ = loopEnds_.size() == 1 && convexLoop(vertices_, 0, loopEnds_[0]);
     const double inf = std::numeric_limits<double>::infinity();
     for (std::size_t i = 0; i < edges_.size(); i += 2) {
         const Edge& a = edges_[i];

@@ -204,6 +204,17 @@ std::optional<TranslatedSphere> Primitive::translatedSphere() const {
     return TranslatedSphere{frame_.localOffset, sphere->radius()};
 }
 
+bool Primitive::convex() const {
+    return visit([](const auto& shape) {
+        using S = std::decay_t<decltype(shape)>;
+        if constexpr (std::is_same_v<S, Sphere> || std::is_same_v<S, Box>) return true;
+        else if constexpr (std::is_same_v<S, Cylinder> || std::is_same_v<S, TruncatedCone>)
+            return shape.frustum().capped();
+        else if constexpr (std::is_same_v<S, Disc> || std::is_same_v<S, Polygon>) return shape.convex();
+        else return false;  // a plane: unbounded
+    });
+}
+
 const char* Primitive::kindName() const { return name_; }
 
 }  // namespace asos

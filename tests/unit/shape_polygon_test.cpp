@@ -241,3 +241,32 @@ TEST_CASE("Polygon cone classification is conservative (property)", "[shapes][po
     CHECK(stats.marginal > 0);
     CHECK(stats.miss > 0);
 }
+
+TEST_CASE("Which primitives are convex sets", "[shapes][polygon]") {
+    const Transform none{};
+    CHECK(Primitive::make(SphereShape{{1, 2, 3}, 0.5}, none).convex());
+    CHECK(Primitive::make(BoxShape{{0, 0, 0}, {1, 2, 3}}, none).convex());
+    CHECK(Primitive::make(CylinderShape{{0, 0, 0}, {0, 1, 0}, 0.5, false}, none).convex());
+    CHECK_FALSE(Primitive::make(CylinderShape{{0, 0, 0}, {0, 1, 0}, 0.5, true}, none).convex());
+    CHECK(Primitive::make(ConeShape{{0, 0, 0}, 1.0, {0, 1, 0}, 0.0, false}, none).convex());
+    CHECK_FALSE(Primitive::make(ConeShape{{0, 0, 0}, 1.0, {0, 1, 0}, 0.5, true}, none).convex());
+    CHECK(Primitive::make(DiscShape{{0, 0, 0}, {0, 1, 0}, 1.0, 0.0}, none).convex());
+    CHECK_FALSE(Primitive::make(DiscShape{{0, 0, 0}, {0, 1, 0}, 1.0, 0.3}, none).convex());
+    CHECK_FALSE(Primitive::make(PlaneShape{{0, 1, 0}, 0.0}, none).convex());
+    // Polygons: one convex loop, in either turning sense, with repeated and
+    // collinear points; not a concave loop, a star, a loop that turns back
+    // along itself, or two loops.
+    CHECK(polygon({{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}, {0, 0, 0}}).convex());
+    CHECK(polygon({{0, 0, 0}, {0, 1, 0}, {1, 1, 0}, {1, 0, 0}, {0, 0, 0}}).convex());
+    CHECK(polygon({{0, 0, 0}, {0.5, 0, 0}, {1, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}, {0, 0, 0}}).convex());
+    CHECK_FALSE(polygon({{0, 0, 0}, {2, 0, 0}, {2, 1, 0}, {1, 1, 0}, {1, 2, 0}, {0, 2, 0}, {0, 0, 0}}).convex());
+    std::vector<Vec3> star;
+    for (int k = 0; k <= 5; ++k) {
+        const double a = 2.0 * kPi * (2 * k % 5) / 5.0;
+        star.push_back({std::cos(a), std::sin(a), 0.0});
+    }
+    CHECK_FALSE(polygon(star).convex());
+    CHECK_FALSE(polygon({{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}, {0, 0.5, 0}, {0, 0.75, 0}, {0, 0, 0}}).convex());
+    CHECK_FALSE(polygon({{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 0, 0}, {2, 2, 0}, {3, 2, 0}, {3, 3, 0}, {2, 2, 0}})
+                    .convex());
+}

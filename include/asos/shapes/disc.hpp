@@ -21,6 +21,8 @@ public:
     Disc(double radius, double holeRadius) : radius_(radius), hole_(holeRadius) {}
 
     bool empty() const { return !(radius_ > hole_); }
+    // Without a hole, a convex region.
+    bool convex() const { return !(hole_ > 0.0); }
     BoundingSphere boundingSphere() const { return {Vec3(0.0), radius_}; }
     Bounds3 worldBounds(const Mat3& worldFromLocal, const Vec3& offset) const;
 

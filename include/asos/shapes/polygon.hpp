@@ -25,6 +25,9 @@ public:
     Polygon(std::vector<Vec2> vertices, std::vector<std::uint32_t> loopEnds);
 
     bool empty() const { return loopEnds_.empty(); }
+    // One loop, convex (Primitive::convex): its turns all go one way and add
+    // up to one full turn (repeated and collinear points aside).
+    bool convex() const { return convex_; }
     const std::vector<Vec2>& vertices() const { return vertices_; }
     const std::vector<std::uint32_t>& loopEnds() const { return loopEnds_; }
     BoundingSphere boundingSphere() const { return {Vec3(center_, 0.0), radius_}; }
@@ -74,6 +77,7 @@ private:
     Vec2 lo_{0.0}, hi_{0.0};               // 2D bounding box
     Vec2 center_{0.0};
     double radius_ = 0.0;
+    bool convex_ = false;
 };
 
 }  // namespace asos

@@ -77,6 +77,14 @@ public:
     // then equals intersectLocal(ray, ...).
     std::optional<TranslatedSphere> translatedSphere() const;
 
+    // Whether the primitive is a convex set: a closed solid (a sphere, a box,
+    // a capped cylinder or cone) or a flat convex region (a disc without a
+    // hole, a polygon of one convex loop). From a point outside it, a ray
+    // then meets its surface within [tMin, tMax] iff that stretch of the ray
+    // meets the set and ends outside it (ConvexLattice's use, in
+    // area_light_shadow.cpp).
+    bool convex() const;
+
     // The POV-Ray keyword of the shape ("sphere", "cone", ...).
     const char* kindName() const;
 
