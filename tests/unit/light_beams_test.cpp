@@ -235,8 +235,25 @@ TEST_CASE("Central rays of descendants: the pieces' of repeated splits, in order
         if (!beams.valid()) continue;
         LightPiece p = beams.root();
         for (int level = 0; level <= 3; ++level) {
-            for (int depth = 0; depth <= 3; ++depth) {
+            for (int depth = 0; depth <= 4; ++depth) {
                 const std::vector<LightPiece> expected = bySplits(beams, p, depth);
+                // The lattice: the same rays in the same order, each at the
+                // place of its piece's region.
+                REQUIRE(beams.hasLattice(depth));
+                const LightBeams::Lattice lattice = beams.lattice(p, depth);
+                REQUIRE(lattice.count() == int(expected.size()));
+                bool sameLattice = true;
+                const double ds = (p.a1 - p.a0) / lattice.columns(), dt = (p.b1 - p.b0) / lattice.rows();
+                for (int n = 0; n < lattice.count(); ++n) {
+                    const LightBeams::Lattice::Place at = lattice.place(n);
+                    const BeamRay r = lattice.ray(at.i, at.j);
+                    const LightPiece& e = expected[std::size_t(n)];
+                    sameLattice = sameLattice && r.ray.dir == e.central.ray.dir &&
+                                  r.ray.origin == e.central.ray.origin && r.distance == e.central.distance &&
+                                  e.a0 == p.a0 + at.i * ds &&
+                                  (m.shape == LightShape::Segment || e.b0 == p.b0 + at.j * dt);
+                }
+                CHECK(sameLattice);
                 std::size_t k = 0;
                 bool same = true;
                 beams.forEachCentralRay(p, depth, [&](const BeamRay& r) {

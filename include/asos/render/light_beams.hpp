@@ -24,6 +24,7 @@
 #include <vector>
 
 #include "asos/geometry/beam.hpp"
+#include "asos/geometry/bounds.hpp"
 #include "asos/geometry/beam_sphere.hpp"
 #include "asos/render/light_model.hpp"
 
@@ -148,22 +149,69 @@ public:
             forEachDescendant(piece, depth, [&](const LightPiece& p) { f(p.central); });
             return;
         }
+        const Lattice l = lattice(piece, depth);
+        for (int m = 0; m < l.count(); ++m) {
+            const Lattice::Place at = l.place(m);
+            f(l.ray(at.i, at.j));
+        }
+    }
+
+    // The central points of the pieces `depth` levels below a piece as a
+    // lattice, for a rectangle or a segment down to 4 levels (hasLattice):
+    // column i along the light's first edge, row j along its second (one
+    // row for a segment), an affine image of (i, j). ray(i, j) is that
+    // piece's central ray, bit for bit split()'s; place(m) is where the m-th
+    // of forEachCentralRay's rays lies. A ray is made only when asked for.
+    class Lattice {
+    public:
+        struct Place {
+            int i, j;
+        };
+        int columns() const { return side_; }
+        int rows() const { return segment_ ? 1 : side_; }
+        int count() const { return columns() * rows(); }
+        __attribute__((always_inline)) Place place(int m) const {
+            if (segment_) return {m, 0};
+            const std::uint8_t ij = kMorton[std::size_t(m)];
+            return {int(ij & 15u), int(ij >> 4)};
+        }
+        __attribute__((always_inline)) BeamRay ray(int i, int j) const {
+            return beams_->toward(segment_ ? columns_[i] : columns_[i] + rows_[j]);
+        }
+
+    private:
+        friend class LightBeams;
+        const LightBeams* beams_ = nullptr;
+        bool segment_ = false;
+        int side_ = 1;
+        // rectPoint's sum, its first two terms per column and its last per
+        // row (the same operations in the same order); a segment's points.
+        Vec3 columns_[16], rows_[16];
+    };
+    bool hasLattice(int depth) const {
+        return (shape_ == LightShape::Rectangle || shape_ == LightShape::Segment) && depth >= 0 && depth <= 4;
+    }
+    Lattice lattice(const LightPiece& piece, int depth) const {
+        Lattice l;
+        l.beams_ = this;
+        l.segment_ = shape_ == LightShape::Segment;
+        l.side_ = 1 << depth;
         const double scale = std::bit_cast<double>(std::uint64_t(1023 - depth) << 52);  // 2^-depth
         const double ds = (piece.a1 - piece.a0) * scale, dt = (piece.b1 - piece.b0) * scale;
-        const int side = 1 << depth;
-        // rectPoint's sum, its first two terms per column and its last per
-        // row (the same operations in the same order).
-        Vec3 columns[16], rows[16];
-        for (int k = 0; k < side; ++k) {
-            columns[k] = corner_ + (piece.a0 + (double(k) + 0.5) * ds) * edgeA_;
-            rows[k] = (piece.b0 + (double(k) + 0.5) * dt) * edgeB_;
+        for (int k = 0; k < l.side_; ++k) {
+            // The midpoint of a dyadic range, exactly: split()'s 0.5 (a0 + a1).
+            l.columns_[k] = corner_ + (piece.a0 + (double(k) + 0.5) * ds) * edgeA_;
+            if (!l.segment_) l.rows_[k] = (piece.b0 + (double(k) + 0.5) * dt) * edgeB_;
         }
-        const std::uint32_t count = 1u << (2 * depth);
-        for (std::uint32_t m = 0; m < count; ++m) {
-            const std::uint8_t ij = kMorton[m];
-            const BeamRay ray = toward(columns[ij & 15u] + rows[ij >> 4]);
-            f(ray);
-        }
+        return l;
+    }
+    // The box that holds a rectangle's or segment's points.
+    Bounds3 lightBounds() const {
+        Bounds3 b = Bounds3::of(corner_);
+        b.extend(corner_ + edgeA_);
+        b.extend(corner_ + edgeB_);
+        b.extend(corner_ + edgeA_ + edgeB_);
+        return b;
     }
 
     // A ray inside the piece from two numbers in [0, 1) (a segment uses the
@@ -209,7 +257,7 @@ public:
     // rectangle's normal and the direction; 1 for segments and spheres.
     // Inline: it is asked for every sample.
     double emission(const Vec3& dir) const {
-        return shape_ == LightShape::Rectangle ? std::abs(glm::dot(normal_, dir)) : 1.0;
+        return shape_ == LightShape::Rectangle ? std::abs(dot3(normal_, dir)) : 1.0;
     }
     // Whether the paper's "Proximity to One Edge" halving holds for this
     // split: for quarters of a rectangle and halves of a segment (a straight
@@ -289,7 +337,7 @@ private:
     __attribute__((always_inline)) BeamRay toward(const Vec3& target) const {
         const Vec3 offset = target - apex_;
         // glm::length's sqrt(dot) written out: GCC left glm::length a call.
-        const double distance = std::sqrt(glm::dot(offset, offset));
+        const double distance = std::sqrt(dot3(offset, offset));
         return {Ray{apex_, offset / distance}, distance};
     }
     // The cone about unit `axis` through the widest of `directions` (of any
