@@ -5,6 +5,7 @@
 #include <type_traits>
 
 #include "asos/geometry/beam.hpp"
+#include "asos/render/convex_lattice.hpp"
 #include "asos/shapes/local_cone.hpp"
 
 namespace asos {
@@ -273,12 +274,32 @@ private:
         double sumX = out.sum.x, sumY = out.sum.y, sumZ = out.sum.z, sumDistance = out.distance,
                total = out.total;
         std::size_t emitted = out.count;
+        // A lit sample's light, above the horizon.
+        const auto lit = [&](const BeamRay& ray, auto summedHere) __attribute__((always_inline)) {
+            const Vec3& dir = ray.ray.dir;
+            if constexpr (decltype(summedHere)::value) {
+                const double k = share * beams_.emission(dir);
+                const double distance = std::max(ray.distance, 0.0);
+                sumX += k * dir.x;
+                sumY += k * dir.y;
+                sumZ += k * dir.z;
+                sumDistance += k * distance;
+                total += k;
+                if (emitted++ == 0) {
+                    out.firstDirection = dir;
+                    out.firstDistance = distance;
+                    out.firstWeight = k;
+                }
+            } else {
+                emitAbove(ray, share);
+            }
+        };
         // The lattice's loop with `blocked(dir, t0, t1)` inlined.
         const auto sample = [&](auto&& blocked, auto summedHere) {
             beams_.forEachCentralRay(piece, depth, [&](const BeamRay& ray) __attribute__((always_inline)) {
                 ++pieces;
                 const Vec3& dir = ray.ray.dir;
-                if (glm::dot(q_.normal, dir) < kPovEpsilon) return;
+                if (dot3(q_.normal, dir) < kPovEpsilon) return;
                 ++rays;
                 const double t0 = origin_.rayStart(dir);
                 const double t1 = ray.distance - kTolerance;
@@ -287,23 +308,28 @@ private:
                 } else if (blocked(dir, t0, t1)) {
                     return;
                 }
-                if constexpr (decltype(summedHere)::value) {
-                    const double k = share * beams_.emission(dir);
-                    const double distance = std::max(ray.distance, 0.0);
-                    sumX += k * dir.x;
-                    sumY += k * dir.y;
-                    sumZ += k * dir.z;
-                    sumDistance += k * distance;
-                    total += k;
-                    if (emitted++ == 0) {
-                        out.firstDirection = dir;
-                        out.firstDistance = distance;
-                        out.firstWeight = k;
-                    }
-                } else {
-                    emitAbove(ray, share);
-                }
+                lit(ray, summedHere);
             });
+        };
+        // One convex occluder clear of the rays' ends (convexShadow): its
+        // shadow on the lattice is a convex set's points, found with few
+        // tests (ConvexLattice); then the lit samples in the lattice's order.
+        const auto sampleConvex = [&](auto&& blocked, auto summedHere) {
+            const LightBeams::Lattice lattice = beams_.lattice(piece, depth);
+            const ConvexLattice shadow(lattice.columns(), lattice.rows(), [&](int i, int j) {
+                const BeamRay ray = lattice.ray(i, j);
+                const double t1 = ray.distance - kTolerance;
+                return kTolerance < t1 && blocked(ray.ray.dir, kTolerance, t1);
+            });
+            for (int m = 0; m < lattice.count(); ++m) {
+                const LightBeams::Lattice::Place at = lattice.place(m);
+                if (shadow.member(at.i, at.j)) continue;
+                const BeamRay ray = lattice.ray(at.i, at.j);
+                if (dot3(q_.normal, ray.ray.dir) < kPovEpsilon) continue;
+                lit(ray, summedHere);
+            }
+            pieces += std::uint64_t(lattice.count());
+            rays += std::uint64_t(shadow.tests());
         };
         // sample(blocked) with the sum kept in locals where it may be.
         const auto sampleAll = [&](auto&& blocked) __attribute__((always_inline)) {
@@ -314,11 +340,15 @@ private:
             // One occluder (the common case): its shape's test is resolved
             // once for the whole lattice, with what does not depend on the
             // direction computed once (Primitive::withAnyTestFrom).
+            const bool convex = convexShadow(*first[0].primitive, depth);
             first[0].primitive->withAnyTestFrom(origin_.apex, [&](const auto& test) {
-                sampleAll([&](const Vec3& dir, double t0, double t1) __attribute__((always_inline)) {
+                const auto blocked = [&](const Vec3& dir, double t0, double t1) __attribute__((always_inline)) {
                     ++tests;
                     return test(dir, t0, t1);
-                });
+                };
+                if (!convex) sampleAll(blocked);
+                else if (summed) sampleConvex(blocked, std::true_type{});
+                else sampleConvex(blocked, std::false_type{});
             });
         } else {
             sampleAll([&](const Vec3& dir, double t0, double t1) __attribute__((always_inline)) {
@@ -339,6 +369,29 @@ private:
         c_.shadowRays += rays;
         c_.rayTests += tests;
     }
+    // Whether one occluder's shadow on the lattice of the MAX-pieces `depth`
+    // levels below a piece is the lattice's points in a convex set, so that
+    // ConvexLattice may find it: a convex occluder (Primitive::convex); rays
+    // from the shaded point, each tested from the shadow tolerance to the
+    // tolerance before the light; the occluder farther than twice the
+    // tolerance from the point and from the light's box. A lattice ray then
+    // meets the occluder's surface within that range iff the segment from
+    // the point to the ray's light point meets the occluder, and the light
+    // points for which it does are a convex set's (docs/lights.md, "Convex
+    // occluders").
+    bool convexShadow(const Primitive& occluder, int depth) const {
+        if (origin_.behind || !beams_.hasLattice(depth) || !occluder.bounded() || !occluder.convex()) return false;
+        const Bounds3 b = occluder.worldBounds();
+        const double margin = 2.0 * kTolerance;
+        const Vec3& a = origin_.apex;
+        const Vec3 gap = glm::max(glm::max(b.lo - a, a - b.hi), Vec3(0.0));
+        if (!(glm::dot(gap, gap) > margin * margin)) return false;
+        const Bounds3 light = beams_.lightBounds();
+        for (int axis = 0; axis < 3; ++axis)
+            if (b.lo[axis] > light.hi[axis] + margin || b.hi[axis] < light.lo[axis] - margin) return true;
+        return false;
+    }
+
     void sampleRay(const BeamRay& ray, const Item* occluders, std::uint32_t count, double share) {
         if (glm::dot(q_.normal, ray.ray.dir) < kPovEpsilon) return;
         if (!sampleBlocked(ray, occluders, count)) emitAbove(ray, share);
