@@ -257,12 +257,34 @@ private:
     // and the counters kept here (the inner loop of a penumbra).
     void sampleCentralRays(const LightPiece& piece, int depth, const Item* occluders, std::uint32_t count,
                            double share) {
+        // A lattice's point samples (rectangles, segments): an occluder
+        // whose every ray toward them leaves it (Primitive::raysLeave, from
+        // the lattice's corner points, which span the rest) blocks none and
+        // is left out. Detection cannot tell so where the point lies next to
+        // the occluder (a box or cone standing on the ground), nor from the
+        // piece's cone, which reaches past the samples.
+        const bool latticed = beams_.hasLattice(depth);
+        LightBeams::Lattice lattice;
+        Vec3 corners[4];
+        int cornerCount = 0;
+        if (latticed) {
+            lattice = beams_.lattice(piece, depth);
+            const int i1 = lattice.columns() - 1, j1 = lattice.rows() - 1;
+            corners[cornerCount++] = lattice.offset(0, 0);
+            corners[cornerCount++] = lattice.offset(i1, 0);
+            if (j1 > 0) {
+                corners[cornerCount++] = lattice.offset(0, j1);
+                corners[cornerCount++] = lattice.offset(i1, j1);
+            }
+        }
         std::vector<AreaLightScratch::SampleOccluder>& list = s_.sampleOccluders;
-        list.resize(count);
+        list.clear();
         for (std::uint32_t i = 0; i < count; ++i) {
             const Primitive& primitive = scene_.primitive(occluders[i].object);
-            list[i] = {&primitive, primitive.originToLocal(origin_.apex)};
+            if (latticed && primitive.raysLeave(origin_.apex, corners, cornerCount)) continue;
+            list.push_back({&primitive, primitive.originToLocal(origin_.apex)});
         }
+        count = static_cast<std::uint32_t>(list.size());
         const AreaLightScratch::SampleOccluder* first = list.data();
         std::uint64_t pieces = 0, rays = 0, tests = 0;
         // Diffuse only, from the shaded point (no surface distance to take
@@ -315,7 +337,6 @@ private:
         // shadow on the lattice is a convex set's points, found with few
         // tests (ConvexLattice); then the lit samples in the lattice's order.
         const auto sampleConvex = [&](auto&& blocked, auto summedHere) {
-            const LightBeams::Lattice lattice = beams_.lattice(piece, depth);
             const ConvexLattice shadow(lattice.columns(), lattice.rows(), [&](int i, int j) {
                 const BeamRay ray = lattice.ray(i, j);
                 const double t1 = ray.distance - kTolerance;
@@ -350,6 +371,10 @@ private:
                 else if (summed) sampleConvex(blocked, std::true_type{});
                 else sampleConvex(blocked, std::false_type{});
             });
+        } else if (count == 0) {
+            // Every occluder left out: every sample is lit, without a ray.
+            sampleAll([](const Vec3&, double, double) { return false; });
+            rays = 0;
         } else {
             sampleAll([&](const Vec3& dir, double t0, double t1) __attribute__((always_inline)) {
                 for (std::uint32_t i = 0; i < count; ++i) {

@@ -215,6 +215,56 @@ bool Primitive::convex() const {
     });
 }
 
+bool Primitive::raysLeave(const Vec3& worldOrigin, const Vec3* directions, int count) const {
+    if (count < 1 || count > 8) return false;
+    const Vec3 a = frame_.pointToLocal(worldOrigin);
+    Vec3 d[8];
+    for (int i = 0; i < count; ++i)
+        d[i] = frame_.kind == LocalFrame::Kind::Translate ? directions[i] : frame_.localFromWorld * directions[i];
+    // Every direction turned away from the plane's side of the shape, by a
+    // margin far above rounding (the rays are tested from t > 0 on).
+    const auto away = [&](const Vec3& n) {
+        const double nn = glm::length(n);
+        for (int i = 0; i < count; ++i)
+            if (!(glm::dot(d[i], n) > 1e-9 * nn * glm::length(d[i]))) return false;
+        return true;
+    };
+    const Vec3 z(0.0, 0.0, 1.0);
+    return visit([&](const auto& shape) {
+        using S = std::decay_t<decltype(shape)>;
+        if constexpr (std::is_same_v<S, Sphere>) {
+            // The plane n . x = r with n = a / |a| holds the ball.
+            return glm::dot(a, a) >= shape.radius() * shape.radius() && away(a);
+        } else if constexpr (std::is_same_v<S, Box>) {
+            for (int i = 0; i < 3; ++i) {
+                Vec3 n(0.0);
+                n[i] = 1.0;
+                if (a[i] <= shape.lo()[i] && away(-n)) return true;
+                if (a[i] >= shape.hi()[i] && away(n)) return true;
+            }
+            return false;
+        } else if constexpr (std::is_same_v<S, Cylinder> || std::is_same_v<S, TruncatedCone>) {
+            // The capped solid holds an open one too. Its caps' planes, then
+            // the plane tangent to the side along the generator at the
+            // origin's angle: n = (L cos phi, L sin phi, r0 - r1) has
+            // n . x <= L r0 over the solid (at both rims, L r0).
+            const Frustum& f = shape.frustum();
+            const double length = f.length(), r0 = f.r0(), r1 = f.r1();
+            if (a.z <= 0.0 && away(-z)) return true;
+            if (a.z >= length && away(z)) return true;
+            const double rho = std::sqrt(a.x * a.x + a.y * a.y);
+            if (!(rho > 0.0)) return false;
+            const Vec3 n(length * a.x / rho, length * a.y / rho, r0 - r1);
+            return glm::dot(n, a) >= length * r0 && away(n);
+        } else if constexpr (std::is_same_v<S, Disc> || std::is_same_v<S, Polygon>) {
+            // In the plane z = 0.
+            return (a.z >= 0.0 && away(z)) || (a.z <= 0.0 && away(-z));
+        } else {
+            return false;  // a plane: unbounded
+        }
+    });
+}
+
 const char* Primitive::kindName() const { return name_; }
 
 }  // namespace asos

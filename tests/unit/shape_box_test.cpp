@@ -176,6 +176,7 @@ TEST_CASE("Box cone classification is conservative (property)", "[shapes][box][p
         return sc;
     });
     CHECK(stats.failures == 0);
+    CHECK(stats.leave > 0);
     CHECK(stats.full > 0);
     CHECK(stats.marginal > 0);
     CHECK(stats.miss > 0);

@@ -138,6 +138,7 @@ TEST_CASE("Cone cone classification is conservative (property)", "[shapes][cone]
         return sc;
     });
     CHECK(stats.failures == 0);
+    CHECK(stats.leave > 0);
     CHECK(stats.full > 0);
     CHECK(stats.marginal > 0);
     CHECK(stats.miss > 0);

@@ -149,6 +149,7 @@ TEST_CASE("Cylinder cone classification is conservative (property)",
         return sc;
     });
     CHECK(stats.failures == 0);
+    CHECK(stats.leave > 0);
     CHECK(stats.full > 0);
     CHECK(stats.marginal > 0);
     CHECK(stats.miss > 0);

@@ -103,6 +103,7 @@ TEST_CASE("Disc cone classification is conservative (property)", "[shapes][disc]
         return sc;
     });
     CHECK(stats.failures == 0);
+    CHECK(stats.leave > 0);
     CHECK(stats.full > 0);
     CHECK(stats.marginal > 0);
     CHECK(stats.miss > 0);

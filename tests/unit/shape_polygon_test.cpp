@@ -237,6 +237,7 @@ TEST_CASE("Polygon cone classification is conservative (property)", "[shapes][po
         return sc;
     });
     CHECK(stats.failures == 0);
+    CHECK(stats.leave > 0);
     CHECK(stats.full > 0);
     CHECK(stats.marginal > 0);
     CHECK(stats.miss > 0);

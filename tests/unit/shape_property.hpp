@@ -182,6 +182,7 @@ inline std::string describe(const Cone& c) {
 struct PropertyStats {
     int cases = 0;
     int miss = 0, full = 0, marginal = 0;
+    int leave = 0;  // cases where Primitive::raysLeave held
     int failures = 0;
 };
 
@@ -241,6 +242,35 @@ inline PropertyStats runConeProperty(const char* name, std::uint64_t baseSeed, i
                 FAIL_CHECK(name << " case " << i << " (replay: ASOS_SHAPE_REPLAY=" << name << ":"
                                 << seed << "): " << wrong << " for the ray from " << fmt(ray.origin)
                                 << " along " << fmt(ray.dir));
+        }
+        // Primitive::raysLeave for four directions about the cone's axis (at
+        // its half-angle, at most 0.3): where it holds, no ray along a
+        // non-negative combination of them may meet the shape beyond the apex.
+        {
+            const double spread = std::min(cone.halfAngle, 0.3);
+            const Mat3 basis = frameAroundAxis(cone.axis);
+            const Vec3 along = std::cos(spread) * cone.axis;
+            const Vec3 dirs[4] = {along + std::sin(spread) * basis[0], along - std::sin(spread) * basis[0],
+                                  along + std::sin(spread) * basis[1], along - std::sin(spread) * basis[1]};
+            if (prim.raysLeave(cone.apex, dirs, 4)) {
+                ++stats.leave;
+                const double start = 1e-9 * (glm::length(cone.apex) + shape.size);
+                for (int k = 0; k < 68; ++k) {
+                    Vec3 dir(0.0);
+                    if (k < 4) {
+                        dir = dirs[k];
+                    } else {
+                        for (const Vec3& d : dirs) dir += (rng.chance(0.3) ? 0.0 : rng.uniform()) * d;
+                        if (!(glm::length(dir) > 0.0)) continue;
+                    }
+                    const Ray ray{cone.apex, glm::normalize(dir)};
+                    if (prim.intersectAny(ray, start, kInfinity) && stats.failures++ < 5)
+                        FAIL_CHECK(name << " case " << i << " (replay: ASOS_SHAPE_REPLAY=" << name << ":" << seed
+                                        << "): raysLeave, yet the ray from " << fmt(ray.origin) << " along "
+                                        << fmt(ray.dir) << " meets the shape\n  shape " << shape.text
+                                        << "\n  transform " << transform.text);
+                }
+            }
         }
         ++stats.cases;
         if (answer.coverage == Coverage::Miss) ++stats.miss;

@@ -178,6 +178,9 @@ public:
         __attribute__((always_inline)) BeamRay ray(int i, int j) const {
             return beams_->toward(segment_ ? columns_[i] : columns_[i] + rows_[j]);
         }
+        // The light point at place (i, j) less the apex: ray(i, j)'s
+        // direction, not normalised.
+        Vec3 offset(int i, int j) const { return (segment_ ? columns_[i] : columns_[i] + rows_[j]) - beams_->apex_; }
 
     private:
         friend class LightBeams;

@@ -85,6 +85,17 @@ public:
     // area_light_shadow.cpp).
     bool convex() const;
 
+    // Whether no ray from `worldOrigin` along a non-negative combination of
+    // `directions` (world, of any length, at most 8) meets the primitive at
+    // any t > 0, shown by a plane that holds the primitive on one side while
+    // every such ray starts on or beyond it and moves away from it: a face's
+    // plane (a box's, a cap's, a flat shape's own), the plane tangent to a
+    // cylinder's or cone's side along the generator facing the origin, the
+    // plane across a sphere facing it. Conservative: false where no such
+    // plane is found. (The point samples of an area light's piece:
+    // area_light_shadow.cpp.)
+    bool raysLeave(const Vec3& worldOrigin, const Vec3* directions, int count) const;
+
     // The POV-Ray keyword of the shape ("sphere", "cone", ...).
     const char* kindName() const;
 
