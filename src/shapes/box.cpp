@@ -188,11 +188,11 @@ ConeClass Box::classify(const LocalCone& cone) const {
                 // The footprint ellipse lies within `radius` of the axis'
                 // entry point (see Polygon::classify).
                 const double depth = std::abs(face - pa[e]);
-                const auto [tNear, tFar] = planeDepths(depth, an, g2, c, s);
+                const double g = std::sqrt(g2);
+                const auto [tNear, tFar] = planeDepthsWithG(depth, an, g2, g, c, s);
                 // Both sides times kk an > 0: no division.
                 const double scale = kk * an;
-                const double reach =
-                    depth * s * (c * an + std::sqrt(g2) * s) * (1.0 + 1e-12) + tol * scale;
+                const double reach = depth * s * (c * an + g * s) * (1.0 + 1e-12) + tol * scale;
                 const double qj = pa[j] + enter * aa[j], qk = pa[k] + enter * aa[k];
                 if (((qj - loa[j]) * scale > reach) & ((hia[j] - qj) * scale > reach) &
                     ((qk - loa[k]) * scale > reach) & ((hia[k] - qk) * scale > reach)) {
