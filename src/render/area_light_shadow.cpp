@@ -59,6 +59,19 @@ bool belowHorizon(const Vec3& normal, const LightPiece& piece) {
     return angleBetween(normal, piece.cone.axis) - piece.cone.halfAngle >= 0.5 * kPi;
 }
 
+// The edges of the square pyramid about a cone (its faces tangent to it), so
+// that every direction of the cone is a non-negative combination of them
+// (Primitive::raysLeave): written to out[], four, or none for a cone of a
+// right angle or more.
+int pyramidAbout(const Cone& cone, Vec3* out) {
+    if (!(cone.halfAngle < 0.45 * kPi)) return 0;
+    const Mat3 frame = frameAroundAxis(cone.axis);
+    const double t = std::tan(cone.halfAngle) * (1.0 + 1e-9);
+    for (int k = 0; k < 4; ++k)
+        out[k] = cone.axis + t * ((k & 1 ? 1.0 : -1.0) * frame[0] + (k & 2 ? 1.0 : -1.0) * frame[1]);
+    return 4;
+}
+
 // The piece's cone prepared for the primitives, from the tangent of its
 // half-angle where it has one (no trigonometry), widened as PreparedCone
 // widens every cone (kConeAngleMargin), and the padding kConeAnglePad.
@@ -276,12 +289,14 @@ private:
                 corners[cornerCount++] = lattice.offset(0, j1);
                 corners[cornerCount++] = lattice.offset(i1, j1);
             }
+        } else {
+            cornerCount = pyramidAbout(piece.cone, corners);
         }
         std::vector<AreaLightScratch::SampleOccluder>& list = s_.sampleOccluders;
         list.clear();
         for (std::uint32_t i = 0; i < count; ++i) {
             const Primitive& primitive = scene_.primitive(occluders[i].object);
-            if (latticed && primitive.raysLeave(origin_.apex, corners, cornerCount)) continue;
+            if (cornerCount > 0 && primitive.raysLeave(origin_.apex, corners, cornerCount)) continue;
             list.push_back({&primitive, primitive.originToLocal(origin_.apex)});
         }
         count = static_cast<std::uint32_t>(list.size());
