@@ -270,12 +270,13 @@ private:
     // and the counters kept here (the inner loop of a penumbra).
     void sampleCentralRays(const LightPiece& piece, int depth, const Item* occluders, std::uint32_t count,
                            double share) {
-        // A lattice's point samples (rectangles, segments): an occluder
-        // whose every ray toward them leaves it (Primitive::raysLeave, from
-        // the lattice's corner points, which span the rest) blocks none and
-        // is left out. Detection cannot tell so where the point lies next to
-        // the occluder (a box or cone standing on the ground), nor from the
-        // piece's cone, which reaches past the samples.
+        // An occluder whose every ray toward the point samples leaves it
+        // (Primitive::raysLeave) blocks none and is left out: from a
+        // lattice's corner points (rectangles, segments), which span the
+        // rest, or else from the pyramid about the piece's cone (a sphere's
+        // pieces). Detection cannot tell so where the point lies next to the
+        // occluder (a box or cone standing on the ground), nor from the
+        // piece's cone, which reaches past a lattice's samples.
         const bool latticed = beams_.hasLattice(depth);
         LightBeams::Lattice lattice;
         Vec3 corners[4];
@@ -331,9 +332,11 @@ private:
                 emitAbove(ray, share);
             }
         };
-        // The lattice's loop with `blocked(dir, t0, t1)` inlined.
+        // The lattice's loop with `blocked(dir, t0, t1)` inlined; a lattice
+        // made above is not made again (forEachCentralRay's rays, in its
+        // order, bit for bit).
         const auto sample = [&](auto&& blocked, auto summedHere) {
-            beams_.forEachCentralRay(piece, depth, [&](const BeamRay& ray) __attribute__((always_inline)) {
+            const auto each = [&](const BeamRay& ray) __attribute__((always_inline)) {
                 ++pieces;
                 const Vec3& dir = ray.ray.dir;
                 if (dot3(q_.normal, dir) < kPovEpsilon) return;
@@ -346,7 +349,15 @@ private:
                     return;
                 }
                 lit(ray, summedHere);
-            });
+            };
+            if (!latticed) {
+                beams_.forEachCentralRay(piece, depth, each);
+                return;
+            }
+            for (int m = 0; m < lattice.count(); ++m) {
+                const LightBeams::Lattice::Place at = lattice.place(m);
+                each(lattice.ray(at.i, at.j));
+            }
         };
         // One convex occluder clear of the rays' ends (convexShadow): its
         // shadow on the lattice is a convex set's points, found with few

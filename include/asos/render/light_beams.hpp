@@ -175,14 +175,16 @@ public:
             const std::uint8_t ij = kMorton[std::size_t(m)];
             return {int(ij & 15u), int(ij >> 4)};
         }
-        __attribute__((always_inline)) BeamRay ray(int i, int j) const {
-            return beams_->toward(segment_ ? columns_[i] : columns_[i] + rows_[j]);
-        }
+        __attribute__((always_inline)) BeamRay ray(int i, int j) const { return beams_->toward(point(i, j)); }
         // The light point at place (i, j) less the apex: ray(i, j)'s
         // direction, not normalised.
-        Vec3 offset(int i, int j) const { return (segment_ ? columns_[i] : columns_[i] + rows_[j]) - beams_->apex_; }
+        Vec3 offset(int i, int j) const { return point(i, j) - beams_->apex_; }
 
     private:
+        // The light point at place (i, j).
+        __attribute__((always_inline)) Vec3 point(int i, int j) const {
+            return segment_ ? columns_[i] : columns_[i] + rows_[j];
+        }
         friend class LightBeams;
         const LightBeams* beams_ = nullptr;
         bool segment_ = false;
