@@ -114,4 +114,22 @@ LocalFrame LocalFrame::make(const Transform& worldFromObject, const Mat3& object
     return f;
 }
 
+LocalFrame::Flattened LocalFrame::flattened() const {
+    // The plane's unit normal as normalToWorld gives it, and a rotation
+    // taking +z to it; the plane's origin stays worldOffset.
+    const Mat3 r = frameAroundAxis(
+        glm::normalize(Vec3(localFromWorld[0][2], localFromWorld[1][2], localFromWorld[2][2])));
+    // (x, y, 0) is at worldOffset + x W0 + y W1 (W = worldFromLocal), whose
+    // new local coordinates are its components along r's first two columns.
+    const Mat3& w = worldFromLocal;
+    const glm::dmat2 inPlane(glm::dot(r[0], w[0]), glm::dot(r[1], w[0]),   // column 0
+                             glm::dot(r[0], w[1]), glm::dot(r[1], w[1]));  // column 1
+    Flattened out{make(Transform(), r, worldOffset), inPlane};
+    const glm::dmat2 back = glm::inverse(inPlane);
+    out.frame.objectFromLocal =
+        objectFromLocal * Mat3(Vec3(back[0], 0.0), Vec3(back[1], 0.0), Vec3(0.0, 0.0, 1.0));
+    out.frame.objectOffset = objectOffset;
+    return out;
+}
+
 }  // namespace asos

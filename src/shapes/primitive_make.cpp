@@ -170,8 +170,15 @@ Primitive Primitive::make(const Shape& shape, const Transform& worldFromObject) 
     }
     if (const auto* p = std::get_if<PolygonShape>(&shape)) {
         PolygonLayout layout = layOutPolygon(p->points);
-        return Primitive(Polygon(std::move(layout.vertices), std::move(layout.loopEnds)),
-                         LocalFrame::make(worldFromObject, layout.objectFromLocal, layout.origin),
+        LocalFrame frame = LocalFrame::make(worldFromObject, layout.objectFromLocal, layout.origin);
+        if (frame.kind == LocalFrame::Kind::General) {
+            // An affine image of a planar polygon is a planar polygon: in a
+            // rigid frame its cones stay circular and are classified exactly.
+            const LocalFrame::Flattened flat = frame.flattened();
+            for (Vec2& v : layout.vertices) v = flat.inPlane * v;
+            frame = flat.frame;
+        }
+        return Primitive(Polygon(std::move(layout.vertices), std::move(layout.loopEnds)), frame,
                          Polygon::kName);
     }
     if (const auto* p = std::get_if<PlaneShape>(&shape)) {

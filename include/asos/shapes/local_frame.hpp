@@ -64,6 +64,21 @@ struct LocalFrame {
         return glm::normalize(n * localFromWorld);
     }
     Vec3 pointToObject(const Vec3& p) const { return objectFromLocal * p + objectOffset; }
+
+    // A flat shape in the local plane z = 0 is, under any frame, a flat shape
+    // in a world plane, which a rigid frame can hold: `frame` puts that plane
+    // at its own z = 0, its +z on the side normalToWorld gives, and
+    // `inPlane` takes this frame's local (x, y) to its (x, y). For every
+    // point of the plane its pointToObject is this frame's. (A polygon under
+    // a non-uniform scale, so relaid, has its cones classified exactly,
+    // without the General frames' bounding cone.)
+    struct Flattened;
+    Flattened flattened() const;
+};
+
+struct LocalFrame::Flattened {
+    LocalFrame frame;
+    glm::dmat2 inPlane{1.0};
 };
 
 // A rotation taking +z to the unit vector n (columns: two unit vectors
