@@ -111,18 +111,28 @@ std::optional<LocalHit> Polygon::intersect(const Ray& ray, double tMin, double t
 
 ConeClass Polygon::classify(const LocalCone& cone) const {
     if (empty()) return missClass();
-    if (const FootprintReach f = footprintReach(cone, 0.0); f.valid) {
+    const Vec3& p = cone.apex;
+    const Vec3& axis = cone.axis;
+    const double c = cone.cosHalf, s = cone.sinHalf;
+    const double h = -p.z;
+    const double g2 = axis.x * axis.x + axis.y * axis.y, k = c * c - g2;
+    if (c > 0.0 && h * axis.z > 0.0 && k > 1e-6) {
         // Fast path. Every ray crosses, and the footprint lies within
-        // f.radius of the axis' crossing q; an edge farther from q cannot
-        // meet the cone. One pass over the edges, like the ray's own
-        // even-odd test, finds q's side and the few edges near it, which
-        // alone are tested exactly.
-        const Vec2 q = f.q;
-        const double radius = f.radius;
+        // `radius` of the axis' crossing q (footprintReach's bound); an edge
+        // farther from q cannot meet the cone. One pass over the edges, like
+        // the ray's own even-odd test, finds q's side and the few edges near
+        // it, which alone are tested exactly. The pass works in lengths
+        // multiplied by an k (an = |axis.z|), as the disc's fast path does:
+        // q and radius then need no division, so the pass does not wait for
+        // one (each edge's start is scaled in the pass instead).
+        const double an = std::abs(axis.z), depth = std::abs(h), ank = an * k;
+        const double qx = (an * p.x + depth * axis.x) * k, qy = (an * p.y + depth * axis.y) * k;
+        const double radius =
+            depth * s * (c * an + 0.5 * (1.0 + g2) * s) * (1.0 + 1e-12) + cone.absTol * ank;
         const double radius2 = radius * radius;
         // The footprint wholly off the polygon's bounding box: a miss.
-        const bool offBox = (q.x + radius < lo_.x) | (q.x - radius > hi_.x) |
-                            (q.y + radius < lo_.y) | (q.y - radius > hi_.y);
+        const bool offBox = (qx + radius < ank * lo_.x) | (qx - radius > ank * hi_.x) |
+                            (qy + radius < ank * lo_.y) | (qy - radius > ank * hi_.y);
         // The edges near q (a few at most, or the exact path runs): those
         // whose line passes within `radius` of q, a superset of those within
         // `radius` (rarely larger: only an edge whose line runs by q but
@@ -135,18 +145,19 @@ ConeClass Polygon::classify(const LocalCone& cone) const {
         std::uint32_t nearEdge[kMaxNear];
         std::uint32_t nearCount = 0;
         using Mask2 = std::int64_t __attribute__((vector_size(16)));
-        const Double2 qx = {q.x, q.x}, qy = {q.y, q.y}, r2 = {radius2, radius2};
+        const Double2 qx2 = {qx, qx}, qy2 = {qy, qy}, r2 = {radius2, radius2}, scale = {ank, ank};
+        const Double2 zero = {0.0, 0.0};
         Mask2 insideLanes = {0, 0};
         const std::uint32_t pairCount = static_cast<std::uint32_t>(edgePairs_.size());
         for (std::uint32_t pair = 0; pair < pairCount; ++pair) {
             const EdgePair& e = edgePairs_[pair];
-            const Double2 wx = qx - e.v0x, wy = qy - e.v0y;
+            const Double2 wx = qx2 - scale * e.v0x, wy = qy2 - scale * e.v0y;
             const Double2 side = e.ex * wy - wx * e.ey;
             // The edge crosses q's line with v0 below it exactly when e
             // points up (e.y = v1.y - v0.y rounds to the sign of the
             // difference), so the side is tested against where v1 lies.
-            const Mask2 above1 = e.v1y > qy;
-            insideLanes ^= ((e.v0y > qy) ^ above1) & ~((side > 0.0) ^ above1);
+            const Mask2 above1 = scale * e.v1y > qy2;
+            insideLanes ^= ((wy < zero) ^ above1) & ~((side > zero) ^ above1);
             const Mask2 near = side * side <= r2 * e.ee;
             nearEdge[nearCount % kMaxNear] = 2 * pair;
             nearCount += static_cast<std::uint32_t>(near[0] & 1);
@@ -156,7 +167,7 @@ ConeClass Polygon::classify(const LocalCone& cone) const {
         const bool inside = ((insideLanes[0] ^ insideLanes[1]) & 1) != 0;
         if (offBox | ((nearCount == 0) & !inside)) return missClass();
         if (nearCount >= kMaxNear) return classifyExactly(cone);
-        const auto [tNear, tFar] = crossingDepths(cone, f);
+        const auto [tNear, tFar] = planeDepths(depth, an, g2, c, s);
         if (cone.surelyAfter(tNear) || cone.surelyBefore(tFar) ||
             ballOutsideRange(cone, Vec3(center_, 0.0), radius_))
             return missClass();
@@ -165,7 +176,7 @@ ConeClass Polygon::classify(const LocalCone& cone) const {
         // footprint far from every edge needs neither its divisions nor
         // its root).
         if (nearCount > 0) {
-            const FootprintQuadric footprint(cone, f.depth, f.an, f.k);
+            const FootprintQuadric footprint(cone, depth, an, k);
             // Counted, not branched on: whether a near edge meets the
             // footprint is as good as random.
             int meeting = 0;
