@@ -110,6 +110,15 @@ std::optional<LocalHit> Polygon::intersect(const Ray& ray, double tMin, double t
 }
 
 ConeClass Polygon::classify(const LocalCone& cone) const {
+    return classifyWith(cone, [] {}, [](const ConeClass& out) { return out; });
+}
+
+ConeClass Polygon::classifyRanging(LocalCone& cone, double t0, double t1, const RigidBounds& back) const {
+    return classifyWith(cone, [&] { cone.setRange(t0, t1, cone.absTol); }, back);
+}
+
+template <class SetRange, class Finish>
+ConeClass Polygon::classifyWith(const LocalCone& cone, SetRange&& setRange, Finish&& finish) const {
     if (empty()) return missClass();
     const Vec3& p = cone.apex;
     const Vec3& axis = cone.axis;
@@ -166,7 +175,9 @@ ConeClass Polygon::classify(const LocalCone& cone) const {
         }
         const bool inside = ((insideLanes[0] ^ insideLanes[1]) & 1) != 0;
         if (offBox | ((nearCount == 0) & !inside)) return missClass();
-        if (nearCount >= kMaxNear) return classifyExactly(cone);
+        // The pass's Miss needs no range (absTol only): it is set here.
+        setRange();
+        if (nearCount >= kMaxNear) return finish(classifyExactly(cone));
         const auto [tNear, tFar] = planeDepths(depth, an, g2, c, s);
         if (cone.surelyAfter(tNear) || cone.surelyBefore(tFar) ||
             ballOutsideRange(cone, Vec3(center_, 0.0), radius_))
@@ -193,15 +204,16 @@ ConeClass Polygon::classify(const LocalCone& cone) const {
                 const bool single = meeting == 1 && cone.surelyWithin(tNear, tFar) &&
                                     !footprint.containsStrictly(edge.v0) &&
                                     !footprint.containsStrictly(edge.v0 + edge.e);
-                return marginalClass(cone, tNear, tFar, single);
+                return finish(marginalClass(cone, tNear, tFar, single));
             }
         }
         // No edge in the cone: the footprint is wholly in or out, as q.
         if (!inside) return missClass();
-        if (cone.surelyWithin(tNear, tFar)) return fullClass(tNear, tFar);
-        return marginalClass(cone, tNear, tFar);
+        if (cone.surelyWithin(tNear, tFar)) return finish(fullClass(tNear, tFar));
+        return finish(marginalClass(cone, tNear, tFar));
     }
-    return classifyExactly(cone);
+    setRange();
+    return finish(classifyExactly(cone));
 }
 
 ConeClass Polygon::classifyExactly(const LocalCone& cone) const {

@@ -91,11 +91,15 @@ ConeClass Primitive::classifyRigid(const PreparedCone& cone) const {
     const double t0 = kScaled ? cone.tMin * frame_.localPerWorld : cone.tMin;
     const double t1 = kScaled ? cone.tMax * frame_.localPerWorld : cone.tMax;
     const RigidBounds back{absTol, kScaled ? frame_.worldPerLocal : 1.0, cone.tMin, cone.tMax};
-    // A disc's Misses mostly need no range nor bounds: it sets the one and
-    // applies the other past them.
+    // A disc's and a polygon's Misses mostly need no range nor bounds: they
+    // set the one and apply the other past them.
     if (const Disc* disc = std::get_if<Disc>(&shape_)) {
         local.absTol = absTol;
         return disc->classifyRanging(local, t0, t1, back);
+    }
+    if (const Polygon* polygon = std::get_if<Polygon>(&shape_)) {
+        local.absTol = absTol;
+        return polygon->classifyRanging(local, t0, t1, back);
     }
     local.setRange(t0, t1, absTol);
     return back(visit([&](const auto& s) { return s.classify(local); }));

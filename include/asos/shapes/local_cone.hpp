@@ -63,7 +63,7 @@ struct PreparedCone {
 // bounds (+inf, -inf) come through unchanged, so a Miss needs none of this.
 struct RigidBounds {
     double absTol, worldPerLocal, tMin, tMax;
-    ConeClass operator()(ConeClass out) const {
+    __attribute__((always_inline)) ConeClass operator()(ConeClass out) const {
         const double tNear = (out.tNear * (1.0 - kConeDistanceTolerance) - absTol) * worldPerLocal;
         const double tFar = (out.tFar * (1.0 + kConeDistanceTolerance) + absTol) * worldPerLocal;
         out.tNear = std::max(tMin, tNear);

@@ -48,8 +48,15 @@ public:
     // The edges are the boundary: Marginal iff one meets the cone; else the
     // cone's footprint is wholly inside or outside, as its axis point.
     ConeClass classify(const LocalCone& cone) const;
+    // The same, for a rigid frame's cone whose range is not set yet (apex,
+    // axis, angle and absTol are): the range [t0, t1] is set and `back`
+    // applied only past the edge pass's Miss, which needs neither (as
+    // Disc::classifyRanging).
+    ConeClass classifyRanging(LocalCone& cone, double t0, double t1, const RigidBounds& back) const;
 
 private:
+    template <class SetRange, class Finish>
+    ConeClass classifyWith(const LocalCone& cone, SetRange&& setRange, Finish&& finish) const;
     // Every edge against the cone (the fast path's fallback near an edge).
     ConeClass classifyExactly(const LocalCone& cone) const;
 
