@@ -30,50 +30,6 @@ ConeClass Disc::classify(const LocalCone& cone) const {
     return classifyWith(cone, [] {}, [](const ConeClass& out) { return out; });
 }
 
-std::optional<ConeClass> Disc::classifyAcrossScale(const PreparedCone& cone,
-                                                   const LocalFrame& frame) const {
-    if (empty()) return missClass();
-    // The plane z = 0, with its unit normal kept with the frame, through the
-    // disc's centre, the world image of the local origin.
-    const Mat3& a = frame.localFromWorld;
-    const Vec3& n = frame.planeNormal;
-    const Vec3 w = cone.apex - frame.worldOffset;
-    const double c = cone.cosHalf, s = cone.sinHalf;
-    // As in the local fast path below, in world units: h the apex's height
-    // under the plane, a_n = |n.axis|, g^2 the axis' part in the plane.
-    const double h = -glm::dot(n, w), az = glm::dot(n, cone.axis);
-    const Vec3 along = cone.axis - az * n;
-    const double g2 = glm::dot(along, along), k = c * c - g2;
-    if (!(c > 0.0 && h * az > 0.0 && k > 1e-6)) return std::nullopt;
-    const double an = std::abs(az), depth = std::abs(h), ank = an * k;
-    // The axis' crossing times a_n, a vector in the plane, and its local
-    // in-plane coordinates (rows 0 and 1 of localFromWorld).
-    const Vec3 qs = an * w + depth * cone.axis;
-    const double qx = a[0][0] * qs.x + a[1][0] * qs.y + a[2][0] * qs.z;
-    const double qy = a[0][1] * qs.x + a[1][1] * qs.y + a[2][1] * qs.z;
-    const double q2 = (qx * qx + qy * qy) * (k * k);
-    // The world footprint lies within its reach of the crossing; mapped, within
-    // sigmaMax times that. absTol in world units: the coordinates' size (the
-    // apex from the centre, and the centre itself, whose rounding the local
-    // offset carries) and the disc's world extent (at most radius / sigmaMin).
-    const Vec3& centre = frame.worldOffset;
-    const double absTol =
-        1e-11 * (std::abs(w.x) + std::abs(w.y) + std::abs(w.z) + std::abs(centre.x) +
-                 std::abs(centre.y) + std::abs(centre.z) + radius_ / frame.sigmaMin);
-    const double reachWorld = scaledReach(depth, an, g2, c, s, absTol, ank);
-    const double radius = reachWorld * frame.sigmaMax * (1.0 + 1e-12);
-    const auto [miss, full] = circlesAgainstReach(q2, ank, radius);
-    if (miss) return missClass();
-    if (!full) return std::nullopt;
-    // Every ray crosses the plane within the disc: the world depths against
-    // the world range, padded as a rigid frame's are.
-    LocalCone world;
-    world.setRange(cone.tMin, cone.tMax, absTol);
-    const auto [tNear, tFar] = planeDepths(depth, an, g2, c, s);
-    return RigidBounds{absTol, 1.0, cone.tMin, cone.tMax}(
-        rangedClass(world, false, true, tNear, tFar));
-}
-
 std::optional<ConeClass> Disc::bandClass(const LocalCone& cone, double depth, double an, double k,
                                          double tNear, double tFar) const {
     const CircleFootprint ellipse(cone, depth, an, k);

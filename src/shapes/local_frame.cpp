@@ -102,8 +102,6 @@ LocalFrame LocalFrame::make(const Transform& worldFromObject, const Mat3& object
     const Mat3 localGram = glm::transpose(f.localFromWorld) * f.localFromWorld;
     f.gramTrace = localGram[0][0] + localGram[1][1] + localGram[2][2];
     f.gram = localGram;
-    f.planeNormal = glm::normalize(Vec3(f.localFromWorld[0][2], f.localFromWorld[1][2],
-                                        f.localFromWorld[2][2]));
     const double det = glm::determinant(f.localFromWorld);
     f.gramDeterminant = det * det;
     const Vec3 ev = symmetricEigenvalues(localGram);
@@ -114,11 +112,18 @@ LocalFrame LocalFrame::make(const Transform& worldFromObject, const Mat3& object
     return f;
 }
 
-LocalFrame::Flattened LocalFrame::flattened() const {
+LocalFrame::Flattened LocalFrame::flattened(double angle) const {
     // The plane's unit normal as normalToWorld gives it, and a rotation
-    // taking +z to it; the plane's origin stays worldOffset.
-    const Mat3 r = frameAroundAxis(
+    // taking +z to it, turned by `angle` about it; the plane's origin stays
+    // worldOffset.
+    Mat3 r = frameAroundAxis(
         glm::normalize(Vec3(localFromWorld[0][2], localFromWorld[1][2], localFromWorld[2][2])));
+    if (angle != 0.0) {
+        const double c = std::cos(angle), s = std::sin(angle);
+        const Vec3 u = r[0], v = r[1];
+        r[0] = c * u + s * v;
+        r[1] = c * v - s * u;
+    }
     // (x, y, 0) is at worldOffset + x W0 + y W1 (W = worldFromLocal), whose
     // new local coordinates are its components along r's first two columns.
     const Mat3& w = worldFromLocal;

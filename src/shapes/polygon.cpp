@@ -136,8 +136,7 @@ ConeClass Polygon::classifyWith(const LocalCone& cone, SetRange&& setRange, Fini
         // one (each edge's start is scaled in the pass instead).
         const double an = std::abs(axis.z), depth = std::abs(h), ank = an * k;
         const double qx = (an * p.x + depth * axis.x) * k, qy = (an * p.y + depth * axis.y) * k;
-        const double radius =
-            depth * s * (c * an + 0.5 * (1.0 + g2) * s) * (1.0 + 1e-12) + cone.absTol * ank;
+        const double radius = scaledReach(depth, an, g2, c, s, cone.absTol, ank);
         const double radius2 = radius * radius;
         // The footprint wholly off the polygon's bounding box: a miss.
         const bool offBox = (qx + radius < ank * lo_.x) | (qx - radius > ank * hi_.x) |

@@ -91,8 +91,8 @@ ConeClass Primitive::classifyRigid(const PreparedCone& cone) const {
     const double t0 = kScaled ? cone.tMin * frame_.localPerWorld : cone.tMin;
     const double t1 = kScaled ? cone.tMax * frame_.localPerWorld : cone.tMax;
     const RigidBounds back{absTol, kScaled ? frame_.worldPerLocal : 1.0, cone.tMin, cone.tMax};
-    // A disc's and a polygon's Misses mostly need no range nor bounds: they
-    // set the one and apply the other past them.
+    // A disc's (circular or elliptic) and a polygon's Misses mostly need no
+    // range nor bounds: they set the one and apply the other past them.
     if (const Disc* disc = std::get_if<Disc>(&shape_)) {
         local.absTol = absTol;
         return disc->classifyRanging(local, t0, t1, back);
@@ -100,6 +100,10 @@ ConeClass Primitive::classifyRigid(const PreparedCone& cone) const {
     if (const Polygon* polygon = std::get_if<Polygon>(&shape_)) {
         local.absTol = absTol;
         return polygon->classifyRanging(local, t0, t1, back);
+    }
+    if (const EllipticDisc* disc = std::get_if<EllipticDisc>(&shape_)) {
+        local.absTol = absTol;
+        return disc->classifyRanging(local, t0, t1, back);
     }
     local.setRange(t0, t1, absTol);
     return back(visit([&](const auto& s) { return s.classify(local); }));
@@ -112,9 +116,6 @@ ConeClass Primitive::classifyRigid(const PreparedCone& cone) const {
 // the union of those ranges, and a Full answer stands only if its depth bounds
 // fall in every ray's own range (docs/geometry.md).
 ConeClass Primitive::classifyGeneral(const PreparedCone& cone) const {
-    // A disc is flat: its fast path needs no bounding cone (Disc).
-    if (const Disc* disc = std::get_if<Disc>(&shape_))
-        if (const auto out = disc->classifyAcrossScale(cone, frame_)) return *out;
     // An ellipsoid's commonest answers need no bounding cone either (Sphere).
     if (const Sphere* sphere = std::get_if<Sphere>(&shape_))
         if (const auto out = sphere->classifyAcrossScale(cone, frame_)) return *out;
@@ -214,7 +215,9 @@ bool Primitive::convex() const {
         if constexpr (std::is_same_v<S, Sphere> || std::is_same_v<S, Box>) return true;
         else if constexpr (std::is_same_v<S, Cylinder> || std::is_same_v<S, TruncatedCone>)
             return shape.frustum().capped();
-        else if constexpr (std::is_same_v<S, Disc> || std::is_same_v<S, Polygon>) return shape.convex();
+        else if constexpr (std::is_same_v<S, Disc> || std::is_same_v<S, EllipticDisc> ||
+                           std::is_same_v<S, Polygon>)
+            return shape.convex();
         else return false;  // a plane: unbounded
     });
 }
@@ -260,7 +263,8 @@ bool Primitive::raysLeave(const Vec3& worldOrigin, const Vec3* directions, int c
             if (!(rho > 0.0)) return false;
             const Vec3 n(length * a.x / rho, length * a.y / rho, r0 - r1);
             return glm::dot(n, a) >= length * r0 && away(n);
-        } else if constexpr (std::is_same_v<S, Disc> || std::is_same_v<S, Polygon>) {
+        } else if constexpr (std::is_same_v<S, Disc> || std::is_same_v<S, EllipticDisc> ||
+                             std::is_same_v<S, Polygon>) {
             // In the plane z = 0.
             return (a.z >= 0.0 && away(z)) || (a.z <= 0.0 && away(-z));
         } else {

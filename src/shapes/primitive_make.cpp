@@ -163,10 +163,24 @@ Primitive Primitive::make(const Shape& shape, const Transform& worldFromObject) 
         requireNonNegative(d->holeRadius, "disc", "hole radius");
         const double len = glm::length(d->normal);
         if (!(len > 0.0)) reject("disc: the normal vector is zero");
-        return Primitive(Disc(d->radius, d->holeRadius),
-                         LocalFrame::make(worldFromObject, frameAroundAxis(d->normal / len),
-                                          d->center),
-                         Disc::kName);
+        const Disc disc(d->radius, d->holeRadius);
+        const LocalFrame frame =
+            LocalFrame::make(worldFromObject, frameAroundAxis(d->normal / len), d->center);
+        if (frame.kind != LocalFrame::Kind::General || disc.empty())
+            return Primitive(disc, frame, Disc::kName);
+        // An affine image of a circle is an ellipse: the disc is laid out
+        // again in a rigid frame whose x and y run along the axes of the
+        // ellipse {A x : |x| <= radius} (A = inPlane), the eigenvectors of
+        // A A^T, its semi-axes radius times the rows' lengths there.
+        const glm::dmat2 a = frame.flattened().inPlane;
+        const glm::dmat2 p = a * glm::transpose(a);
+        const double angle = 0.5 * std::atan2(2.0 * p[1][0], p[0][0] - p[1][1]);
+        const LocalFrame::Flattened flat = frame.flattened(angle);
+        const glm::dmat2& b = flat.inPlane;
+        return Primitive(EllipticDisc(d->radius * std::hypot(b[0][0], b[1][0]),
+                                      d->radius * std::hypot(b[0][1], b[1][1]),
+                                      d->holeRadius / d->radius),
+                         flat.frame, Disc::kName);
     }
     if (const auto* p = std::get_if<PolygonShape>(&shape)) {
         PolygonLayout layout = layOutPolygon(p->points);

@@ -3,6 +3,7 @@
 #include <cmath>
 
 #include "asos/shapes/disc.hpp"
+#include "asos/shapes/elliptic_disc.hpp"
 #include "asos/shapes/primitive.hpp"
 #include "shape_property.hpp"
 
@@ -109,15 +110,17 @@ TEST_CASE("Disc cone classification is conservative (property)", "[shapes][disc]
     CHECK(stats.miss > 0);
 }
 
-// Primitive::classifyRigid hands a disc its cone before the range is set
-// (Disc::classifyRanging): the answers must be those of classify on the
-// ranged cone, brought back by the same RigidBounds.
-TEST_CASE("Disc classifyRanging answers as classify does", "[shapes][disc]") {
-    shapetest::Rng rng(0xd15c4a6e);
+// Primitive::classifyRigid hands a disc (circular, or elliptic under a
+// non-uniform frame) its cone before the range is set (classifyRanging): the
+// answers must be those of classify on the ranged cone, brought back by the
+// same RigidBounds.
+template <class Shape>
+void checkRangingAsClassify(std::uint64_t seed, Shape (*make)(shapetest::Rng&, double)) {
+    shapetest::Rng rng(seed);
     int misses = 0, others = 0;
     for (int i = 0; i < 20000; ++i) {
         const double radius = rng.uniform(0.2, 2.0);
-        const Disc d(radius, rng.chance(0.4) ? radius * rng.uniform(0.1, 0.9) : 0.0);
+        const Shape d = make(rng, radius);
         LocalCone cone;
         cone.apex = Vec3(rng.uniform(-4, 4), rng.uniform(-4, 4), rng.uniform(-4, 4));
         cone.axis = rng.unitVector();
@@ -143,4 +146,31 @@ TEST_CASE("Disc classifyRanging answers as classify does", "[shapes][disc]") {
     }
     CHECK(misses > 1000);
     CHECK(others > 1000);
+}
+
+TEST_CASE("Disc classifyRanging answers as classify does", "[shapes][disc]") {
+    checkRangingAsClassify<Disc>(0xd15c4a6e, [](shapetest::Rng& rng, double radius) {
+        return Disc(radius, rng.chance(0.4) ? radius * rng.uniform(0.1, 0.9) : 0.0);
+    });
+    checkRangingAsClassify<EllipticDisc>(0xe111d15c, [](shapetest::Rng& rng, double radius) {
+        return EllipticDisc(radius, radius * rng.uniform(0.25, 4.0),
+                            rng.chance(0.4) ? rng.uniform(0.1, 0.9) : 0.0);
+    });
+}
+
+TEST_CASE("Disc under a non-uniform frame: an elliptic disc with the same hits and object points",
+          "[shapes][disc]") {
+    // Primitive::make lays a disc under a non-uniform scale, a shear or a
+    // matrix out again as an EllipticDisc in a rigid frame.
+    shapetest::checkFlatUnderScale(0xe11d15cull, [](const Transform& t) {
+        return Primitive::make(DiscShape{Vec3(0.0), Vec3(0, 0, 1), 1.0, 0.3}, t);
+    }, [](shapetest::Rng& rng) {
+        // A point of the annulus by a margin, or off it by one (beyond the
+        // rim or in the hole).
+        const double angle = rng.uniform(0.0, 2.0 * kPi);
+        const double pick = rng.uniform();
+        const double r = pick < 0.5 ? rng.uniform(0.32, 0.98) : pick < 0.8 ? rng.uniform(1.02, 2.0)
+                                                                          : rng.uniform(0.0, 0.28);
+        return std::pair{Vec3(r * std::cos(angle), r * std::sin(angle), 0.0), pick < 0.5};
+    });
 }

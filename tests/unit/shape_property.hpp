@@ -126,6 +126,45 @@ inline TransformCase randomTransform(Rng& rng, double spread, int firstKind = 0)
     return {t, s.str()};
 }
 
+// A flat shape in the object's plane z = 0 under non-uniform scales and
+// matrices (some mirrored), which Primitive::make lays out again in a rigid
+// frame: rays aimed at points of the plane (target(rng) gives the object
+// point and whether the shape holds it, by a margin) must hit exactly the
+// held ones, at the point's distance, with the plane's world normal (the
+// inverse transpose of +z) and the object point itself.
+template <class Make, class Target>
+void checkFlatUnderScale(std::uint64_t seed, Make&& make, Target&& target) {
+    Rng rng(seed);
+    int hitsSeen = 0, missesSeen = 0;
+    for (int trial = 0; trial < 200; ++trial) {
+        TransformCase tc = randomTransform(rng, 5.0, 4);
+        if (rng.chance(0.3)) tc.worldFromObject = tc.worldFromObject * Transform::scale({-1.0, 1.0, 1.0});
+        const Primitive shape = make(tc.worldFromObject);
+        const Mat4& m = tc.worldFromObject.matrix();
+        const Vec3 normal = glm::normalize(glm::transpose(glm::inverse(Mat3(m))) * Vec3(0, 0, 1));
+        INFO(tc.text);
+        for (int k = 0; k < 20; ++k) {
+            const auto [point, held] = target(rng);
+            const Vec3 world = Vec3(m * Vec4(point, 1.0));
+            const Vec3 origin = world + rng.uniform(1.0, 10.0) * rng.unitVector();
+            const double distance = glm::length(world - origin);
+            const auto hit = shape.intersect(Ray{origin, (world - origin) / distance}, 0.0, kInfinity);
+            INFO("object point " << fmt(point));
+            REQUIRE(hit.has_value() == held);
+            if (!hit) {
+                ++missesSeen;
+                continue;
+            }
+            ++hitsSeen;
+            CHECK(std::abs(hit->t - distance) <= 1e-9 * (1.0 + distance));
+            CHECK(glm::length(hit->normal - normal) <= 1e-9);
+            CHECK(glm::length(hit->objectPoint - point) <= 1e-9);
+        }
+    }
+    CHECK(hitsSeen > 1000);
+    CHECK(missesSeen > 1000);
+}
+
 // A cone aimed at (or near) a target point of the object.
 inline Cone randomCone(Rng& rng, const Vec3& target, const Vec3& surfacePoint,
                        const Bounds3& bounds, double size) {

@@ -233,6 +233,38 @@ inline FootprintReach footprintReach(const LocalCone& cone, double zc) {
     return f;
 }
 
+// The same reach without its divisions, scaled by an k (an = |axis.z|) as
+// the fast paths' crossing an k q is (Disc, EllipticDisc, Polygon), padded
+// by absTol: every point of the footprint lies within it of an k q.
+inline double scaledReach(double depth, double an, double g2, double c, double s, double absTol,
+                          double ank) {
+    return depth * s * (c * an + 0.5 * (1.0 + g2) * s) * (1.0 + 1e-12) + absTol * ank;
+}
+
+// The fast paths' answer for an annulus hole <= |x| <= outer about the
+// origin, when every point of the footprint lies within `radius` of the
+// crossing q (|q|^2 = q2), all scaled by `ank`: Miss when that reach stays
+// off the annulus, Full when inside it.
+struct AnnulusAnswer {
+    bool miss, full;
+};
+inline AnnulusAnswer annulusAgainstReach(double q2, double ank, double radius, double outer,
+                                         double hole) {
+    const double outerFar = ank * outer + radius, outerNear = ank * outer - radius;
+    const double holeFar = ank * hole + radius, holeNear = ank * hole - radius;
+    const bool miss = (q2 > outerFar * outerFar) | ((holeNear > 0.0) & (q2 < holeNear * holeNear));
+    const bool full = (outerNear > 0.0) & (q2 < outerNear * outerNear) &
+                      ((hole == 0.0) | (q2 > holeFar * holeFar));
+    return {miss, full};
+}
+
+// A circle of radius `radius` about the origin passes within `inner` (> 0)
+// of the crossing q, |q|^2 = q2 (all scaled alike).
+inline bool circleNearCrossing(double q2, double radius, double inner) {
+    const double far = radius + inner, near = radius - inner;
+    return (inner > 0.0) & (q2 < far * far) & ((near <= 0.0) | (q2 > near * near));
+}
+
 // The depths [tNear, tFar] at which the rays cross the plane, for a valid
 // FootprintReach (apart, since the quick misses do not need the root).
 struct CrossingDepths {

@@ -9,7 +9,6 @@
 #include "asos/geometry/ray.hpp"
 #include "asos/shapes/cone_geometry.hpp"
 #include "asos/shapes/local_cone.hpp"
-#include "asos/shapes/local_frame.hpp"
 #include "asos/shapes/local_hit.hpp"
 
 namespace asos {
@@ -48,44 +47,7 @@ public:
         return classifyWith(cone, [&] { cone.setRange(t0, t1, cone.absTol); }, back);
     }
 
-    // Under a non-uniform frame (Primitive::classifyGeneral): the fast path
-    // in world terms, the cone as it is and the disc's plane mapped, its
-    // in-plane reach scaled by the frame's largest singular value; a Miss or
-    // a Full in world units, or nullopt for the bounding-cone path
-    // (docs/geometry.md, "Disc").
-    std::optional<ConeClass> classifyAcrossScale(const PreparedCone& cone,
-                                                 const LocalFrame& frame) const;
-
 private:
-    // The fast paths' reach, scaled by an k as their crossing is: every point
-    // of the footprint lies within it of the axis' crossing (footprintReach's
-    // bound, without its divisions), padded by absTol.
-    static double scaledReach(double depth, double an, double g2, double c, double s,
-                              double absTol, double ank) {
-        return depth * s * (c * an + 0.5 * (1.0 + g2) * s) * (1.0 + 1e-12) + absTol * ank;
-    }
-    struct ReachAnswer {
-        bool miss, full;
-    };
-    // The fast paths' answer: every point of the footprint lies within
-    // `radius` of the axis' crossing q (|q|^2 = q2), all scaled by `ank`:
-    // Miss when that reach stays off the annulus, Full when inside it.
-    ReachAnswer circlesAgainstReach(double q2, double ank, double radius) const {
-        const double outerFar = ank * radius_ + radius, outerNear = ank * radius_ - radius;
-        const double holeFar = ank * hole_ + radius, holeNear = ank * hole_ - radius;
-        const bool miss = (q2 > outerFar * outerFar) | ((holeNear > 0.0) & (q2 < holeNear * holeNear));
-        const bool full = (outerNear > 0.0) & (q2 < outerNear * outerNear) &
-                          ((hole_ == 0.0) | (q2 > holeFar * holeFar));
-        return {miss, full};
-    }
-
-    // A circle of radius `radius` about the centre passes within `inner`
-    // (> 0) of the crossing q, |q|^2 = q2 (all scaled alike).
-    static bool circleNearCrossing(double q2, double radius, double inner) {
-        const double far = radius + inner, near = radius - inner;
-        return (inner > 0.0) & (q2 < far * far) & ((near <= 0.0) | (q2 > near * near));
-    }
-
     template <class SetRange, class Finish>
     ConeClass classifyWith(const LocalCone& cone, SetRange&& setRange, Finish&& finish) const;
     // The fast path's cones near a circle: the footprint ellipse against both
@@ -123,8 +85,8 @@ inline ConeClass Disc::classifyWith(const LocalCone& cone, SetRange&& setRange, 
         const double g = std::sqrt(g2);
         const double qx = an * p.x + depth * axis.x, qy = an * p.y + depth * axis.y;
         const double q2 = (qx * qx + qy * qy) * (k * k);
-        const double radius = scaledReach(depth, an, g2, c, s, cone.absTol, ank);
-        const auto [miss, full] = circlesAgainstReach(q2, ank, radius);
+        const double radius = conegeom::scaledReach(depth, an, g2, c, s, cone.absTol, ank);
+        const auto [miss, full] = conegeom::annulusAgainstReach(q2, ank, radius, radius_, hole_);
         if (miss) return conegeom::missClass();
         // The fast path's Miss needs no range (absTol only): it is set here.
         setRange();
@@ -137,7 +99,8 @@ inline ConeClass Disc::classifyWith(const LocalCone& cone, SetRange&& setRange, 
         // through that disc has footprint points on both sides, in the
         // annulus and off it, so the cone is Marginal without the ellipse.
         const double inner = depth * k * s * (1.0 - s) * (1.0 - 1e-12) - cone.absTol * ank;
-        if (circleNearCrossing(q2, ank * radius_, inner) | ((hole_ > 0.0) & circleNearCrossing(q2, ank * hole_, inner)))
+        if (conegeom::circleNearCrossing(q2, ank * radius_, inner) |
+            ((hole_ > 0.0) & conegeom::circleNearCrossing(q2, ank * hole_, inner)))
             return finish(conegeom::rangedClass(cone, false, false, tNear, tFar));
         // A circle near q: the ellipse itself against both circles.
         if (const auto out = bandClass(cone, depth, an, k, tNear, tFar)) return finish(*out);

@@ -35,9 +35,6 @@ struct LocalFrame {
     double gramTrace = 3.0;
     double gramDeterminant = 1.0;
     Mat3 gram{1.0};  // General: G itself
-    // General: the unit world normal of the local plane z = 0 (row 2 of
-    // localFromWorld, normalised), for flat shapes classified in world terms.
-    Vec3 planeNormal{0.0, 0.0, 1.0};
     Mat3 objectFromLocal{1.0};  // object = objectFromLocal * local + objectOffset
     Vec3 objectOffset{0.0};
 
@@ -67,13 +64,14 @@ struct LocalFrame {
 
     // A flat shape in the local plane z = 0 is, under any frame, a flat shape
     // in a world plane, which a rigid frame can hold: `frame` puts that plane
-    // at its own z = 0, its +z on the side normalToWorld gives, and
-    // `inPlane` takes this frame's local (x, y) to its (x, y). For every
-    // point of the plane its pointToObject is this frame's. (A polygon under
-    // a non-uniform scale, so relaid, has its cones classified exactly,
-    // without the General frames' bounding cone.)
+    // at its own z = 0, its +z on the side normalToWorld gives, its x and y
+    // turned by `angle` (radians) from a fixed choice, and `inPlane` takes
+    // this frame's local (x, y) to its (x, y). For every point of the plane
+    // its pointToObject is this frame's. (A polygon or a disc under a
+    // non-uniform scale, so relaid, has its cones classified exactly, without
+    // the General frames' bounding cone.)
     struct Flattened;
-    Flattened flattened() const;
+    Flattened flattened(double angle = 0.0) const;
 };
 
 struct LocalFrame::Flattened {

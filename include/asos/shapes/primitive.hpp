@@ -20,6 +20,7 @@
 #include "asos/shapes/box_from_origin.hpp"
 #include "asos/shapes/cylinder.hpp"
 #include "asos/shapes/disc.hpp"
+#include "asos/shapes/elliptic_disc.hpp"
 #include "asos/shapes/frustum_from_origin.hpp"
 #include "asos/shapes/local_cone.hpp"
 #include "asos/shapes/local_frame.hpp"
@@ -101,7 +102,7 @@ public:
 
 private:
     using LocalShape =
-        std::variant<Sphere, Box, TruncatedCone, Cylinder, Disc, Polygon, Plane>;
+        std::variant<Sphere, Box, TruncatedCone, Cylinder, Disc, Polygon, Plane, EllipticDisc>;
 
     Primitive(LocalShape shape, LocalFrame frame, const char* name);
     template <bool kScaled>
