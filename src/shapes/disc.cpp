@@ -53,20 +53,14 @@ std::optional<ConeClass> Disc::bandClass(const LocalCone& cone, double depth, do
 
 ConeClass Disc::classifyExactly(const LocalCone& cone) const {
     const Vec3& p = cone.apex;
-    const Vec3& axis = cone.axis;
     const double h = -p.z;
-    if (ballOutside(cone, Vec3(0.0), radius_)) return missClass();
-    const DotRange range = dotRange(cone, axis.z, std::sqrt(axis.x * axis.x + axis.y * axis.y));
     // Depths of the annulus' points from the apex.
     const double rho = length2d(p.x, p.y);
     const double dNear = length2d(h, rho - std::clamp(rho, hole_, radius_));
     const double dFar = length2d(h, rho + radius_);
-    const double hTol = apexInPlaneTolerance(cone);
-    if (std::abs(h) <= hTol) return apexInPlaneClass(cone, range, hTol, dFar);
-    const PlaneCrossing crossing = planeCrossing(range, h);
-    if (!crossing.any) return missClass();
-    const double tLo = std::max(crossing.tNear, dNear), tHi = std::min(crossing.tFar, dFar);
-    if (cone.surelyAfter(tLo) || cone.surelyBefore(tHi)) return missClass();
+    const PlaneBand band = exactPlaneBand(cone, radius_, dNear, dFar);
+    if (band.answer) return *band.answer;
+    const double tLo = band.tLo, tHi = band.tHi;
 
     const Footprint f = footprintOnZPlane(cone, 0.0);
     if (!f.bounded) {

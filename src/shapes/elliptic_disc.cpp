@@ -76,13 +76,11 @@ ConeClass EllipticDisc::classifyWith(const LocalCone& cone, SetRange&& setRange,
     const Vec3& p = cone.apex;
     const Vec3& axis = cone.axis;
     const double c = cone.cosHalf, s = cone.sinHalf;
-    const double h = -p.z;
-    const double g2 = axis.x * axis.x + axis.y * axis.y, k = c * c - g2;
-    if (c > 0.0 && h * axis.z > 0.0 && k > 1e-6) {
+    const auto [crosses, h, g2, k, an, depth, ank] = zPlaneApproach(cone);
+    if (crosses) {
         // Fast path, as the disc's (Disc::classifyWith), in the stretched
         // plane: the axis' crossing q maps to D q, and the footprint, within
         // `reach` of q, to within dMax reach of D q. Scaled by an k.
-        const double an = std::abs(axis.z), depth = std::abs(h), ank = an * k;
         const double g = std::sqrt(g2);
         const double qx = (an * p.x + depth * axis.x) * dx_, qy = (an * p.y + depth * axis.y) * dy_;
         const double q2 = (qx * qx + qy * qy) * (k * k);
@@ -165,20 +163,14 @@ std::optional<ConeClass> EllipticDisc::bandClass(const LocalCone& cone, double d
 
 ConeClass EllipticDisc::classifyExactly(const LocalCone& cone) const {
     const Vec3& p = cone.apex;
-    const Vec3& axis = cone.axis;
     const double h = -p.z;
-    if (ballOutside(cone, Vec3(0.0), reach_)) return missClass();
-    const DotRange range = dotRange(cone, axis.z, std::sqrt(axis.x * axis.x + axis.y * axis.y));
     // Depths of the annulus' points from the apex (within its bounding circle).
     const double rho = length2d(p.x, p.y);
     const double dNear = length2d(h, std::max(0.0, rho - reach_));
     const double dFar = length2d(h, rho + reach_);
-    const double hTol = apexInPlaneTolerance(cone);
-    if (std::abs(h) <= hTol) return apexInPlaneClass(cone, range, hTol, dFar);
-    const PlaneCrossing crossing = planeCrossing(range, h);
-    if (!crossing.any) return missClass();
-    const double tLo = std::max(crossing.tNear, dNear), tHi = std::min(crossing.tFar, dFar);
-    if (cone.surelyAfter(tLo) || cone.surelyBefore(tHi)) return missClass();
+    const PlaneBand band = exactPlaneBand(cone, reach_, dNear, dFar);
+    if (band.answer) return *band.answer;
+    const double tLo = band.tLo, tHi = band.tHi;
 
     const Footprint f = footprintOnZPlane(cone, 0.0);
     if (!f.bounded) return marginalClass(cone, tLo, tHi);

@@ -11,6 +11,7 @@
 #include <bit>
 #include <cmath>
 #include <cstdint>
+#include <optional>
 
 #include "asos/geometry/vec.hpp"
 #include "asos/shapes/local_cone.hpp"
@@ -265,6 +266,28 @@ inline bool circleNearCrossing(double q2, double radius, double inner) {
     return (inner > 0.0) & (q2 < far * far) & ((near <= 0.0) | (q2 > near * near));
 }
 
+// What the fast paths on the plane z = 0 (Disc, EllipticDisc, Polygon) start
+// from: the apex's height h under the plane, the axis' g2 = sin^2(gamma) and
+// k = c^2 - g2, and whether every ray crosses the plane well conditioned
+// (footprintReach's test); then an = |axis.z|, depth = |h| and an k.
+struct ZPlaneApproach {
+    bool crosses;
+    double h, g2, k, an, depth, ank;
+};
+inline ZPlaneApproach zPlaneApproach(const LocalCone& cone) {
+    const Vec3& axis = cone.axis;
+    const double c = cone.cosHalf;
+    ZPlaneApproach z;
+    z.h = -cone.apex.z;
+    z.g2 = axis.x * axis.x + axis.y * axis.y;
+    z.k = c * c - z.g2;
+    z.crosses = c > 0.0 && z.h * axis.z > 0.0 && z.k > 1e-6;
+    z.an = std::abs(axis.z);
+    z.depth = std::abs(z.h);
+    z.ank = z.an * z.k;
+    return z;
+}
+
 // The depths [tNear, tFar] at which the rays cross the plane, for a valid
 // FootprintReach (apart, since the quick misses do not need the root).
 struct CrossingDepths {
@@ -493,6 +516,36 @@ inline bool ballOutsideRange(const LocalCone& cone, const Vec3& m, double r) {
 
 inline bool ballOutside(const LocalCone& cone, const Vec3& m, double r) {
     return ballOutsideAngular(cone, m, r) || ballOutsideRange(cone, m, r);
+}
+
+// The start of the exact tests of a flat shape in the plane z = 0 whose
+// points lie in the ball of radius `ball` about the origin, at depths
+// [dNear, dFar] from the apex: `answer` is set for a Miss (the ball, the
+// plane's crossing or the range) or an apex in the plane; otherwise every hit
+// lies at depths [tLo, tHi].
+struct PlaneBand {
+    std::optional<ConeClass> answer;
+    double tLo = 0.0, tHi = 0.0;
+};
+inline PlaneBand exactPlaneBand(const LocalCone& cone, double ball, double dNear, double dFar) {
+    PlaneBand out;
+    const Vec3& axis = cone.axis;
+    const double h = -cone.apex.z;
+    if (ballOutside(cone, Vec3(0.0), ball)) {
+        out.answer = missClass();
+        return out;
+    }
+    const DotRange range = dotRange(cone, axis.z, std::sqrt(axis.x * axis.x + axis.y * axis.y));
+    const double hTol = apexInPlaneTolerance(cone);
+    if (std::abs(h) <= hTol) {
+        out.answer = apexInPlaneClass(cone, range, hTol, dFar);
+        return out;
+    }
+    const PlaneCrossing crossing = planeCrossing(range, h);
+    out.tLo = std::max(crossing.tNear, dNear);
+    out.tHi = std::min(crossing.tFar, dFar);
+    if (!crossing.any || cone.surelyAfter(out.tLo) || cone.surelyBefore(out.tHi)) out.answer = missClass();
+    return out;
 }
 
 // The cone's footprint on the plane z = zc when every ray crosses it: an

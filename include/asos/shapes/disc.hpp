@@ -71,15 +71,13 @@ inline ConeClass Disc::classifyWith(const LocalCone& cone, SetRange&& setRange, 
     const Vec3& p = cone.apex;
     const Vec3& axis = cone.axis;
     const double c = cone.cosHalf, s = cone.sinHalf;
-    const double h = -p.z;
-    const double g2 = axis.x * axis.x + axis.y * axis.y, k = c * c - g2;
-    if (c > 0.0 && h * axis.z > 0.0 && k > 1e-6) {
+    const auto [crosses, h, g2, k, an, depth, ank] = conegeom::zPlaneApproach(cone);
+    if (crosses) {
         // Fast path. Every ray crosses the plane, at depths [tNear, tFar],
         // and the footprint lies within `radius` of the axis' crossing q
         // (see footprintReach): against the two circles that is a comparison
         // of |q| with their radii. Scaled by an k (an = |axis.z|), q and
         // radius need no division.
-        const double an = std::abs(axis.z), depth = std::abs(h), ank = an * k;
         // The depths' root, taken before the answer's branch so that a
         // mispredicted Full does not wait for it.
         const double g = std::sqrt(g2);
