@@ -17,6 +17,14 @@ Bounds3 padded(Bounds3 b) {
     return {b.lo - pad, b.hi + pad};
 }
 
+// The index of T among a variant's alternatives (for a switch on index()).
+template <class T, class... Ts>
+constexpr std::size_t alternative(const std::variant<Ts...>*) {
+    std::size_t i = 0;
+    (void)((!std::is_same_v<T, Ts> && (++i, true)) && ...);
+    return i;
+}
+
 }  // namespace
 
 Primitive::Primitive(LocalShape shape, LocalFrame frame, const char* name)
@@ -93,17 +101,25 @@ ConeClass Primitive::classifyRigid(const PreparedCone& cone) const {
     const RigidBounds back{absTol, kScaled ? frame_.worldPerLocal : 1.0, cone.tMin, cone.tMax};
     // A disc's (circular or elliptic) and a polygon's Misses mostly need no
     // range nor bounds: they set the one and apply the other past them.
-    if (const Disc* disc = std::get_if<Disc>(&shape_)) {
-        local.absTol = absTol;
-        return disc->classifyRanging(local, t0, t1, back);
-    }
-    if (const Polygon* polygon = std::get_if<Polygon>(&shape_)) {
-        local.absTol = absTol;
-        return polygon->classifyRanging(local, t0, t1, back);
-    }
-    if (const EllipticDisc* disc = std::get_if<EllipticDisc>(&shape_)) {
-        local.absTol = absTol;
-        return disc->classifyRanging(local, t0, t1, back);
+    // One jump on the shape: the sphere (the commonest shape) and the flat
+    // shapes, whose Misses mostly need no range nor bounds (they set the one
+    // and apply the other past them), by name; the others through visit.
+    constexpr const LocalShape* kShapes = nullptr;
+    switch (shape_.index()) {
+        case alternative<Sphere>(kShapes):
+            local.setRange(t0, t1, absTol);
+            return back(std::get_if<Sphere>(&shape_)->classify(local));
+        case alternative<Disc>(kShapes):
+            local.absTol = absTol;
+            return std::get_if<Disc>(&shape_)->classifyRanging(local, t0, t1, back);
+        case alternative<Polygon>(kShapes):
+            local.absTol = absTol;
+            return std::get_if<Polygon>(&shape_)->classifyRanging(local, t0, t1, back);
+        case alternative<EllipticDisc>(kShapes):
+            local.absTol = absTol;
+            return std::get_if<EllipticDisc>(&shape_)->classifyRanging(local, t0, t1, back);
+        default:
+            break;
     }
     local.setRange(t0, t1, absTol);
     return back(visit([&](const auto& s) { return s.classify(local); }));
