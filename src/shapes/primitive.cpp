@@ -101,14 +101,18 @@ ConeClass Primitive::classifyRigid(const PreparedCone& cone) const {
     const RigidBounds back{absTol, kScaled ? frame_.worldPerLocal : 1.0, cone.tMin, cone.tMax};
     // A disc's (circular or elliptic) and a polygon's Misses mostly need no
     // range nor bounds: they set the one and apply the other past them.
-    // One jump on the shape: the sphere (the commonest shape) and the flat
-    // shapes, whose Misses mostly need no range nor bounds (they set the one
-    // and apply the other past them), by name; the others through visit.
+    // One jump on the shape, the sphere (the commonest), the box and the
+    // flat shapes by name, the others through visit. The flat shapes' Misses
+    // mostly need no range nor bounds: they set the one and apply the other
+    // past them.
     constexpr const LocalShape* kShapes = nullptr;
     switch (shape_.index()) {
         case alternative<Sphere>(kShapes):
             local.setRange(t0, t1, absTol);
             return back(std::get_if<Sphere>(&shape_)->classify(local));
+        case alternative<Box>(kShapes):
+            local.setRange(t0, t1, absTol);
+            return back(std::get_if<Box>(&shape_)->classify(local));
         case alternative<Disc>(kShapes):
             local.absTol = absTol;
             return std::get_if<Disc>(&shape_)->classifyRanging(local, t0, t1, back);
