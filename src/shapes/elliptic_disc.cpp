@@ -99,12 +99,8 @@ ConeClass EllipticDisc::classifyWith(const LocalCone& cone, SetRange&& setRange,
         // A circle near q: the stretched footprint itself against both circles.
         if (const auto out = bandClass(cone, depth, an, k, tNear, tFar)) return finish(*out);
     } else {
-        // The axis turned away from the plane (or along it), and every ray
-        // with it, the apex off the plane: a Miss (as Disc::classifyWith).
-        const double az2c2 = axis.z * axis.z * c * c;
-        if ((c > 0.0) & (h * axis.z <= 0.0) & (g2 * s * s * (1.0 + 1e-12) < az2c2) &
-            (std::abs(h) > apexInPlaneTolerance(cone)))
-            return missClass();
+        // The axis turned away from the plane, and every ray with it: a Miss.
+        if (turnedAwayFromPlane(cone, h, g2)) return missClass();
         setRange();
     }
     return finish(classifyExactly(cone));

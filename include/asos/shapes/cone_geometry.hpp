@@ -193,22 +193,17 @@ inline bool segmentMeetsCone(const LocalCone& cone, const ConePoint& a, const Co
 // True when no point of the ball (centre m, radius r) lies in the infinite
 // cone (angular test only). Exact: the distance from m to the cone exceeds r
 // (the ball grown by the cone's distance tolerance, for an apex on it).
-// The quick footprint bound on the plane z = zc (Disc, Polygon and the
-// circle tests of cylinder and cone): when the cone is narrower than a
-// hemisphere, its axis heads for the plane and no ray of the cone is nearly
-// parallel to it (k = c^2 - sin^2(gamma) > 1e-6, gamma the axis' angle from
-// the normal), every ray crosses the plane, at depths [tNear, tFar], and the
-// footprint (an ellipse of semi-major depth s c / k about a centre depth
-// g s^2 / (an k) from q) lies within `radius` of the axis' crossing q
-// (crossingDepths gives the depths).
+// The quick footprint bound on the plane z = zc (the circle tests of
+// cylinder and cone): when the cone is narrower than a hemisphere, its axis
+// heads for the plane and no ray of the cone is nearly parallel to it (k =
+// c^2 - sin^2(gamma) > 1e-6, gamma the axis' angle from the normal), every
+// ray crosses the plane (planeDepths gives the depths), and the footprint
+// (an ellipse of semi-major depth s c / k about a centre depth g s^2 / (an
+// k) from q) lies within `radius` of the axis' crossing q.
 struct FootprintReach {
     bool valid = false;
     Vec2 q{0.0};
     double radius = 0.0;
-    double depth = 0.0;  // |zc - apex.z|
-    double an = 0.0;     // |axis.z|
-    double g2 = 0.0;     // sin^2(gamma)
-    double k = 0.0;      // c^2 - g2
 };
 
 inline FootprintReach footprintReach(const LocalCone& cone, double zc) {
@@ -218,19 +213,19 @@ inline FootprintReach footprintReach(const LocalCone& cone, double zc) {
     const double c = cone.cosHalf, s = cone.sinHalf;
     const double h = zc - p.z;
     if (!(c > 0.0 && h * axis.z > 0.0)) return f;
-    f.an = std::abs(axis.z);
-    f.g2 = axis.x * axis.x + axis.y * axis.y;
-    f.k = c * c - f.g2;
-    if (!(f.k > 1e-6)) return f;
+    const double an = std::abs(axis.z);
+    const double g2 = axis.x * axis.x + axis.y * axis.y;
+    const double k = c * c - g2;
+    if (!(k > 1e-6)) return f;
     f.valid = true;
     // sin(gamma) = sqrt(g2) <= (1 + g2) / 2: the radius needs no root (it
     // grows by a fraction of order sin^2(theta)); the depths do.
-    const double gBound = 0.5 * (1.0 + f.g2);
-    f.depth = std::abs(h);
-    const double invAn = 1.0 / f.an;
-    const double tAxis = f.depth * invAn;
+    const double gBound = 0.5 * (1.0 + g2);
+    const double depth = std::abs(h);
+    const double invAn = 1.0 / an;
+    const double tAxis = depth * invAn;
     f.q = Vec2(p.x + tAxis * axis.x, p.y + tAxis * axis.y);
-    f.radius = f.depth * s / f.k * (c + gBound * s * invAn) * (1.0 + 1e-12) + cone.absTol;
+    f.radius = depth * s / k * (c + gBound * s * invAn) * (1.0 + 1e-12) + cone.absTol;
     return f;
 }
 
@@ -266,10 +261,11 @@ inline bool circleNearCrossing(double q2, double radius, double inner) {
     return (inner > 0.0) & (q2 < far * far) & ((near <= 0.0) | (q2 > near * near));
 }
 
-// What the fast paths on the plane z = 0 (Disc, EllipticDisc, Polygon) start
-// from: the apex's height h under the plane, the axis' g2 = sin^2(gamma) and
-// k = c^2 - g2, and whether every ray crosses the plane well conditioned
-// (footprintReach's test); then an = |axis.z|, depth = |h| and an k.
+// What the disc's fast paths on the plane z = 0 (Disc, EllipticDisc; the
+// polygon's writes the same out, measured faster so) start from: the apex's
+// height h under the plane, the axis' g2 = sin^2(gamma) and k = c^2 - g2,
+// and whether every ray crosses the plane well conditioned (footprintReach's
+// test); then an = |axis.z|, depth = |h| and an k.
 struct ZPlaneApproach {
     bool crosses;
     double h, g2, k, an, depth, ank;
@@ -287,6 +283,7 @@ inline ZPlaneApproach zPlaneApproach(const LocalCone& cone) {
     z.ank = z.an * z.k;
     return z;
 }
+
 
 // The depths [tNear, tFar] at which the rays cross the plane, for a valid
 // FootprintReach (apart, since the quick misses do not need the root).
@@ -308,10 +305,6 @@ inline CrossingDepths planeDepthsWithG(double depth, double an, double g2, doubl
 }
 inline CrossingDepths planeDepths(double depth, double an, double g2, double c, double s) {
     return planeDepthsWithG(depth, an, g2, std::sqrt(g2), c, s);
-}
-
-inline CrossingDepths crossingDepths(const LocalCone& cone, const FootprintReach& f) {
-    return planeDepths(f.depth, f.an, f.g2, cone.cosHalf, cone.sinHalf);
 }
 
 // The footprint on the plane z = 0 (every ray of the cone crossing it, as
@@ -479,6 +472,17 @@ inline ConeClass apexInPlaneClass(const LocalCone& cone, DotRange range, double 
 inline double apexInPlaneTolerance(const LocalCone& cone) {
     const Vec3& p = cone.apex;
     return 1e-15 * (std::abs(p.x) + std::abs(p.y) + std::abs(p.z)) + cone.absTol;
+}
+
+// Off the fast path: the axis turned away from the plane z = 0 (or along
+// it), and so is every ray (|a_z| c > g s: no direction within the
+// half-angle reaches the plane's side), the apex off the plane by more than
+// its tolerance: a Miss, as the exact test would find after its bounding
+// ball and its dot range.
+inline bool turnedAwayFromPlane(const LocalCone& cone, double h, double g2) {
+    const double az = cone.axis.z, c = cone.cosHalf, s = cone.sinHalf;
+    return (c > 0.0) & (h * az <= 0.0) & (g2 * s * s * (1.0 + 1e-12) < az * az * c * c) &
+           (std::abs(h) > apexInPlaneTolerance(cone));
 }
 
 inline bool ballOutsideAngular(const LocalCone& cone, const Vec3& m, double r) {

@@ -104,14 +104,8 @@ inline ConeClass Disc::classifyWith(const LocalCone& cone, SetRange&& setRange, 
         if (const auto out = bandClass(cone, depth, an, k, tNear, tFar)) return finish(*out);
         // Within a few tolerances of tangency: the exact test below.
     } else {
-        // The axis turned away from the plane (or along it), and so is every
-        // ray (az c > g s: no direction within the half-angle reaches the
-        // plane's side), the apex off the plane: a Miss, as the exact test
-        // would find after its bounding ball and its dot range.
-        const double az2c2 = axis.z * axis.z * c * c;
-        if ((c > 0.0) & (h * axis.z <= 0.0) & (g2 * s * s * (1.0 + 1e-12) < az2c2) &
-            (std::abs(h) > conegeom::apexInPlaneTolerance(cone)))
-            return conegeom::missClass();
+        // The axis turned away from the plane, and every ray with it: a Miss.
+        if (conegeom::turnedAwayFromPlane(cone, h, g2)) return conegeom::missClass();
         setRange();
     }
     return finish(classifyExactly(cone));
