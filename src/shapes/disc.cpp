@@ -27,7 +27,7 @@ std::optional<LocalHit> Disc::intersect(const Ray& ray, double tMin, double tMax
 }
 
 ConeClass Disc::classify(const LocalCone& cone) const {
-    return classifyWith(cone, [] {}, [](const ConeClass& out) { return out; });
+    return classifyWith(cone, [] {}, LocalFinish{cone});
 }
 
 std::optional<ConeClass> Disc::bandClass(const LocalCone& cone, double depth, double an, double k,

@@ -110,7 +110,7 @@ std::optional<LocalHit> Polygon::intersect(const Ray& ray, double tMin, double t
 }
 
 ConeClass Polygon::classify(const LocalCone& cone) const {
-    return classifyWith(cone, [] {}, [](const ConeClass& out) { return out; });
+    return classifyWith(cone, [] {}, LocalFinish{cone});
 }
 
 ConeClass Polygon::classifyRanging(LocalCone& cone, double t0, double t1, const RigidBounds& back) const {

@@ -113,7 +113,10 @@ TEST_CASE("Disc cone classification is conservative (property)", "[shapes][disc]
 // Primitive::classifyRigid hands a disc (circular, or elliptic under a
 // non-uniform frame) its cone before the range is set (classifyRanging): the
 // answers must be those of classify on the ranged cone, brought back by the
-// same RigidBounds.
+// same RigidBounds (whose world range is the local one scaled, as
+// classifyRigid's). The fast path's answers hold their depths against the
+// world range with one padding rather than two (RigidBounds::ranged), so
+// their bounds may differ by the tolerances, and nothing more.
 template <class Shape>
 void checkRangingAsClassify(std::uint64_t seed, Shape (*make)(shapetest::Rng&, double)) {
     shapetest::Rng rng(seed);
@@ -131,17 +134,22 @@ void checkRangingAsClassify(std::uint64_t seed, Shape (*make)(shapetest::Rng&, d
         const double t1 = rng.chance(0.5) ? kInfinity : t0 + rng.uniform(0.0, 6.0);
         const double absTol = 1e-11 * (std::abs(cone.apex.x) + std::abs(cone.apex.y) +
                                        std::abs(cone.apex.z) + radius);
-        const RigidBounds back{absTol, rng.uniform(0.5, 2.0), t0 * 0.9, t1 * 1.1};
+        const double worldPerLocal = rng.uniform(0.5, 2.0);
+        const RigidBounds back{absTol, worldPerLocal, t0 * worldPerLocal, t1 * worldPerLocal};
         LocalCone ranged = cone;
         ranged.setRange(t0, t1, absTol);
         const ConeClass want = back(d.classify(ranged));
         LocalCone unranged = cone;
         unranged.absTol = absTol;
         const ConeClass got = d.classifyRanging(unranged, t0, t1, back);
+        INFO("cone " << i);
         REQUIRE(static_cast<int>(got.coverage) == static_cast<int>(want.coverage));
         REQUIRE(got.singleEdge == want.singleEdge);
-        REQUIRE(got.tNear == want.tNear);
-        REQUIRE(got.tFar == want.tFar);
+        if (got.coverage != Coverage::Miss) {
+            const double slack = 1e-8 * (std::abs(want.tNear) + std::abs(want.tFar)) + 4.0 * absTol;
+            REQUIRE(std::abs(got.tNear - want.tNear) <= slack);
+            REQUIRE(std::abs(got.tFar - want.tFar) <= slack);
+        }
         (got.coverage == Coverage::Miss ? misses : others) += 1;
     }
     CHECK(misses > 1000);

@@ -32,14 +32,6 @@ inline ConeClass marginalClass(const LocalCone& cone, double tNear, double tFar,
     return {Coverage::Marginal, std::max(cone.tMin, tNear), std::min(cone.tMax, tFar), singleEdge};
 }
 
-// `yes ? a : b` without a branch, for answers that are as good as random
-// from one cone to the next (a mispredicted branch costs more than both).
-inline double selectDouble(bool yes, double a, double b) {
-    const std::uint64_t mask = -static_cast<std::uint64_t>(yes);
-    return std::bit_cast<double>((std::bit_cast<std::uint64_t>(a) & mask) |
-                                 (std::bit_cast<std::uint64_t>(b) & ~mask));
-}
-
 // The answer for a footprint known to miss the object, to lie wholly on it
 // (full), or neither (Marginal), with every ray's hit depth in [tNear, tFar]:
 // the range then turns a Full into a Marginal or anything into a Miss. The
@@ -55,6 +47,17 @@ inline ConeClass rangedClass(const LocalCone& cone, bool miss, bool full, double
     out.tFar = selectDouble(miss, -kInfinity, std::min(cone.tMax, tFar));
     return out;
 }
+
+// A fast path's way back for a local cone whose range is set (a shape's
+// classify): the answer as it stands, and rangedClass; RigidBounds is the
+// other (classifyRanging), in world units.
+struct LocalFinish {
+    const LocalCone& cone;
+    ConeClass operator()(const ConeClass& out) const { return out; }
+    ConeClass ranged(bool miss, bool full, double tNear, double tFar) const {
+        return rangedClass(cone, miss, full, tNear, tFar);
+    }
+};
 
 // angle(n, axis) <= halfAngle, from k = n.axis and g = |n x axis|.
 inline bool angleWithin(double k, double g, double c, double s) {

@@ -11,7 +11,9 @@
 // narrowed (inner) form: "no hit can lie in the range" is proved against the
 // outer range, "every hit lies in the range" against the inner one.
 #include <algorithm>
+#include <bit>
 #include <cmath>
+#include <cstdint>
 
 #include "asos/geometry/cone.hpp"
 #include "asos/geometry/vec.hpp"
@@ -57,6 +59,14 @@ struct PreparedCone {
     }
 };
 
+// `yes ? a : b` without a branch, for answers that are as good as random
+// from one cone to the next (a mispredicted branch costs more than both).
+inline double selectDouble(bool yes, double a, double b) {
+    const std::uint64_t mask = -static_cast<std::uint64_t>(yes);
+    return std::bit_cast<double>((std::bit_cast<std::uint64_t>(a) & mask) |
+                                 (std::bit_cast<std::uint64_t>(b) & ~mask));
+}
+
 // A rigid frame's answer in world units: the local bounds padded by the
 // distance tolerances (absTol in local units), scaled by worldPerLocal and
 // clipped to the world range [tMin, tMax]. No branch on the answer: a Miss's
@@ -64,11 +74,37 @@ struct PreparedCone {
 struct RigidBounds {
     double absTol, worldPerLocal, tMin, tMax;
     __attribute__((always_inline)) ConeClass operator()(ConeClass out) const {
-        const double tNear = (out.tNear * (1.0 - kConeDistanceTolerance) - absTol) * worldPerLocal;
-        const double tFar = (out.tFar * (1.0 + kConeDistanceTolerance) + absTol) * worldPerLocal;
+        const auto [tNear, tFar] = padded(out.tNear, out.tFar);
         out.tNear = std::max(tMin, tNear);
         out.tFar = std::min(tMax, tFar);
         return out;
+    }
+    // The answer for a footprint known to miss the shape (miss), to lie
+    // wholly on it (full) or neither, with every hit at a local depth in
+    // [tNear, tFar], for a cone whose local range was never set: the depths
+    // padded and scaled, then held against the world range. The same answer
+    // as this(rangedClass(cone, ...)) on the cone with its range set, with
+    // one padding rather than two (the tolerances are the same), and no
+    // branch.
+    __attribute__((always_inline)) ConeClass ranged(bool miss, bool full, double tNear,
+                                                    double tFar) const {
+        const auto [nearW, farW] = padded(tNear, tFar);
+        miss = miss | (nearW > tMax) | (farW < tMin);
+        full = full & (nearW >= tMin) & (farW <= tMax);
+        ConeClass out;
+        out.coverage = static_cast<Coverage>(static_cast<int>(!miss) * (2 - static_cast<int>(full)));
+        out.tNear = selectDouble(miss, kInfinity, std::max(tMin, nearW));
+        out.tFar = selectDouble(miss, -kInfinity, std::min(tMax, farW));
+        return out;
+    }
+
+private:
+    struct Depths {
+        double tNear, tFar;
+    };
+    Depths padded(double tNear, double tFar) const {
+        return {(tNear * (1.0 - kConeDistanceTolerance) - absTol) * worldPerLocal,
+                (tFar * (1.0 + kConeDistanceTolerance) + absTol) * worldPerLocal};
     }
 };
 
