@@ -120,6 +120,18 @@ bool Box::intersectAny(const Ray& ray, double tMin, double tMax) const {
 }
 
 ConeClass Box::classify(const LocalCone& cone) const {
+    return classifyWith(cone, [] {}, LocalFinish{cone});
+}
+
+ConeClass Box::classifyRanging(LocalCone& cone, double t0, double t1, const RigidBounds& back) const {
+    return classifyWith(cone, [&] { cone.setRange(t0, t1, cone.absTol); }, back);
+}
+
+// `finish` is LocalFinish (the cone's range is set) or RigidBounds (it is
+// not, until setRange): the fast path's range tests and answers go through
+// it, the rest sets the range and hands its answer to it.
+template <class SetRange, class Finish>
+ConeClass Box::classifyWith(const LocalCone& cone, SetRange&& setRange, Finish&& finish) const {
     const Vec3& p = cone.apex;
     const Vec3& a = cone.axis;
     const double c = cone.cosHalf, s = cone.sinHalf;
@@ -169,7 +181,7 @@ ConeClass Box::classify(const LocalCone& cone) const {
             exit = std::min(exit, t1);
         }
         if ((grownEnter > grownExit) | (grownExit < 0.0) | (grownEnter > dFar) |
-            cone.surelyAfter(std::max(0.0, grownEnter)) | cone.surelyBefore(dFar))
+            finish.surelyAfter(std::max(0.0, grownEnter)) | finish.surelyBefore(dFar))
             return missClass();
         if (hits & (enterAxis >= 0) & (enter <= exit) & (enter >= 0.0)) {
             // Indexed by the entry axis, which is as good as random: plain
@@ -196,19 +208,21 @@ ConeClass Box::classify(const LocalCone& cone) const {
                 const double qj = pa[j] + enter * aa[j], qk = pa[k] + enter * aa[k];
                 if (((qj - loa[j]) * scale > reach) & ((hia[j] - qj) * scale > reach) &
                     ((qk - loa[k]) * scale > reach) & ((hia[k] - qk) * scale > reach)) {
-                    if (cone.surelyWithin(tNear, tFar)) return fullClass(tNear, tFar);
-                    if (cone.surelyAfter(tNear)) return missClass();
-                    return marginalClass(cone, tNear, tNear >= cone.tMinInner ? tFar : dFar);
+                    if (finish.surelyWithin(tNear, tFar)) return finish.full(tNear, tFar);
+                    if (finish.surelyAfter(tNear)) return missClass();
+                    return finish.marginal(tNear, finish.startsWithin(tNear) ? tFar : dFar);
                 }
             }
         }
-        return classifyOutside(cone);
+        setRange();
+        return finish(classifyOutside(cone));
     }
+    setRange();
     const BoundingSphere ball = boundingSphere();
     if (ballOutside(cone, ball.center, ball.radius)) return missClass();
-    if (outside) return classifyOutside(cone);
-    if (inside) return classifyInside(cone);
-    return classifyOnSurface(cone, tol);
+    if (outside) return finish(classifyOutside(cone));
+    if (inside) return finish(classifyInside(cone));
+    return finish(classifyOnSurface(cone, tol));
 }
 
 ConeClass Box::classifyOutside(const LocalCone& cone) const {

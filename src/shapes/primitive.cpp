@@ -111,8 +111,8 @@ ConeClass Primitive::classifyRigid(const PreparedCone& cone) const {
             local.setRange(t0, t1, absTol);
             return back(std::get_if<Sphere>(&shape_)->classify(local));
         case alternative<Box>(kShapes):
-            local.setRange(t0, t1, absTol);
-            return back(std::get_if<Box>(&shape_)->classify(local));
+            local.absTol = absTol;
+            return std::get_if<Box>(&shape_)->classifyRanging(local, t0, t1, back);
         case alternative<Disc>(kShapes):
             local.absTol = absTol;
             return std::get_if<Disc>(&shape_)->classifyRanging(local, t0, t1, back);

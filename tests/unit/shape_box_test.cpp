@@ -181,3 +181,13 @@ TEST_CASE("Box cone classification is conservative (property)", "[shapes][box][p
     CHECK(stats.marginal > 0);
     CHECK(stats.miss > 0);
 }
+
+TEST_CASE("Box classifyRanging answers as classify does", "[shapes][box]") {
+    // Boxes about the origin, some flat; apexes inside, outside and near them.
+    shapetest::checkRangingAsClassify<Box>(0xb0c5a16e, [](shapetest::Rng& rng, double size) {
+        const Vec3 half(size * rng.uniform(0.1, 1.0), size * rng.uniform(0.1, 1.0),
+                        size * rng.uniform(0.1, 1.0));
+        const Vec3 centre(rng.uniform(-0.5, 0.5), rng.uniform(-0.5, 0.5), rng.uniform(-0.5, 0.5));
+        return Box(centre - half, centre + half);
+    });
+}

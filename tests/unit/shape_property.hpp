@@ -339,4 +339,51 @@ inline PropertyStats runConeProperty(const char* name, std::uint64_t baseSeed, i
     return stats;
 }
 
+// Primitive::classifyRigid hands a rigid frame's shape (a disc, circular or
+// elliptic; a box) its cone before the range is set (classifyRanging): the
+// answers must be those of classify on the ranged cone, brought back by the
+// same RigidBounds (whose world range is the local one scaled, as
+// classifyRigid's). The fast paths' answers hold their depths against the
+// world range with one padding rather than two (RigidBounds::ranged, full,
+// marginal), so their bounds may differ by the tolerances, and nothing more.
+// `make` builds a shape about `size` across, about the origin.
+template <class Shape>
+void checkRangingAsClassify(std::uint64_t seed, Shape (*make)(Rng&, double)) {
+    Rng rng(seed);
+    int misses = 0, others = 0;
+    for (int i = 0; i < 20000; ++i) {
+        const double size = rng.uniform(0.2, 2.0);
+        const Shape d = make(rng, size);
+        LocalCone cone;
+        cone.apex = Vec3(rng.uniform(-4, 4), rng.uniform(-4, 4), rng.uniform(-4, 4));
+        cone.axis = rng.unitVector();
+        const double half = rng.uniform(0.0, 0.4);
+        cone.cosHalf = std::cos(half);
+        cone.sinHalf = std::sin(half);
+        const double t0 = rng.chance(0.5) ? 0.0 : rng.uniform(0.0, 4.0);
+        const double t1 = rng.chance(0.5) ? kInfinity : t0 + rng.uniform(0.0, 6.0);
+        const double absTol = 1e-11 * (std::abs(cone.apex.x) + std::abs(cone.apex.y) +
+                                       std::abs(cone.apex.z) + size);
+        const double worldPerLocal = rng.uniform(0.5, 2.0);
+        const RigidBounds back{absTol, worldPerLocal, t0 * worldPerLocal, t1 * worldPerLocal};
+        LocalCone ranged = cone;
+        ranged.setRange(t0, t1, absTol);
+        const ConeClass want = back(d.classify(ranged));
+        LocalCone unranged = cone;
+        unranged.absTol = absTol;
+        const ConeClass got = d.classifyRanging(unranged, t0, t1, back);
+        INFO("cone " << i);
+        REQUIRE(static_cast<int>(got.coverage) == static_cast<int>(want.coverage));
+        REQUIRE(got.singleEdge == want.singleEdge);
+        if (got.coverage != Coverage::Miss) {
+            const double slack = 1e-8 * (std::abs(want.tNear) + std::abs(want.tFar)) + 4.0 * absTol;
+            REQUIRE(std::abs(got.tNear - want.tNear) <= slack);
+            REQUIRE(std::abs(got.tFar - want.tFar) <= slack);
+        }
+        (got.coverage == Coverage::Miss ? misses : others) += 1;
+    }
+    CHECK(misses > 1000);
+    CHECK(others > 1000);
+}
+
 }  // namespace shapetest

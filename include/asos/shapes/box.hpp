@@ -32,8 +32,15 @@ public:
     // From outside: the silhouette edges (between a face turned to the apex
     // and one turned away) tested against the cone; see docs/geometry.md.
     ConeClass classify(const LocalCone& cone) const;
+    // A rigid frame's answer in world units (Primitive::classifyRigid), for
+    // a cone whose range is not set yet (apex, axis, angle and absTol are):
+    // the fast path holds its depths against the world range through `back`
+    // (RigidBounds); the range [t0, t1] is set only past it.
+    ConeClass classifyRanging(LocalCone& cone, double t0, double t1, const RigidBounds& back) const;
 
 private:
+    template <class SetRange, class Finish>
+    ConeClass classifyWith(const LocalCone& cone, SetRange&& setRange, Finish&& finish) const;
     ConeClass classifyOutside(const LocalCone& cone) const;
     ConeClass classifyInside(const LocalCone& cone) const;
     ConeClass classifyOnSurface(const LocalCone& cone, double tol) const;

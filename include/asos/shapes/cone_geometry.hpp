@@ -57,6 +57,14 @@ struct LocalFinish {
     ConeClass ranged(bool miss, bool full, double tNear, double tFar) const {
         return rangedClass(cone, miss, full, tNear, tFar);
     }
+    bool surelyAfter(double tNearBound) const { return cone.surelyAfter(tNearBound); }
+    bool surelyBefore(double tFarBound) const { return cone.surelyBefore(tFarBound); }
+    bool surelyWithin(double lo, double hi) const { return cone.surelyWithin(lo, hi); }
+    bool startsWithin(double lo) const { return lo >= cone.tMinInner; }
+    ConeClass full(double tNear, double tFar) const { return fullClass(tNear, tFar); }
+    ConeClass marginal(double tNear, double tFar, bool singleEdge = false) const {
+        return marginalClass(cone, tNear, tFar, singleEdge);
+    }
 };
 
 // angle(n, axis) <= halfAngle, from k = n.axis and g = |n x axis|.

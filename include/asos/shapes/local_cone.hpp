@@ -98,13 +98,38 @@ struct RigidBounds {
         return out;
     }
 
+    // The range tests of LocalCone for local depths, made against the world
+    // range (the depths padded and scaled as above), and the Full and
+    // Marginal answers in world units: a fast path may answer through these
+    // before the local range is set (Box). The same answers as LocalCone's
+    // tests on the ranged cone and this(fullClass(...)) or
+    // this(marginalClass(...)), with one padding rather than two.
+    bool surelyAfter(double tNearBound) const { return nearWorld(tNearBound) > tMax; }
+    bool surelyBefore(double tFarBound) const { return farWorld(tFarBound) < tMin; }
+    bool surelyWithin(double lo, double hi) const {
+        return (nearWorld(lo) >= tMin) & (farWorld(hi) <= tMax);
+    }
+    // Every hit at lo or later is past the range's start (LocalCone's
+    // lo >= tMinInner).
+    bool startsWithin(double lo) const { return nearWorld(lo) >= tMin; }
+    ConeClass full(double tNear, double tFar) const {
+        return {Coverage::Full, nearWorld(tNear), farWorld(tFar), false};
+    }
+    ConeClass marginal(double tNear, double tFar, bool singleEdge = false) const {
+        return {Coverage::Marginal, std::max(tMin, nearWorld(tNear)), std::min(tMax, farWorld(tFar)),
+                singleEdge};
+    }
+
 private:
     struct Depths {
         double tNear, tFar;
     };
-    Depths padded(double tNear, double tFar) const {
-        return {(tNear * (1.0 - kConeDistanceTolerance) - absTol) * worldPerLocal,
-                (tFar * (1.0 + kConeDistanceTolerance) + absTol) * worldPerLocal};
+    Depths padded(double tNear, double tFar) const { return {nearWorld(tNear), farWorld(tFar)}; }
+    double nearWorld(double t) const {
+        return (t * (1.0 - kConeDistanceTolerance) - absTol) * worldPerLocal;
+    }
+    double farWorld(double t) const {
+        return (t * (1.0 + kConeDistanceTolerance) + absTol) * worldPerLocal;
     }
 };
 
