@@ -99,12 +99,12 @@ ConeClass Primitive::classifyRigid(const PreparedCone& cone) const {
     const double t0 = kScaled ? cone.tMin * frame_.localPerWorld : cone.tMin;
     const double t1 = kScaled ? cone.tMax * frame_.localPerWorld : cone.tMax;
     const RigidBounds back{absTol, kScaled ? frame_.worldPerLocal : 1.0, cone.tMin, cone.tMax};
-    // A disc's (circular or elliptic) and a polygon's Misses mostly need no
-    // range nor bounds: they set the one and apply the other past them.
     // One jump on the shape, the sphere (the commonest), the box and the
-    // flat shapes by name, the others through visit. The flat shapes' Misses
-    // mostly need no range nor bounds: they set the one and apply the other
-    // past them.
+    // flat shapes by name, the others through visit. The box's and the flat
+    // shapes' fast paths need no local range (the disc's, the elliptic
+    // disc's and the box's answer through `back` in world units, the
+    // polygon's Miss needs none): they set it only past those answers
+    // (classifyRanging).
     constexpr const LocalShape* kShapes = nullptr;
     switch (shape_.index()) {
         case alternative<Sphere>(kShapes):
