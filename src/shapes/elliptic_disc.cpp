@@ -89,13 +89,13 @@ ConeClass EllipticDisc::classifyWith(const LocalCone& cone, SetRange&& setRange,
         if (miss) return missClass();
         // As the disc's: no local range for these answers, set past them.
         const auto [tNear, tFar] = planeDepthsWithG(depth, an, g2, g, c, s);
-        if (full) return finish.ranged(false, true, tNear, tFar);
+        if (full) return rangedClass(finish, false, true, tNear, tFar);
         // The footprint holds the disc of radius L s (1 - s) about q (L the
         // axis' depth; Disc::classifyWith), and its image the disc dMin
         // times that about D q: a circle through it is crossed.
         const double inner = depth * k * s * (1.0 - s) * (1.0 - 1e-12) * dMin_ - cone.absTol * ank * dMax_;
         if (circleNearCrossing(q2, ank, inner) | ((hole_ > 0.0) & circleNearCrossing(q2, ank * hole_, inner)))
-            return finish.ranged(false, false, tNear, tFar);
+            return rangedClass(finish, false, false, tNear, tFar);
         setRange();
         // A circle near q: the stretched footprint itself against both circles.
         if (const auto out = bandClass(cone, depth, an, k, tNear, tFar)) return finish(*out);

@@ -96,6 +96,7 @@ ConeClass Primitive::classifyRigid(const PreparedCone& cone) const {
     local.cosHalf = cone.cosHalf;
     local.sinHalf = cone.sinHalf;
     const double absTol = 1e-11 * (l1(local.apex) + sphereTolerance_);
+    local.absTol = absTol;  // the range is set below, or by the shape (classifyRanging)
     const double t0 = kScaled ? cone.tMin * frame_.localPerWorld : cone.tMin;
     const double t1 = kScaled ? cone.tMax * frame_.localPerWorld : cone.tMax;
     const RigidBounds back{absTol, kScaled ? frame_.worldPerLocal : 1.0, cone.tMin, cone.tMax};
@@ -111,16 +112,12 @@ ConeClass Primitive::classifyRigid(const PreparedCone& cone) const {
             local.setRange(t0, t1, absTol);
             return back(std::get_if<Sphere>(&shape_)->classify(local));
         case alternative<Box>(kShapes):
-            local.absTol = absTol;
             return std::get_if<Box>(&shape_)->classifyRanging(local, t0, t1, back);
         case alternative<Disc>(kShapes):
-            local.absTol = absTol;
             return std::get_if<Disc>(&shape_)->classifyRanging(local, t0, t1, back);
         case alternative<Polygon>(kShapes):
-            local.absTol = absTol;
             return std::get_if<Polygon>(&shape_)->classifyRanging(local, t0, t1, back);
         case alternative<EllipticDisc>(kShapes):
-            local.absTol = absTol;
             return std::get_if<EllipticDisc>(&shape_)->classifyRanging(local, t0, t1, back);
         default:
             break;

@@ -344,8 +344,9 @@ inline PropertyStats runConeProperty(const char* name, std::uint64_t baseSeed, i
 // answers must be those of classify on the ranged cone, brought back by the
 // same RigidBounds (whose world range is the local one scaled, as
 // classifyRigid's). The fast paths' answers hold their depths against the
-// world range with one padding rather than two (RigidBounds::ranged, full,
-// marginal), so their bounds may differ by the tolerances, and nothing more.
+// world range with one padding rather than two (rangedClass on RigidBounds,
+// its full and marginal), so their bounds may differ by the tolerances, and
+// nothing more.
 // `make` builds a shape about `size` across, about the origin.
 template <class Shape>
 void checkRangingAsClassify(std::uint64_t seed, Shape (*make)(Rng&, double)) {

@@ -32,31 +32,13 @@ inline ConeClass marginalClass(const LocalCone& cone, double tNear, double tFar,
     return {Coverage::Marginal, std::max(cone.tMin, tNear), std::min(cone.tMax, tFar), singleEdge};
 }
 
-// The answer for a footprint known to miss the object, to lie wholly on it
-// (full), or neither (Marginal), with every ray's hit depth in [tNear, tFar]:
-// the range then turns a Full into a Marginal or anything into a Miss. The
-// same answers as missClass / fullClass / marginalClass, without a branch.
-inline ConeClass rangedClass(const LocalCone& cone, bool miss, bool full, double tNear,
-                             double tFar) {
-    miss = miss | cone.surelyAfter(tNear) | cone.surelyBefore(tFar);
-    full = full & cone.surelyWithin(tNear, tFar);
-    ConeClass out;
-    out.coverage = static_cast<Coverage>(static_cast<int>(!miss) * (2 - static_cast<int>(full)));
-    // A Full's bounds are inside the range already.
-    out.tNear = selectDouble(miss, kInfinity, std::max(cone.tMin, tNear));
-    out.tFar = selectDouble(miss, -kInfinity, std::min(cone.tMax, tFar));
-    return out;
-}
-
 // A fast path's way back for a local cone whose range is set (a shape's
-// classify): the answer as it stands, and rangedClass; RigidBounds is the
-// other (classifyRanging), in world units.
+// classify): the answer as it stands, and the cone's range tests and
+// answers. RigidBounds is the other (classifyRanging), the same tests and
+// answers in world units for a cone whose range is not set.
 struct LocalFinish {
     const LocalCone& cone;
     ConeClass operator()(const ConeClass& out) const { return out; }
-    ConeClass ranged(bool miss, bool full, double tNear, double tFar) const {
-        return rangedClass(cone, miss, full, tNear, tFar);
-    }
     bool surelyAfter(double tNearBound) const { return cone.surelyAfter(tNearBound); }
     bool surelyBefore(double tFarBound) const { return cone.surelyBefore(tFarBound); }
     bool surelyWithin(double lo, double hi) const { return cone.surelyWithin(lo, hi); }
@@ -66,6 +48,29 @@ struct LocalFinish {
         return marginalClass(cone, tNear, tFar, singleEdge);
     }
 };
+
+// The answer for a footprint known to miss the object, to lie wholly on it
+// (full), or neither (Marginal), with every ray's hit depth in [tNear, tFar]:
+// the range then turns a Full into a Marginal or anything into a Miss. The
+// same answers as missClass / range.full / range.marginal, without a branch.
+// `range` is LocalFinish or RigidBounds.
+template <class Range>
+ConeClass rangedClass(const Range& range, bool miss, bool full, double tNear, double tFar) {
+    miss = miss | range.surelyAfter(tNear) | range.surelyBefore(tFar);
+    full = full & range.surelyWithin(tNear, tFar);
+    // A Full's bounds are inside the range already: the Marginal's clipped
+    // bounds serve both.
+    const ConeClass bounds = range.marginal(tNear, tFar);
+    ConeClass out;
+    out.coverage = static_cast<Coverage>(static_cast<int>(!miss) * (2 - static_cast<int>(full)));
+    out.tNear = selectDouble(miss, kInfinity, bounds.tNear);
+    out.tFar = selectDouble(miss, -kInfinity, bounds.tFar);
+    return out;
+}
+inline ConeClass rangedClass(const LocalCone& cone, bool miss, bool full, double tNear,
+                             double tFar) {
+    return rangedClass(LocalFinish{cone}, miss, full, tNear, tFar);
+}
 
 // angle(n, axis) <= halfAngle, from k = n.axis and g = |n x axis|.
 inline bool angleWithin(double k, double g, double c, double s) {

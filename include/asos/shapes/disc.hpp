@@ -92,7 +92,7 @@ inline ConeClass Disc::classifyWith(const LocalCone& cone, SetRange&& setRange, 
         const auto [tNear, tFar] = conegeom::planeDepthsWithG(depth, an, g2, g, c, s);
         // Whether the range cuts the hits is as good as random from one cone
         // to the next: the answer is selected, not branched to.
-        if (full) return finish.ranged(false, true, tNear, tFar);
+        if (full) return conegeom::rangedClass(finish, false, true, tNear, tFar);
         // The footprint holds the disc of radius L s / (c + s) >= L s (1 - s)
         // about the crossing (L = depth / an, the axis' depth): a circle
         // through that disc has footprint points on both sides, in the
@@ -100,7 +100,7 @@ inline ConeClass Disc::classifyWith(const LocalCone& cone, SetRange&& setRange, 
         const double inner = depth * k * s * (1.0 - s) * (1.0 - 1e-12) - cone.absTol * ank;
         if (conegeom::circleNearCrossing(q2, ank * radius_, inner) |
             ((hole_ > 0.0) & conegeom::circleNearCrossing(q2, ank * hole_, inner)))
-            return finish.ranged(false, false, tNear, tFar);
+            return conegeom::rangedClass(finish, false, false, tNear, tFar);
         setRange();
         // A circle near q: the ellipse itself against both circles.
         if (const auto out = bandClass(cone, depth, an, k, tNear, tFar)) return finish(*out);

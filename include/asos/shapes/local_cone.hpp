@@ -79,31 +79,13 @@ struct RigidBounds {
         out.tFar = std::min(tMax, tFar);
         return out;
     }
-    // The answer for a footprint known to miss the shape (miss), to lie
-    // wholly on it (full) or neither, with every hit at a local depth in
-    // [tNear, tFar], for a cone whose local range was never set: the depths
-    // padded and scaled, then held against the world range. The same answer
-    // as this(rangedClass(cone, ...)) on the cone with its range set, with
-    // one padding rather than two (the tolerances are the same), and no
-    // branch.
-    __attribute__((always_inline)) ConeClass ranged(bool miss, bool full, double tNear,
-                                                    double tFar) const {
-        const auto [nearW, farW] = padded(tNear, tFar);
-        miss = miss | (nearW > tMax) | (farW < tMin);
-        full = full & (nearW >= tMin) & (farW <= tMax);
-        ConeClass out;
-        out.coverage = static_cast<Coverage>(static_cast<int>(!miss) * (2 - static_cast<int>(full)));
-        out.tNear = selectDouble(miss, kInfinity, std::max(tMin, nearW));
-        out.tFar = selectDouble(miss, -kInfinity, std::min(tMax, farW));
-        return out;
-    }
-
     // The range tests of LocalCone for local depths, made against the world
     // range (the depths padded and scaled as above), and the Full and
     // Marginal answers in world units: a fast path may answer through these
-    // before the local range is set (Box). The same answers as LocalCone's
-    // tests on the ranged cone and this(fullClass(...)) or
-    // this(marginalClass(...)), with one padding rather than two.
+    // (and conegeom::rangedClass on them) before the local range is set. The
+    // same answers as LocalCone's tests on the ranged cone and
+    // this(fullClass(...)) or this(marginalClass(...)), with one padding
+    // rather than two (the tolerances are the same).
     bool surelyAfter(double tNearBound) const { return nearWorld(tNearBound) > tMax; }
     bool surelyBefore(double tFarBound) const { return farWorld(tFarBound) < tMin; }
     bool surelyWithin(double lo, double hi) const {
