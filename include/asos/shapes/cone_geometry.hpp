@@ -293,7 +293,7 @@ inline ZPlaneApproach zPlaneApproach(const LocalCone& cone) {
     z.h = -cone.apex.z;
     z.g2 = axis.x * axis.x + axis.y * axis.y;
     z.k = c * c - z.g2;
-    z.crosses = c > 0.0 && z.h * axis.z > 0.0 && z.k > 1e-6;
+    z.crosses = (c > 0.0) & (z.h * axis.z > 0.0) & (z.k > 1e-6);
     z.an = std::abs(axis.z);
     z.depth = std::abs(z.h);
     z.ank = z.an * z.k;

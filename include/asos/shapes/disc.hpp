@@ -72,43 +72,44 @@ inline ConeClass Disc::classifyWith(const LocalCone& cone, SetRange&& setRange, 
     const Vec3& axis = cone.axis;
     const double c = cone.cosHalf, s = cone.sinHalf;
     const auto [crosses, h, g2, k, an, depth, ank] = conegeom::zPlaneApproach(cone);
+    // The fast path's answers are computed for every cone and settled by
+    // one branch, taken by most: whether a cone misses, covers or straddles
+    // the disc is as good as random from one cone to the next, and a branch
+    // per answer would be mispredicted about once a cone (docs/geometry.md,
+    // "Disc"). Where the axis does not cross the plane the crossing's
+    // values are meaningless (even inf or NaN) and are not selected.
+    //
+    // Crossing: every ray crosses the plane, at depths [tNear, tFar], and
+    // the footprint lies within `radius` of the axis' crossing q (see
+    // footprintReach): against the two circles that is a comparison of |q|
+    // with their radii. Scaled by an k (an = |axis.z|), q and radius need no
+    // division.
+    const double g = std::sqrt(g2);
+    const double qx = an * p.x + depth * axis.x, qy = an * p.y + depth * axis.y;
+    const double q2 = (qx * qx + qy * qy) * (k * k);
+    const double radius = conegeom::scaledReach(depth, an, g2, c, s, cone.absTol, ank);
+    const auto [miss, full] = conegeom::annulusAgainstReach(q2, ank, radius, radius_, hole_);
+    const auto [tNear, tFar] = conegeom::planeDepthsWithG(depth, an, g2, g, c, s);
+    // The footprint holds the disc of radius L s / (c + s) >= L s (1 - s)
+    // about the crossing (L = depth / an, the axis' depth): a circle
+    // through that disc has footprint points on both sides, in the annulus
+    // and off it, so the cone is Marginal without the ellipse.
+    const double inner = depth * k * s * (1.0 - s) * (1.0 - 1e-12) - cone.absTol * ank;
+    const bool nearCircle = conegeom::circleNearCrossing(q2, ank * radius_, inner) |
+                            ((hole_ > 0.0) & conegeom::circleNearCrossing(q2, ank * hole_, inner));
+    // No crossing: the axis turned away from the plane, and every ray with
+    // it, is a Miss.
+    const bool away = conegeom::turnedAwayFromPlane(cone, h, g2);
+    // These answers need no local range (absTol only): `finish` holds their
+    // depths against the range (RigidBounds: the world's), which is set
+    // only past them.
+    if ((crosses & (miss | full | nearCircle)) | (!crosses & away))
+        return conegeom::rangedClass(finish, miss | !crosses, full & crosses, tNear, tFar);
+    setRange();
     if (crosses) {
-        // Fast path. Every ray crosses the plane, at depths [tNear, tFar],
-        // and the footprint lies within `radius` of the axis' crossing q
-        // (see footprintReach): against the two circles that is a comparison
-        // of |q| with their radii. Scaled by an k (an = |axis.z|), q and
-        // radius need no division.
-        // The depths' root, taken before the answer's branch so that a
-        // mispredicted Full does not wait for it.
-        const double g = std::sqrt(g2);
-        const double qx = an * p.x + depth * axis.x, qy = an * p.y + depth * axis.y;
-        const double q2 = (qx * qx + qy * qy) * (k * k);
-        const double radius = conegeom::scaledReach(depth, an, g2, c, s, cone.absTol, ank);
-        const auto [miss, full] = conegeom::annulusAgainstReach(q2, ank, radius, radius_, hole_);
-        if (miss) return conegeom::missClass();
-        // The fast path's Miss, Full and Marginal near a circle need no
-        // local range (absTol only): `finish` holds their depths against
-        // the range (RigidBounds: the world's), which is set only past them.
-        const auto [tNear, tFar] = conegeom::planeDepthsWithG(depth, an, g2, g, c, s);
-        // Whether the range cuts the hits is as good as random from one cone
-        // to the next: the answer is selected, not branched to.
-        if (full) return conegeom::rangedClass(finish, false, true, tNear, tFar);
-        // The footprint holds the disc of radius L s / (c + s) >= L s (1 - s)
-        // about the crossing (L = depth / an, the axis' depth): a circle
-        // through that disc has footprint points on both sides, in the
-        // annulus and off it, so the cone is Marginal without the ellipse.
-        const double inner = depth * k * s * (1.0 - s) * (1.0 - 1e-12) - cone.absTol * ank;
-        if (conegeom::circleNearCrossing(q2, ank * radius_, inner) |
-            ((hole_ > 0.0) & conegeom::circleNearCrossing(q2, ank * hole_, inner)))
-            return conegeom::rangedClass(finish, false, false, tNear, tFar);
-        setRange();
         // A circle near q: the ellipse itself against both circles.
         if (const auto out = bandClass(cone, depth, an, k, tNear, tFar)) return finish(*out);
         // Within a few tolerances of tangency: the exact test below.
-    } else {
-        // The axis turned away from the plane, and every ray with it: a Miss.
-        if (conegeom::turnedAwayFromPlane(cone, h, g2)) return conegeom::missClass();
-        setRange();
     }
     return finish(classifyExactly(cone));
 }
