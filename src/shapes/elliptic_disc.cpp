@@ -77,33 +77,31 @@ ConeClass EllipticDisc::classifyWith(const LocalCone& cone, SetRange&& setRange,
     const Vec3& axis = cone.axis;
     const double c = cone.cosHalf, s = cone.sinHalf;
     const auto [crosses, h, g2, k, an, depth, ank] = zPlaneApproach(cone);
-    if (crosses) {
-        // Fast path, as the disc's (Disc::classifyWith), in the stretched
-        // plane: the axis' crossing q maps to D q, and the footprint, within
-        // `reach` of q, to within dMax reach of D q. Scaled by an k.
-        const double g = std::sqrt(g2);
-        const double qx = (an * p.x + depth * axis.x) * dx_, qy = (an * p.y + depth * axis.y) * dy_;
-        const double q2 = (qx * qx + qy * qy) * (k * k);
-        const double radius = scaledReach(depth, an, g2, c, s, cone.absTol, ank) * dMax_;
-        const auto [miss, full] = annulusAgainstReach(q2, ank, radius, 1.0, hole_);
-        if (miss) return missClass();
-        // As the disc's: no local range for these answers, set past them.
-        const auto [tNear, tFar] = planeDepthsWithG(depth, an, g2, g, c, s);
-        if (full) return rangedClass(finish, false, true, tNear, tFar);
-        // The footprint holds the disc of radius L s (1 - s) about q (L the
-        // axis' depth; Disc::classifyWith), and its image the disc dMin
-        // times that about D q: a circle through it is crossed.
-        const double inner = depth * k * s * (1.0 - s) * (1.0 - 1e-12) * dMin_ - cone.absTol * ank * dMax_;
-        if (circleNearCrossing(q2, ank, inner) | ((hole_ > 0.0) & circleNearCrossing(q2, ank * hole_, inner)))
-            return rangedClass(finish, false, false, tNear, tFar);
-        setRange();
-        // A circle near q: the stretched footprint itself against both circles.
+    // As the disc's fast path (Disc::classifyWith): every answer computed,
+    // one branch. In the stretched plane the axis' crossing q maps to D q,
+    // and the footprint, within `reach` of q, to within dMax reach of D q.
+    // Scaled by an k.
+    const double g = std::sqrt(g2);
+    const double qx = (an * p.x + depth * axis.x) * dx_, qy = (an * p.y + depth * axis.y) * dy_;
+    const double q = std::sqrt(qx * qx + qy * qy) * k;
+    const double reach = scaledReach(depth, an, g2, c, s, cone.absTol, ank) * dMax_;
+    const auto [tNear, tFar] = planeDepthsWithG(depth, an, g2, g, c, s);
+    // The footprint holds the disc of radius L s (1 - s) about q (L the
+    // axis' depth; Disc::classifyWith), and its image the disc dMin times
+    // that about D q: a circle through it is crossed.
+    const double inner = depth * k * s * (1.0 - s) * (1.0 - 1e-12) * dMin_ - cone.absTol * ank * dMax_;
+    const auto [miss, full, nearCircle] =
+        annulusAgainstFootprint(q, reach, inner, ank, ank * (hole_ > 0.0 ? hole_ : -kInfinity));
+    // No crossing: the axis turned away from the plane, and every ray with
+    // it, is a Miss.
+    const bool away = turnedAwayFromPlane(cone, h, g2);
+    // As the disc's: no local range for these answers, set past them.
+    if ((crosses & (miss | full | nearCircle)) | (!crosses & away))
+        return rangedClass(finish, miss | !crosses, full & crosses, tNear, tFar);
+    setRange();
+    // A circle near q: the stretched footprint itself against both circles.
+    if (crosses)
         if (const auto out = bandClass(cone, depth, an, k, tNear, tFar)) return finish(*out);
-    } else {
-        // The axis turned away from the plane, and every ray with it: a Miss.
-        if (turnedAwayFromPlane(cone, h, g2)) return missClass();
-        setRange();
-    }
     return finish(classifyExactly(cone));
 }
 

@@ -253,28 +253,24 @@ inline double scaledReach(double depth, double an, double g2, double c, double s
     return depth * s * (c * an + 0.5 * (1.0 + g2) * s) * (1.0 + 1e-12) + absTol * ank;
 }
 
-// The fast paths' answer for an annulus hole <= |x| <= outer about the
-// origin, when every point of the footprint lies within `radius` of the
-// crossing q (|q|^2 = q2), all scaled by `ank`: Miss when that reach stays
-// off the annulus, Full when inside it.
+// The fast paths' answers for an annulus hole <= |x| <= outer about the
+// origin (hole -infinity where there is none), when every point of the
+// footprint lies within `reach` of the axis' crossing q, |q| = q, and the
+// disc of radius `inner` about q lies in the footprint (all scaled alike):
+// Miss when the reach stays off the annulus, Full when inside it, and
+// nearCircle (Marginal) when a circle passes within inner of q, so that the
+// footprint has points on both sides of it. One comparison each way per
+// circle; those with a hole at -infinity are settled (NaN, where the scale
+// is 0 off the fast path, answers false and is not selected).
 struct AnnulusAnswer {
-    bool miss, full;
+    bool miss, full, nearCircle;
 };
-inline AnnulusAnswer annulusAgainstReach(double q2, double ank, double radius, double outer,
-                                         double hole) {
-    const double outerFar = ank * outer + radius, outerNear = ank * outer - radius;
-    const double holeFar = ank * hole + radius, holeNear = ank * hole - radius;
-    const bool miss = (q2 > outerFar * outerFar) | ((holeNear > 0.0) & (q2 < holeNear * holeNear));
-    const bool full = (outerNear > 0.0) & (q2 < outerNear * outerNear) &
-                      ((hole == 0.0) | (q2 > holeFar * holeFar));
-    return {miss, full};
-}
-
-// A circle of radius `radius` about the origin passes within `inner` (> 0)
-// of the crossing q, |q|^2 = q2 (all scaled alike).
-inline bool circleNearCrossing(double q2, double radius, double inner) {
-    const double far = radius + inner, near = radius - inner;
-    return (inner > 0.0) & (q2 < far * far) & ((near <= 0.0) | (q2 > near * near));
+inline AnnulusAnswer annulusAgainstFootprint(double q, double reach, double inner, double outer,
+                                             double hole) {
+    const bool miss = (q > outer + reach) | (q < hole - reach);
+    const bool full = (q < outer - reach) & (q > hole + reach);
+    const bool nearCircle = (std::abs(q - outer) < inner) | (std::abs(q - hole) < inner);
+    return {miss, full, nearCircle};
 }
 
 // What the disc's fast paths on the plane z = 0 (Disc, EllipticDisc; the

@@ -80,23 +80,22 @@ inline ConeClass Disc::classifyWith(const LocalCone& cone, SetRange&& setRange, 
     // values are meaningless (even inf or NaN) and are not selected.
     //
     // Crossing: every ray crosses the plane, at depths [tNear, tFar], and
-    // the footprint lies within `radius` of the axis' crossing q (see
+    // the footprint lies within `reach` of the axis' crossing q (see
     // footprintReach): against the two circles that is a comparison of |q|
-    // with their radii. Scaled by an k (an = |axis.z|), q and radius need no
-    // division.
+    // with their radii, one each way. Scaled by an k (an = |axis.z|), q and
+    // reach need no division; |q| is one root.
     const double g = std::sqrt(g2);
     const double qx = an * p.x + depth * axis.x, qy = an * p.y + depth * axis.y;
-    const double q2 = (qx * qx + qy * qy) * (k * k);
-    const double radius = conegeom::scaledReach(depth, an, g2, c, s, cone.absTol, ank);
-    const auto [miss, full] = conegeom::annulusAgainstReach(q2, ank, radius, radius_, hole_);
-    const auto [tNear, tFar] = conegeom::planeDepthsWithG(depth, an, g2, g, c, s);
+    const double q = std::sqrt(qx * qx + qy * qy) * k;
+    const double reach = conegeom::scaledReach(depth, an, g2, c, s, cone.absTol, ank);
     // The footprint holds the disc of radius L s / (c + s) >= L s (1 - s)
     // about the crossing (L = depth / an, the axis' depth): a circle
     // through that disc has footprint points on both sides, in the annulus
     // and off it, so the cone is Marginal without the ellipse.
     const double inner = depth * k * s * (1.0 - s) * (1.0 - 1e-12) - cone.absTol * ank;
-    const bool nearCircle = conegeom::circleNearCrossing(q2, ank * radius_, inner) |
-                            ((hole_ > 0.0) & conegeom::circleNearCrossing(q2, ank * hole_, inner));
+    const auto [miss, full, nearCircle] = conegeom::annulusAgainstFootprint(
+        q, reach, inner, ank * radius_, ank * (hole_ > 0.0 ? hole_ : -kInfinity));
+    const auto [tNear, tFar] = conegeom::planeDepthsWithG(depth, an, g2, g, c, s);
     // No crossing: the axis turned away from the plane, and every ray with
     // it, is a Miss.
     const bool away = conegeom::turnedAwayFromPlane(cone, h, g2);
