@@ -125,7 +125,8 @@ ConeClass Polygon::classifyWith(const LocalCone& cone, SetRange&& setRange, Fini
     const double c = cone.cosHalf, s = cone.sinHalf;
     const double h = -p.z;
     const double g2 = axis.x * axis.x + axis.y * axis.y, k = c * c - g2;
-    if (c > 0.0 && h * axis.z > 0.0 && k > 1e-6) {
+    const bool crosses = (c > 0.0) & (h * axis.z > 0.0) & (k > 1e-6);
+    if (crosses) {
         // Fast path. Every ray crosses, and the footprint lies within
         // `radius` of the axis' crossing q (footprintReach's bound); an edge
         // farther from q cannot meet the cone. One pass over the edges, like
@@ -173,19 +174,24 @@ ConeClass Polygon::classifyWith(const LocalCone& cone, SetRange&& setRange, Fini
             nearCount += static_cast<std::uint32_t>(near[1] & 1);
         }
         const bool inside = ((insideLanes[0] ^ insideLanes[1]) & 1) != 0;
-        if (offBox | ((nearCount == 0) & !inside)) return missClass();
-        // The pass's Miss needs no range (absTol only): it is set here.
+        const auto [tNear, tFar] = planeDepths(depth, an, g2, c, s);
+        // Off the box, or no edge near: the footprint is wholly off the
+        // polygon, or wholly in or out as q is. Whether a cone misses,
+        // covers or straddles is as good as random from one to the next:
+        // these answers are computed for every cone and settled by one
+        // branch (as the disc's, Disc::classifyWith), with no local range
+        // (absTol only; `finish` holds the depths against the range).
+        if (offBox | (nearCount == 0))
+            return rangedClass(finish, offBox | !inside, true, tNear, tFar);
         setRange();
         if (nearCount >= kMaxNear) return finish(classifyExactly(cone));
-        const auto [tNear, tFar] = planeDepths(depth, an, g2, c, s);
         if (cone.surelyAfter(tNear) || cone.surelyBefore(tFar) ||
             ballOutsideRange(cone, Vec3(center_, 0.0), radius_))
             return missClass();
         // The near edges against the cone itself: in the plane, against
-        // its elliptic footprint (built only when an edge is near: a
-        // footprint far from every edge needs neither its divisions nor
-        // its root).
-        if (nearCount > 0) {
+        // its elliptic footprint (built only here: a footprint far from
+        // every edge needs neither its divisions nor its root).
+        {
             const FootprintQuadric footprint(cone, depth, an, k);
             // Counted, not branched on: whether a near edge meets the
             // footprint is as good as random.
@@ -211,6 +217,8 @@ ConeClass Polygon::classifyWith(const LocalCone& cone, SetRange&& setRange, Fini
         if (cone.surelyWithin(tNear, tFar)) return finish(fullClass(tNear, tFar));
         return finish(marginalClass(cone, tNear, tFar));
     }
+    // The axis turned away from the plane, and every ray with it: a Miss.
+    if (turnedAwayFromPlane(cone, h, g2)) return missClass();
     setRange();
     return finish(classifyExactly(cone));
 }
