@@ -4,6 +4,10 @@
 // classified and the spurious-marginal rate (a Marginal cone whose probe rays
 // all hit or all miss, judged by cone_probe's dense rays).
 //
+// Each round visits the queries in a fresh order, and the bench consumes the
+// answers without a branch of its own (reshuffle, keep): what is timed is
+// the tests as they run on questions never seen before.
+//
 // The queries imitate what the tracer issues after its BVH: rays and cones
 // aimed into the object's bounding box, from eyes 3 to 30 object sizes away;
 // the cones are mostly pixel-sized (1e-3 rad and its subdivisions down to
@@ -246,7 +250,7 @@ double timeCones(const std::vector<Primitive>& objects, std::vector<Queries::Con
 
 int run(int queries, int repeat, int probes, std::uint64_t seed, const std::string& only,
         const std::string& mix) {
-    std::printf("asos bench intersect: %d queries per primitive, best of 40 interleaved rounds of %d passes; "
+    std::printf("asos bench intersect: %d queries per primitive, best of 40 interleaved rounds of %d passes, each round in a fresh order; "
                 "%d probed cones per primitive; %s placements\n\n",
                 queries, repeat, probes, mix.c_str());
     std::printf("%-9s %9s %9s %12s %7s %7s\n", "primitive", "ray_ns", "cone_ns", "cone+trig_ns",
@@ -346,7 +350,9 @@ void addBenchIntersectCommand(CLI::App& bench, CommandResult& result) {
     auto options = std::make_shared<Options>();
     cmd->add_option("--queries", options->queries, "rays and cones per primitive")
         ->check(CLI::Range(1, 1 << 24));
-    cmd->add_option("--repeat", options->repeat, "timed passes over them per round")
+    cmd->add_option("--repeat", options->repeat,
+                    "timed passes over them per round (each round in a fresh order; passes after "
+                    "the first repeat it, which a branch predictor may learn)")
         ->check(CLI::Range(1, 10000));
     cmd->add_option("--probes", options->probes, "cones checked with dense rays per primitive")
         ->check(CLI::Range(0, 1 << 24));
