@@ -250,9 +250,9 @@ double timeCones(const std::vector<Primitive>& objects, std::vector<Queries::Con
 
 int run(int queries, int repeat, int probes, std::uint64_t seed, const std::string& only,
         const std::string& mix) {
-    std::printf("asos bench intersect: %d queries per primitive, best of 40 interleaved rounds of %d passes, each round in a fresh order; "
-                "%d probed cones per primitive; %s placements\n\n",
-                queries, repeat, probes, mix.c_str());
+    std::printf("asos bench intersect: %d queries per primitive, best of 40 interleaved rounds of %d "
+                "pass%s, each round in a fresh order; %d probed cones per primitive; %s placements\n\n",
+                queries, repeat, repeat == 1 ? "" : "es", probes, mix.c_str());
     std::printf("%-9s %9s %9s %12s %7s %7s\n", "primitive", "ray_ns", "cone_ns", "cone+trig_ns",
                 "paper", "ratio");
     struct Stats {
