@@ -362,7 +362,8 @@ void addBenchIntersectCommand(CLI::App& bench, CommandResult& result) {
                     "scale), translate, rotate or scale")
         ->check(CLI::IsMember({"mixed", "translate", "rotate", "scale"}));
     cmd->add_option("--only", options->only, "one primitive (sphere, polygon, disc, box, cone, "
-                                              "cylinder, plane)");
+                                              "cylinder, plane)")
+        ->check(CLI::IsMember({"sphere", "polygon", "disc", "box", "cone", "cylinder", "plane"}));
     cmd->callback([options, &result] {
         result.exitCode =
             run(options->queries, options->repeat, options->probes, options->seed, options->only,
