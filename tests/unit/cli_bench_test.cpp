@@ -71,7 +71,7 @@ TEST_CASE("asos bench intersect prints a row per primitive, its name first and t
     }
 }
 
-TEST_CASE("asos bench intersect --only times one primitive; bad options are refused",
+TEST_CASE("asos bench intersect --only times one primitive, and bad options are refused",
           "[cli][bench]") {
     const Result one = runAsos({"bench", "intersect", "--queries", "32", "--probes", "0", "--only",
                                 "disc", "--transforms", "scale"});

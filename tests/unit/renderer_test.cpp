@@ -177,7 +177,7 @@ TEST_CASE("Scenes the renderer cannot render are reported with their locations",
     CHECK_THAT(diagnostics.all()[1].message, Catch::Contains("circular"));
 }
 
-TEST_CASE("Command-line ASOS options override global_settings; objects refine both", "[renderer]") {
+TEST_CASE("Command-line ASOS options override global_settings, and objects refine both", "[renderer]") {
     GlobalSettings g;
     g.asos.eps = 0.1;
     g.asos.maxLevel = 2;
