@@ -431,13 +431,15 @@ public:
         const double outer = kRho + tol, inner = kRho - tol;
         // Multiplied by d: d - S > outer, and so on.
         const double lowD = d2_ - sd_, highD = d2_ + sd_;
-        if (lowD > outer * d_) return CircleRelation::EllipseOutside;
-        if (inner > 0.0 && highD * highD + across2_ < inner * inner * d2_)
-            return CircleRelation::EllipseInside;
+        const double inner2 = inner * inner;
+        const bool outside = lowD > outer * d_;
+        const bool inside = (inner > 0.0) & (highD * highD + across2_ < inner2 * d2_);
         const bool pointOut = highD > outer * d_;
-        const bool pointIn = inner > 0.0 && (originIn_ || near2_ < inner * inner * nearLimit_ ||
-                                             d2_ < inner * inner);
-        if (pointOut && pointIn) return CircleRelation::Crossing;
+        const bool pointIn =
+            (inner > 0.0) & (originIn_ | (near2_ < inner2 * nearLimit_) | (d2_ < inner2));
+        if (outside | inside | (pointOut & pointIn)) [[likely]]
+            return static_cast<CircleRelation>(static_cast<int>(outside) +
+                                               2 * static_cast<int>(!outside & !inside));
         return inner > 0.0 && majorAxisCrosses(outer, inner) ? CircleRelation::Crossing
                                                              : CircleRelation::Unsure;
     }
