@@ -123,9 +123,7 @@ ConeClass Polygon::classifyWith(const LocalCone& cone, SetRange&& setRange, Fini
     const Vec3& p = cone.apex;
     const Vec3& axis = cone.axis;
     const double c = cone.cosHalf, s = cone.sinHalf;
-    const double h = -p.z;
-    const double g2 = axis.x * axis.x + axis.y * axis.y, k = c * c - g2;
-    const bool crosses = (c > 0.0) & (h * axis.z > 0.0) & (k > 1e-6);
+    const auto [crosses, h, g2, k, an, depth, ank] = zPlaneApproach(cone);
     if (crosses) {
         // Fast path. Every ray crosses, and the footprint lies within
         // `radius` of the axis' crossing q (footprintReach's bound); an edge
@@ -135,7 +133,6 @@ ConeClass Polygon::classifyWith(const LocalCone& cone, SetRange&& setRange, Fini
         // multiplied by an k (an = |axis.z|), as the disc's fast path does:
         // q and radius then need no division, so the pass does not wait for
         // one (each edge's start is scaled in the pass instead).
-        const double an = std::abs(axis.z), depth = std::abs(h), ank = an * k;
         const double qx = (an * p.x + depth * axis.x) * k, qy = (an * p.y + depth * axis.y) * k;
         const double radius = scaledReach(depth, an, g2, c, s, cone.absTol, ank);
         const double radius2 = radius * radius;

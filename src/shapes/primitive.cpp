@@ -102,10 +102,8 @@ ConeClass Primitive::classifyRigid(const PreparedCone& cone) const {
     const RigidBounds back{absTol, kScaled ? frame_.worldPerLocal : 1.0, cone.tMin, cone.tMax};
     // One jump on the shape, the sphere (the commonest), the box and the
     // flat shapes by name, the others through visit. The box's and the flat
-    // shapes' fast paths need no local range (the disc's, the elliptic
-    // disc's and the box's answer through `back` in world units, the
-    // polygon's Miss needs none): they set it only past those answers
-    // (classifyRanging).
+    // shapes' fast paths need no local range (they answer through `back` in
+    // world units): they set it only past those answers (classifyRanging).
     constexpr const LocalShape* kShapes = nullptr;
     switch (shape_.index()) {
         case alternative<Sphere>(kShapes):

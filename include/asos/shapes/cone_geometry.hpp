@@ -273,8 +273,8 @@ inline AnnulusAnswer annulusAgainstFootprint(double q, double reach, double inne
     return {miss, full, nearCircle};
 }
 
-// What the disc's fast paths on the plane z = 0 (Disc, EllipticDisc; the
-// polygon's writes the same out, measured faster so) start from: the apex's
+// What the fast paths on the plane z = 0 (Disc, EllipticDisc, Polygon)
+// start from: the apex's
 // height h under the plane, the axis' g2 = sin^2(gamma) and k = c^2 - g2,
 // and whether every ray crosses the plane well conditioned (footprintReach's
 // test); then an = |axis.z|, depth = |h| and an k.
@@ -295,7 +295,6 @@ inline ZPlaneApproach zPlaneApproach(const LocalCone& cone) {
     z.ank = z.an * z.k;
     return z;
 }
-
 
 // The depths [tNear, tFar] at which the rays cross the plane, for a valid
 // FootprintReach (apart, since the quick misses do not need the root).

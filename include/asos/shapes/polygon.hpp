@@ -49,8 +49,9 @@ public:
     // cone's footprint is wholly inside or outside, as its axis point.
     ConeClass classify(const LocalCone& cone) const;
     // The same, for a rigid frame's cone whose range is not set yet (apex,
-    // axis, angle and absTol are): the range [t0, t1] is set and `back`
-    // applied only past the edge pass's Miss, which needs neither (as
+    // axis, angle and absTol are): the edge pass's answers (off the box or
+    // no edge near) hold their depths against the world range through
+    // `back` (RigidBounds); the range [t0, t1] is set only past them (as
     // Disc::classifyRanging).
     ConeClass classifyRanging(LocalCone& cone, double t0, double t1, const RigidBounds& back) const;
 
