@@ -286,3 +286,22 @@ TEST_CASE("Which primitives are convex sets", "[shapes][polygon]") {
     CHECK_FALSE(polygon({{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 0, 0}, {2, 2, 0}, {3, 2, 0}, {3, 3, 0}, {2, 2, 0}})
                     .convex());
 }
+
+TEST_CASE("Polygon classifyRanging answers as classify does", "[shapes][polygon]") {
+    // One loop of 3 to 8 vertices about the origin, the longer ones star-like
+    // (concave): the edge pass's answers, which go through RigidBounds before
+    // the range is set, and the near-edge and exact answers after it. The
+    // vertices reach 2 size, so that the random cones meet about as many
+    // polygons as they meet discs of radius size (a polygon inscribed in a
+    // circle covers less of it).
+    shapetest::checkRangingAsClassify<Polygon>(0x9017a6e5, [](shapetest::Rng& rng, double size) {
+        const int n = 3 + static_cast<int>(rng.uniform(0.0, 6.0));
+        std::vector<Vec2> vertices;
+        for (int i = 0; i < n; ++i) {
+            const double a = 2.0 * kPi * (i + rng.uniform(0.0, 0.5)) / n;
+            const double r = 2.0 * size * (n > 4 && i % 2 ? rng.uniform(0.4, 0.8) : 1.0);
+            vertices.emplace_back(r * std::cos(a), r * std::sin(a));
+        }
+        return Polygon(std::move(vertices), {static_cast<std::uint32_t>(n)});
+    });
+}

@@ -340,7 +340,7 @@ inline PropertyStats runConeProperty(const char* name, std::uint64_t baseSeed, i
 }
 
 // Primitive::classifyRigid hands a rigid frame's shape (a disc, circular or
-// elliptic; a box) its cone before the range is set (classifyRanging): the
+// elliptic; a box; a polygon) its cone before the range is set (classifyRanging): the
 // answers must be those of classify on the ranged cone, brought back by the
 // same RigidBounds (whose world range is the local one scaled, as
 // classifyRigid's). The fast paths' answers hold their depths against the
