@@ -74,9 +74,8 @@ inline double selectDouble(bool yes, double a, double b) {
 struct RigidBounds {
     double absTol, worldPerLocal, tMin, tMax;
     __attribute__((always_inline)) ConeClass operator()(ConeClass out) const {
-        const auto [tNear, tFar] = padded(out.tNear, out.tFar);
-        out.tNear = std::max(tMin, tNear);
-        out.tFar = std::min(tMax, tFar);
+        out.tNear = std::max(tMin, nearWorld(out.tNear));
+        out.tFar = std::min(tMax, farWorld(out.tFar));
         return out;
     }
     // The range tests of LocalCone for local depths, made against the world
@@ -103,10 +102,6 @@ struct RigidBounds {
     }
 
 private:
-    struct Depths {
-        double tNear, tFar;
-    };
-    Depths padded(double tNear, double tFar) const { return {nearWorld(tNear), farWorld(tFar)}; }
     double nearWorld(double t) const {
         return (t * (1.0 - kConeDistanceTolerance) - absTol) * worldPerLocal;
     }
