@@ -196,55 +196,49 @@ void reshuffle(std::vector<T>& items, std::size_t objects, std::mt19937_64& orde
     }
 }
 
+// One round: `repeat` passes over the items in a fresh order, in ns per item.
+template <class Item, class Body>
+double timeRound(std::vector<Item>& items, std::size_t objects, int repeat, std::mt19937_64& order,
+                 Body&& body) {
+    reshuffle(items, objects, order);
+    const double start = threadNanoseconds();
+    for (int r = 0; r < repeat; ++r)
+        for (const Item& item : items) body(item);
+    return (threadNanoseconds() - start) /
+           (static_cast<double>(repeat) * static_cast<double>(items.size()));
+}
+
+// A cone query (prepared or raw) classified, its answer kept.
+template <class ConeQuery>
+void classifyKept(const std::vector<Primitive>& objects, const ConeQuery& c) {
+    const ConeClass k = objects[c.object].classify(c.cone);
+    keep(k);
+}
+
 Timing timeKind(const std::vector<Primitive>& objects, Queries& q, int repeat, std::mt19937_64& order) {
-    // One round of `repeat` passes over the queries, in ns per query.
-    auto round = [&](auto& items, auto&& body) {
-        reshuffle(items, objects.size(), order);
-        const double start = threadNanoseconds();
-        for (int r = 0; r < repeat; ++r)
-            for (const auto& item : items) body(item);
-        return (threadNanoseconds() - start) /
-               (static_cast<double>(repeat) * static_cast<double>(items.size()));
-    };
-    auto rays = [&](const Queries::RayQuery& r) {
+    const auto ray = [&](const Queries::RayQuery& r) {
         const auto hit = objects[r.object].intersect(r.ray, r.tMin, r.tMax);
         keep(hit);
     };
-    auto cones = [&](const Queries::ConeQuery& c) {
-        const ConeClass k = objects[c.object].classify(c.cone);
-        keep(k);
-    };
-    auto raw = [&](const Queries::RawCone& c) {
-        const ConeClass k = objects[c.object].classify(c.cone);
-        keep(k);
-    };
+    const auto cone = [&](const auto& c) { classifyKept(objects, c); };
     // Short rounds, interleaved, the best of each kept.
     Timing t{kInfinity, kInfinity, kInfinity};
     for (int i = 0; i < 40; ++i) {
-        t.rayNs = std::min(t.rayNs, round(q.rays, rays));
-        t.coneNs = std::min(t.coneNs, round(q.cones, cones));
-        t.coneTrigNs = std::min(t.coneTrigNs, round(q.raw, raw));
+        t.rayNs = std::min(t.rayNs, timeRound(q.rays, objects.size(), repeat, order, ray));
+        t.coneNs = std::min(t.coneNs, timeRound(q.cones, objects.size(), repeat, order, cone));
+        t.coneTrigNs = std::min(t.coneTrigNs, timeRound(q.raw, objects.size(), repeat, order, cone));
     }
     return t;
 }
 
-// ns per classification over a subset of the cones (the best of 40 rounds,
-// each in a fresh order).
+// ns per classification over a subset of the cones (the best of 40 rounds).
 double timeCones(const std::vector<Primitive>& objects, std::vector<Queries::ConeQuery>& cones,
                  int repeat, std::mt19937_64& order) {
     if (cones.empty()) return 0.0;
+    const auto cone = [&](const Queries::ConeQuery& c) { classifyKept(objects, c); };
     double best = kInfinity;
-    for (int round = 0; round < 40; ++round) {
-        reshuffle(cones, objects.size(), order);
-        const double start = threadNanoseconds();
-        for (int r = 0; r < repeat; ++r)
-            for (const auto& c : cones) {
-                const ConeClass k = objects[c.object].classify(c.cone);
-                keep(k);
-            }
-        best = std::min(best, (threadNanoseconds() - start) /
-                                  (static_cast<double>(repeat) * static_cast<double>(cones.size())));
-    }
+    for (int round = 0; round < 40; ++round)
+        best = std::min(best, timeRound(cones, objects.size(), repeat, order, cone));
     return best;
 }
 
