@@ -73,35 +73,16 @@ ConeClass EllipticDisc::classifyRanging(LocalCone& cone, double t0, double t1,
 
 template <class SetRange, class Finish>
 ConeClass EllipticDisc::classifyWith(const LocalCone& cone, SetRange&& setRange, Finish&& finish) const {
-    const Vec3& p = cone.apex;
-    const Vec3& axis = cone.axis;
-    const double c = cone.cosHalf, s = cone.sinHalf;
-    const auto [crosses, h, g2, k, an, depth, ank] = zPlaneApproach(cone);
-    // As the disc's fast path (Disc::classifyWith): every answer computed,
-    // one branch. In the stretched plane the axis' crossing q maps to D q,
-    // and the footprint, within `reach` of q, to within dMax reach of D q.
-    // Scaled by an k.
-    const double g = std::sqrt(g2);
-    const double qx = (an * p.x + depth * axis.x) * dx_, qy = (an * p.y + depth * axis.y) * dy_;
-    const double q = std::sqrt(qx * qx + qy * qy) * k;
-    const double reach = scaledReach(depth, an, g2, c, s, cone.absTol, ank) * dMax_;
-    const auto [tNear, tFar] = planeDepthsWithG(depth, an, g2, g, c, s);
-    // The footprint holds the disc of radius L s (1 - s) about q (L the
-    // axis' depth; Disc::classifyWith), and its image the disc dMin times
-    // that about D q: a circle through it is crossed.
-    const double inner = depth * k * s * (1.0 - s) * (1.0 - 1e-12) * dMin_ - cone.absTol * ank * dMax_;
-    const auto [miss, full, nearCircle] =
-        annulusAgainstFootprint(q, reach, inner, ank, ank * (hole_ > 0.0 ? hole_ : -kInfinity));
-    // No crossing: the axis turned away from the plane, and every ray with
-    // it, is a Miss.
-    const bool away = turnedAwayFromPlane(cone, h, g2);
+    // The disc's fast path (Disc::classifyWith) in the stretched plane,
+    // where the outer circle is the unit one.
+    const ZPlaneApproach z = zPlaneApproach(cone);
+    const auto f = annulusFastPath(cone, z, 1.0, hole_, {dx_, dy_, dMax_, dMin_});
     // As the disc's: no local range for these answers, set past them.
-    if ((crosses & (miss | full | nearCircle)) | (!crosses & away))
-        return rangedClass(finish, miss | !crosses, full & crosses, tNear, tFar);
+    if (f.settled) return rangedClass(finish, f.miss, f.full, f.tNear, f.tFar);
     setRange();
     // A circle near q: the stretched footprint itself against both circles.
-    if (crosses)
-        if (const auto out = bandClass(cone, depth, an, k, tNear, tFar)) return finish(*out);
+    if (z.crosses)
+        if (const auto out = bandClass(cone, z.depth, z.an, z.k, f.tNear, f.tFar)) return finish(*out);
     return finish(classifyExactly(cone));
 }
 

@@ -253,26 +253,6 @@ inline double scaledReach(double depth, double an, double g2, double c, double s
     return depth * s * (c * an + 0.5 * (1.0 + g2) * s) * (1.0 + 1e-12) + absTol * ank;
 }
 
-// The fast paths' answers for an annulus hole <= |x| <= outer about the
-// origin (hole -infinity where there is none), when every point of the
-// footprint lies within `reach` of the axis' crossing q, |q| = q, and the
-// disc of radius `inner` about q lies in the footprint (all scaled alike):
-// Miss when the reach stays off the annulus, Full when inside it, and
-// nearCircle (Marginal) when a circle passes within inner of q, so that the
-// footprint has points on both sides of it. One comparison each way per
-// circle; those with a hole at -infinity are settled (NaN, where the scale
-// is 0 off the fast path, answers false and is not selected).
-struct AnnulusAnswer {
-    bool miss, full, nearCircle;
-};
-inline AnnulusAnswer annulusAgainstFootprint(double q, double reach, double inner, double outer,
-                                             double hole) {
-    const bool miss = (q > outer + reach) | (q < hole - reach);
-    const bool full = (q < outer - reach) & (q > hole + reach);
-    const bool nearCircle = (std::abs(q - outer) < inner) | (std::abs(q - hole) < inner);
-    return {miss, full, nearCircle};
-}
-
 // What the fast paths on the plane z = 0 (Disc, EllipticDisc, Polygon)
 // start from: the apex's
 // height h under the plane, the axis' g2 = sin^2(gamma) and k = c^2 - g2,
@@ -496,6 +476,60 @@ inline bool turnedAwayFromPlane(const LocalCone& cone, double h, double g2) {
     const double az = cone.axis.z, c = cone.cosHalf, s = cone.sinHalf;
     return (c > 0.0) & (h * az <= 0.0) & (g2 * s * s * (1.0 + 1e-12) < az * az * c * c) &
            (std::abs(h) > apexInPlaneTolerance(cone));
+}
+
+// The fast path of an annulus hole <= |x| <= outer about the origin of the
+// plane z = 0 (Disc; EllipticDisc in its stretched plane D = diag(dx, dy),
+// where its circles are), from the approach z. Every answer is computed for
+// every cone and settled by one branch in the caller: whether a cone misses,
+// covers or straddles the annulus is as good as random from one cone to the
+// next, and a branch per answer would be mispredicted about once a cone
+// (docs/geometry.md, "Disc"). Where the axis does not cross the plane the
+// crossing's values are meaningless (even inf or NaN) and are not selected.
+//
+// Crossing: every ray crosses the plane, at depths [tNear, tFar], and the
+// footprint lies within `reach` of the axis' crossing q (see
+// footprintReach), its image within dMax reach of D q: against the circles
+// that is a comparison of |D q| with their radii, one each way. Scaled by
+// an k (an = |axis.z|), q and reach need no division; |D q| is one root. The
+// footprint holds the disc of radius L s / (c + s) >= L s (1 - s) about q (L
+// = depth / an, the axis' depth), its image the disc dMin times that about D
+// q: a circle through that disc has footprint points on both sides, in the
+// annulus and off it, so the cone is Marginal without the ellipse. A missing
+// hole lies at -infinity, where every comparison with it is settled.
+// No crossing: the axis turned away from the plane, and every ray with it,
+// is a Miss.
+struct AnnulusStretch {
+    double dx = 1.0, dy = 1.0, dMax = 1.0, dMin = 1.0;
+};
+struct AnnulusFastPath {
+    bool settled, miss, full;  // settled: miss, full and the depths answer the cone
+    double tNear, tFar;
+};
+inline AnnulusFastPath annulusFastPath(const LocalCone& cone, const ZPlaneApproach& z, double outer,
+                                       double hole, const AnnulusStretch& d) {
+    const Vec3& p = cone.apex;
+    const Vec3& axis = cone.axis;
+    const double c = cone.cosHalf, s = cone.sinHalf;
+    const auto [crosses, h, g2, k, an, depth, ank] = z;
+    const double g = std::sqrt(g2);
+    const double qx = (an * p.x + depth * axis.x) * d.dx, qy = (an * p.y + depth * axis.y) * d.dy;
+    const double q = std::sqrt(qx * qx + qy * qy) * k;
+    const double reach = scaledReach(depth, an, g2, c, s, cone.absTol, ank) * d.dMax;
+    const double inner = depth * k * s * (1.0 - s) * (1.0 - 1e-12) * d.dMin - cone.absTol * ank * d.dMax;
+    const double outerK = ank * outer, holeK = ank * (hole > 0.0 ? hole : -kInfinity);
+    const bool miss = (q > outerK + reach) | (q < holeK - reach);
+    const bool full = (q < outerK - reach) & (q > holeK + reach);
+    const bool nearCircle = (std::abs(q - outerK) < inner) | (std::abs(q - holeK) < inner);
+    const auto [tNear, tFar] = planeDepthsWithG(depth, an, g2, g, c, s);
+    const bool away = turnedAwayFromPlane(cone, h, g2);
+    AnnulusFastPath f;
+    f.settled = (crosses & (miss | full | nearCircle)) | (!crosses & away);
+    f.miss = miss | !crosses;
+    f.full = full & crosses;
+    f.tNear = tNear;
+    f.tFar = tFar;
+    return f;
 }
 
 inline bool ballOutsideAngular(const LocalCone& cone, const Vec3& m, double r) {

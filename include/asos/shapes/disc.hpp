@@ -68,46 +68,16 @@ private:
 template <class SetRange, class Finish>
 inline ConeClass Disc::classifyWith(const LocalCone& cone, SetRange&& setRange, Finish&& finish) const {
     if (empty()) return conegeom::missClass();
-    const Vec3& p = cone.apex;
-    const Vec3& axis = cone.axis;
-    const double c = cone.cosHalf, s = cone.sinHalf;
-    const auto [crosses, h, g2, k, an, depth, ank] = conegeom::zPlaneApproach(cone);
-    // The fast path's answers are computed for every cone and settled by
-    // one branch, taken by most: whether a cone misses, covers or straddles
-    // the disc is as good as random from one cone to the next, and a branch
-    // per answer would be mispredicted about once a cone (docs/geometry.md,
-    // "Disc"). Where the axis does not cross the plane the crossing's
-    // values are meaningless (even inf or NaN) and are not selected.
-    //
-    // Crossing: every ray crosses the plane, at depths [tNear, tFar], and
-    // the footprint lies within `reach` of the axis' crossing q (see
-    // footprintReach): against the two circles that is a comparison of |q|
-    // with their radii, one each way. Scaled by an k (an = |axis.z|), q and
-    // reach need no division; |q| is one root.
-    const double g = std::sqrt(g2);
-    const double qx = an * p.x + depth * axis.x, qy = an * p.y + depth * axis.y;
-    const double q = std::sqrt(qx * qx + qy * qy) * k;
-    const double reach = conegeom::scaledReach(depth, an, g2, c, s, cone.absTol, ank);
-    // The footprint holds the disc of radius L s / (c + s) >= L s (1 - s)
-    // about the crossing (L = depth / an, the axis' depth): a circle
-    // through that disc has footprint points on both sides, in the annulus
-    // and off it, so the cone is Marginal without the ellipse.
-    const double inner = depth * k * s * (1.0 - s) * (1.0 - 1e-12) - cone.absTol * ank;
-    const auto [miss, full, nearCircle] = conegeom::annulusAgainstFootprint(
-        q, reach, inner, ank * radius_, ank * (hole_ > 0.0 ? hole_ : -kInfinity));
-    const auto [tNear, tFar] = conegeom::planeDepthsWithG(depth, an, g2, g, c, s);
-    // No crossing: the axis turned away from the plane, and every ray with
-    // it, is a Miss.
-    const bool away = conegeom::turnedAwayFromPlane(cone, h, g2);
+    const conegeom::ZPlaneApproach z = conegeom::zPlaneApproach(cone);
+    const auto f = conegeom::annulusFastPath(cone, z, radius_, hole_, {});
     // These answers need no local range (absTol only): `finish` holds their
     // depths against the range (RigidBounds: the world's), which is set
     // only past them.
-    if ((crosses & (miss | full | nearCircle)) | (!crosses & away))
-        return conegeom::rangedClass(finish, miss | !crosses, full & crosses, tNear, tFar);
+    if (f.settled) return conegeom::rangedClass(finish, f.miss, f.full, f.tNear, f.tFar);
     setRange();
-    if (crosses) {
+    if (z.crosses) {
         // A circle near q: the ellipse itself against both circles.
-        if (const auto out = bandClass(cone, depth, an, k, tNear, tFar)) return finish(*out);
+        if (const auto out = bandClass(cone, z.depth, z.an, z.k, f.tNear, f.tFar)) return finish(*out);
         // Within a few tolerances of tangency: the exact test below.
     }
     return finish(classifyExactly(cone));
