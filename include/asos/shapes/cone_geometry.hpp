@@ -62,6 +62,9 @@ ConeClass rangedClass(const Range& range, bool miss, bool full, double tNear, do
     // bounds serve both.
     const ConeClass bounds = range.marginal(tNear, tFar);
     ConeClass out;
+    // Miss 0, Full 1, Marginal 2: the coverage computed from the two flags.
+    static_assert(static_cast<int>(Coverage::Miss) == 0 && static_cast<int>(Coverage::Full) == 1 &&
+                  static_cast<int>(Coverage::Marginal) == 2);
     out.coverage = static_cast<Coverage>(static_cast<int>(!miss) * (2 - static_cast<int>(full)));
     out.tNear = selectDouble(miss, kInfinity, bounds.tNear);
     out.tFar = selectDouble(miss, -kInfinity, bounds.tFar);
@@ -416,6 +419,11 @@ public:
         const bool pointOut = highD > outer * d_;
         const bool pointIn =
             (inner > 0.0) & (originIn_ | (near2_ < inner2 * nearLimit_) | (d2_ < inner2));
+        // EllipseInside 0, EllipseOutside 1, Crossing 2: the relation computed
+        // from the two flags.
+        static_assert(static_cast<int>(CircleRelation::EllipseInside) == 0 &&
+                      static_cast<int>(CircleRelation::EllipseOutside) == 1 &&
+                      static_cast<int>(CircleRelation::Crossing) == 2);
         if (outside | inside | (pointOut & pointIn)) [[likely]]
             return static_cast<CircleRelation>(static_cast<int>(outside) +
                                                2 * static_cast<int>(!outside & !inside));
