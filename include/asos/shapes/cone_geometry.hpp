@@ -503,10 +503,12 @@ inline bool turnedAwayFromPlane(const LocalCone& cone, double h, double g2) {
 // footprint holds the disc of radius L s / (c + s) >= L s (1 - s) about q (L
 // = depth / an, the axis' depth), its image the disc dMin times that about D
 // q: a circle through that disc has footprint points on both sides, in the
-// annulus and off it, so the cone is Marginal without the ellipse. A missing
-// hole lies at -infinity, where every comparison with it is settled.
-// No crossing: the axis turned away from the plane, and every ray with it,
-// is a Miss.
+// annulus and off it, so the cone is Marginal without the ellipse. The hole's
+// comparisons are made only for an annulus with a hole (kHole: the caller
+// picks the instance by the shape, a branch that follows the objects).
+// No crossing: never settled here. The caller tests the cones turned away
+// from the plane past its branch (turnedAwayFromPlane): they are rare, and
+// the test cost every cone about 30 instructions (docs/geometry.md, "Disc").
 struct AnnulusStretch {
     double dx = 1.0, dy = 1.0, dMax = 1.0, dMin = 1.0;
 };
@@ -514,6 +516,7 @@ struct AnnulusFastPath {
     bool settled, miss, full;  // settled: miss, full and the depths answer the cone
     double tNear, tFar;
 };
+template <bool kHole>
 inline AnnulusFastPath annulusFastPath(const LocalCone& cone, const ZPlaneApproach& z, double outer,
                                        double hole, const AnnulusStretch& d) {
     const Vec3& p = cone.apex;
@@ -525,16 +528,21 @@ inline AnnulusFastPath annulusFastPath(const LocalCone& cone, const ZPlaneApproa
     const double q = std::sqrt(qx * qx + qy * qy) * k;
     const double reach = scaledReach(depth, an, g2, c, s, cone.absTol, ank) * d.dMax;
     const double inner = depth * k * s * (1.0 - s) * (1.0 - 1e-12) * d.dMin - cone.absTol * ank * d.dMax;
-    const double outerK = ank * outer, holeK = ank * (hole > 0.0 ? hole : -kInfinity);
-    const bool miss = (q > outerK + reach) | (q < holeK - reach);
-    const bool full = (q < outerK - reach) & (q > holeK + reach);
-    const bool nearCircle = (std::abs(q - outerK) < inner) | (std::abs(q - holeK) < inner);
+    const double outerK = ank * outer;
+    bool miss = q > outerK + reach;
+    bool full = q < outerK - reach;
+    bool nearCircle = std::abs(q - outerK) < inner;
+    if constexpr (kHole) {
+        const double holeK = ank * hole;
+        miss = miss | (q < holeK - reach);
+        full = full & (q > holeK + reach);
+        nearCircle = nearCircle | (std::abs(q - holeK) < inner);
+    }
     const auto [tNear, tFar] = planeDepthsWithG(depth, an, g2, g, c, s);
-    const bool away = turnedAwayFromPlane(cone, h, g2);
     AnnulusFastPath f;
-    f.settled = (crosses & (miss | full | nearCircle)) | (!crosses & away);
-    f.miss = miss | !crosses;
-    f.full = full & crosses;
+    f.settled = crosses & (miss | full | nearCircle);
+    f.miss = miss;
+    f.full = full;
     f.tNear = tNear;
     f.tFar = tFar;
     return f;
