@@ -27,8 +27,7 @@ std::optional<LocalHit> Disc::intersect(const Ray& ray, double tMin, double tMax
 }
 
 ConeClass Disc::classify(const LocalCone& cone) const {
-    return hole_ > 0.0 ? classifyWith<true>(cone, [] {}, LocalFinish{cone})
-                       : classifyWith<false>(cone, [] {}, LocalFinish{cone});
+    return classifyWith(cone, [] {}, LocalFinish{cone});
 }
 
 std::optional<ConeClass> Disc::bandClass(const LocalCone& cone, double depth, double an, double k,

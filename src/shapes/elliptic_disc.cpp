@@ -63,22 +63,20 @@ Bounds3 EllipticDisc::worldBounds(const Mat3& m, const Vec3& offset) const {
 }
 
 ConeClass EllipticDisc::classify(const LocalCone& cone) const {
-    return hole_ > 0.0 ? classifyWith<true>(cone, [] {}, LocalFinish{cone})
-                       : classifyWith<false>(cone, [] {}, LocalFinish{cone});
+    return classifyWith(cone, [] {}, LocalFinish{cone});
 }
 
 ConeClass EllipticDisc::classifyRanging(LocalCone& cone, double t0, double t1,
                                         const RigidBounds& back) const {
-    const auto setRange = [&] { cone.setRange(t0, t1, cone.absTol); };
-    return hole_ > 0.0 ? classifyWith<true>(cone, setRange, back) : classifyWith<false>(cone, setRange, back);
+    return classifyWith(cone, [&] { cone.setRange(t0, t1, cone.absTol); }, back);
 }
 
-template <bool kHole, class SetRange, class Finish>
+template <class SetRange, class Finish>
 ConeClass EllipticDisc::classifyWith(const LocalCone& cone, SetRange&& setRange, Finish&& finish) const {
     // The disc's fast path (Disc::classifyWith) in the stretched plane,
     // where the outer circle is the unit one.
     const ZPlaneApproach z = zPlaneApproach(cone);
-    const auto f = annulusFastPath<kHole>(cone, z, 1.0, hole_, {dx_, dy_, dMax_, dMin_});
+    const auto f = annulusFastPath(cone, z, 1.0, hole_, {dx_, dy_, dMax_, dMin_});
     // As the disc's: no local range for these answers, set past them.
     if (f.settled) return rangedClass(finish, f.miss, f.full, f.tNear, f.tFar);
     if (!z.crosses && turnedAwayFromPlane(cone, z.h, z.g2)) return missClass();

@@ -504,8 +504,8 @@ inline bool turnedAwayFromPlane(const LocalCone& cone, double h, double g2) {
 // = depth / an, the axis' depth), its image the disc dMin times that about D
 // q: a circle through that disc has footprint points on both sides, in the
 // annulus and off it, so the cone is Marginal without the ellipse. The hole's
-// comparisons are made only for an annulus with a hole (kHole: the caller
-// picks the instance by the shape, a branch that follows the objects).
+// comparisons are made only for an annulus with a hole (a branch that follows
+// the objects).
 // No crossing: never settled here. The caller tests the cones turned away
 // from the plane past its branch (turnedAwayFromPlane): they are rare, and
 // the test cost every cone about 30 instructions (docs/geometry.md, "Disc").
@@ -516,7 +516,6 @@ struct AnnulusFastPath {
     bool settled, miss, full;  // settled: miss, full and the depths answer the cone
     double tNear, tFar;
 };
-template <bool kHole>
 inline AnnulusFastPath annulusFastPath(const LocalCone& cone, const ZPlaneApproach& z, double outer,
                                        double hole, const AnnulusStretch& d) {
     const Vec3& p = cone.apex;
@@ -532,7 +531,7 @@ inline AnnulusFastPath annulusFastPath(const LocalCone& cone, const ZPlaneApproa
     bool miss = q > outerK + reach;
     bool full = q < outerK - reach;
     bool nearCircle = std::abs(q - outerK) < inner;
-    if constexpr (kHole) {
+    if (hole > 0.0) {
         const double holeK = ank * hole;
         miss = miss | (q < holeK - reach);
         full = full & (q > holeK + reach);

@@ -44,12 +44,11 @@ public:
     // Miss, which needs neither (docs/geometry.md, "Disc").
     ConeClass classifyRanging(LocalCone& cone, double t0, double t1,
                               const RigidBounds& back) const {
-        const auto setRange = [&] { cone.setRange(t0, t1, cone.absTol); };
-        return hole_ > 0.0 ? classifyWith<true>(cone, setRange, back) : classifyWith<false>(cone, setRange, back);
+        return classifyWith(cone, [&] { cone.setRange(t0, t1, cone.absTol); }, back);
     }
 
 private:
-    template <bool kHole, class SetRange, class Finish>
+    template <class SetRange, class Finish>
     ConeClass classifyWith(const LocalCone& cone, SetRange&& setRange, Finish&& finish) const;
     // The fast path's cones near a circle: the footprint ellipse against both
     // circles; nullopt within a few tolerances of tangency. Out of line, so
@@ -66,11 +65,11 @@ private:
 
 // Inline, as is classifyRanging: a rigid frame's classification
 // (Primitive) then keeps the local cone in registers.
-template <bool kHole, class SetRange, class Finish>
+template <class SetRange, class Finish>
 inline ConeClass Disc::classifyWith(const LocalCone& cone, SetRange&& setRange, Finish&& finish) const {
     if (empty()) return conegeom::missClass();
     const conegeom::ZPlaneApproach z = conegeom::zPlaneApproach(cone);
-    const auto f = conegeom::annulusFastPath<kHole>(cone, z, radius_, hole_, {});
+    const auto f = conegeom::annulusFastPath(cone, z, radius_, hole_, {});
     // These answers need no local range (absTol only): `finish` holds their
     // depths against the range (RigidBounds: the world's), which is set
     // only past them.

@@ -46,7 +46,7 @@ private:
         const double u = x * dx_, v = y * dy_, r2 = u * u + v * v;
         return !(r2 > 1.0 || r2 < hole_ * hole_);
     }
-    template <bool kHole, class SetRange, class Finish>
+    template <class SetRange, class Finish>
     ConeClass classifyWith(const LocalCone& cone, SetRange&& setRange, Finish&& finish) const;
     // The fast path's cones near a circle: the stretched footprint against
     // both circles, from its supports along and across the direction of its
