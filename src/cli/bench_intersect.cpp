@@ -23,7 +23,7 @@
 #include <string>
 #include <vector>
 
-#include "asos/shapes/cone_probe.hpp"
+#include "asos/testing/cone_probe.hpp"
 #include "asos/shapes/primitive.hpp"
 #include "cli/commands.hpp"
 

@@ -2,7 +2,7 @@
 
 #include <cmath>
 
-#include "asos/shapes/cone_probe.hpp"
+#include "asos/testing/cone_probe.hpp"
 #include "asos/shapes/primitive.hpp"
 #include "shape_property.hpp"
 

@@ -18,7 +18,7 @@
 #include <sstream>
 #include <string>
 
-#include "asos/shapes/cone_probe.hpp"
+#include "asos/testing/cone_probe.hpp"
 #include "asos/shapes/primitive.hpp"
 
 namespace shapetest {

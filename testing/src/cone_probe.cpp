@@ -1,4 +1,4 @@
-#include "asos/shapes/cone_probe.hpp"
+#include "asos/testing/cone_probe.hpp"
 
 #include <algorithm>
 #include <cmath>
