@@ -213,7 +213,7 @@ ConeResult traceCones(const Scene& scene, const std::vector<Ray>& camera, std::s
             ++cones;
         }
         const double us = (threadSeconds() - start) * 1e6 / static_cast<double>(cones);
-        if (pass == 0 || us < best.microseconds) best = {us, double(visits) / cones};
+        if (pass == 0 || us < best.microseconds) best = {us, static_cast<double>(visits) / static_cast<double>(cones)};
     }
     return best;
 }
@@ -227,6 +227,11 @@ struct Settings {
     std::string scenes = "both";
     int passes = 3;
 };
+
+double perSecond(std::size_t count, double seconds) { return static_cast<double>(count) / seconds; }
+double percent(std::size_t part, std::size_t whole) {
+    return 100.0 * static_cast<double>(part) / static_cast<double>(whole);
+}
 
 // Build time is Scene::build's: the primitives and the BVH over them.
 void benchScene(const char* name, std::vector<Object> objects, const Settings& settings,
@@ -255,9 +260,9 @@ void benchScene(const char* name, std::vector<Object> objects, const Settings& s
     const ConeResult cones = traceCones(*scene, camera, settings.coneCount, settings.passes);
     std::printf("%-10s %9zu %9.3f %9zu %6d %11.2f %7.1f%% %11.2f %11.2f %7.1f%% %9.2f %7.1f   %.6g\n",
                 name, count, buildSeconds, bvh.nodeCount(), bvh.depth(),
-                camera.size() / c.seconds * 1e-6, 100.0 * c.hits / camera.size(),
-                camera.size() / p.seconds * 1e-6,
-                random.size() / r.seconds * 1e-6, 100.0 * r.hits / random.size(),
+                perSecond(camera.size(), c.seconds) * 1e-6, percent(c.hits, camera.size()),
+                perSecond(camera.size(), p.seconds) * 1e-6,
+                perSecond(random.size(), r.seconds) * 1e-6, percent(r.hits, random.size()),
                 cones.microseconds, cones.visits, c.checksum + r.checksum);
 }
 

@@ -109,9 +109,10 @@ Errors compare(const Image& a, const Image& b, const Image* levels = nullptr) {
 
 std::string count(std::uint64_t n) {
     char text[32];
-    if (n >= 10'000'000) std::snprintf(text, sizeof text, "%.0fM", n / 1e6);
-    else if (n >= 1'000'000) std::snprintf(text, sizeof text, "%.1fM", n / 1e6);
-    else if (n >= 10'000) std::snprintf(text, sizeof text, "%.0fk", n / 1e3);
+    const double v = static_cast<double>(n);
+    if (n >= 10'000'000) std::snprintf(text, sizeof text, "%.0fM", v / 1e6);
+    else if (n >= 1'000'000) std::snprintf(text, sizeof text, "%.1fM", v / 1e6);
+    else if (n >= 10'000) std::snprintf(text, sizeof text, "%.0fk", v / 1e3);
     else std::snprintf(text, sizeof text, "%llu", static_cast<unsigned long long>(n));
     return text;
 }

@@ -66,7 +66,7 @@ void writeExplicit(const fs::path& path, long n) {
         const long x = i % 100, y = (i / 100) % 100, z = i / 10000;
         const int len = std::snprintf(line, sizeof line,
                                       "sphere { <%ld.25, %ld.5, %ld.75>, 0.%03ld pigment { rgb <%.3f, 0.5, %.3f> } }\n",
-                                      x, y, z, 100 + i % 300, (i % 7) / 7.0, (i % 11) / 11.0);
+                                      x, y, z, 100 + i % 300, static_cast<double>(i % 7) / 7.0, static_cast<double>(i % 11) / 11.0);
         out.write(line, len);
     }
 }
@@ -117,7 +117,7 @@ Measure measureInChild(const fs::path& scene) {
     m.seconds = report[0];
     m.objects = static_cast<std::size_t>(report[1]);
     m.cpuSeconds = report[2];
-    m.peakMiB = usage.ru_maxrss / 1024.0;
+    m.peakMiB = static_cast<double>(usage.ru_maxrss) / 1024.0;
     return m;
 }
 
@@ -158,7 +158,7 @@ std::optional<Measure> measurePovray(const fs::path& scene) {
     m.ok = WIFEXITED(status) && WEXITSTATUS(status) == 0;
     m.seconds = std::stod(match[1]);
     m.cpuSeconds = std::stod(match[2]);
-    m.peakMiB = usage.ru_maxrss / 1024.0;
+    m.peakMiB = static_cast<double>(usage.ru_maxrss) / 1024.0;
     return m;
 }
 
@@ -200,7 +200,7 @@ int runBench(const BenchArgs& args) {
             if (!ok) ++failures;
             std::cout << std::left << std::setw(10) << (loop ? "loop" : "explicit") << std::right
                       << std::setw(10) << n << std::setw(10) << std::fixed << std::setprecision(1)
-                      << fs::file_size(file, ec) / 1048576.0 << std::setw(10) << std::setprecision(3)
+                      << static_cast<double>(fs::file_size(file, ec)) / 1048576.0 << std::setw(10) << std::setprecision(3)
                       << m.seconds << std::setw(10) << m.cpuSeconds << std::setw(10) << std::setprecision(1)
                       << m.peakMiB;
             if (args.povray) {

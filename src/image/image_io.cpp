@@ -302,7 +302,7 @@ ImageComparison compareImages(const Image& a, const Image& b, const CompareThres
     r.warnPixels = cr.nwarn;
     r.pixels = static_cast<std::size_t>(a.width()) * a.height();
     // NaN differences fail: written as negated comparisons.
-    r.passed = !(static_cast<double>(r.failPixels) > t.failPercent / 100.0 * r.pixels) &&
+    r.passed = !(static_cast<double>(r.failPixels) > t.failPercent / 100.0 * static_cast<double>(r.pixels)) &&
                (r.maxError <= t.hardFail);
     return r;
 }
