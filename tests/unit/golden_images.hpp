@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "asos/image/image_io.hpp"
+#include "asos/testing/image_comparison.hpp"
 #include "asos/lang/interpreter.hpp"
 #include "asos/render/renderer.hpp"
 
