@@ -10,7 +10,7 @@
 #include "asos/diag/diagnostics.hpp"
 #include "asos/lang/interpreter.hpp"
 #include "asos/scene/dump.hpp"
-#include "cli/arguments.hpp"
+#include "cli/common/arguments.hpp"
 #include "cli/commands.hpp"
 
 namespace asos::cli {

@@ -9,18 +9,6 @@ int main(int argc, char** argv) {
     // Subcommands register here, one line each.
     addParseCommand(app, result);
     addRenderCommand(app, result);
-    CLI::App* bench = addBenchCommand(app);
-    // Benchmarks register under `bench`, one line each.
-    addBenchParseCommand(*bench, result);
-    addBenchBvhCommand(*bench, result);
-    addBenchIntersectCommand(*bench, result);
-    addBenchRenderCommand(*bench, result);
-    addBenchLightsCommand(*bench, result);
 
-    try {
-        app.parse(argc, argv);
-    } catch (const CLI::ParseError& e) {
-        return app.exit(e);
-    }
-    return result.exitCode;
+    return runProgram(app, argc, argv, result);
 }

@@ -1,4 +1,4 @@
-// `asos bench bvh`: BVH build time and single-thread nearest-hit rays per
+// `asos-bench bvh`: BVH build time and single-thread nearest-hit rays per
 // second on random spheres and random triangles, for camera rays (a pinhole
 // looking at the scene) and random rays (origins inside the scene's bounds,
 // directions uniform on the sphere), and the camera rays again in 8x8 pixel
@@ -28,9 +28,9 @@
 #include "asos/accel/bvh.hpp"
 #include "asos/diag/diagnostics.hpp"
 #include "asos/scene/scene.hpp"
-#include "cli/commands.hpp"
+#include "benchmarks.hpp"
 
-namespace asos::cli {
+namespace asos::bench {
 namespace {
 
 // Unit density: n items in a cube of side n^(1/3), each about 0.4 across.
@@ -244,7 +244,7 @@ void benchScene(const char* name, std::vector<Object> objects, const Settings& s
     const std::unique_ptr<Scene> scene = Scene::build(std::move(description), diagnostics);
     const double buildSeconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - buildStart).count();
-    if (!scene) throw std::runtime_error("bench bvh: a generated object was rejected");
+    if (!scene) throw std::runtime_error("asos-bench bvh: a generated object was rejected");
     const Bvh& bvh = scene->bvh();
 
     const auto camera = cameraRays(bvh.bounds(), settings.imageWidth);
@@ -252,7 +252,7 @@ void benchScene(const char* name, std::vector<Object> objects, const Settings& s
     const TraceResult c = trace(*scene, camera, settings.passes);
     const TraceResult p = tracePackets(*scene, camera, settings.imageWidth, settings.passes);
     if (p.hits != c.hits || p.checksum != c.checksum)
-        throw std::runtime_error("bench bvh: the packet pass's hits differ from the single-ray pass's (" +
+        throw std::runtime_error("asos-bench bvh: the packet pass's hits differ from the single-ray pass's (" +
                                  std::to_string(p.hits) + " hits, checksum " +
                                  std::to_string(p.checksum) + " against " + std::to_string(c.hits) +
                                  ", " + std::to_string(c.checksum) + ")");
@@ -267,7 +267,7 @@ void benchScene(const char* name, std::vector<Object> objects, const Settings& s
 }
 
 int run(const Settings& settings) {
-    std::printf("asos bench bvh: nearest hit, one thread tracing (rays/s from its CPU time); "
+    std::printf("asos-bench bvh: nearest hit, one thread tracing (rays/s from its CPU time); "
                 "build on %d threads (wall time)\n",
                 tbb::info::default_concurrency());
     std::printf("camera: %dx%d pinhole rays; random: %zu rays from inside the bounds; "
@@ -298,9 +298,9 @@ int run(const Settings& settings) {
 
 }  // namespace
 
-void addBenchBvhCommand(CLI::App& bench, CommandResult& result) {
+void addBvhBenchmark(CLI::App& app, CommandResult& result) {
     auto settings = std::make_shared<Settings>();
-    CLI::App* cmd = bench.add_subcommand("bvh", "BVH build time and nearest-hit rays per second");
+    CLI::App* cmd = app.add_subcommand("bvh", "BVH build time and nearest-hit rays per second");
     cmd->add_option("--sizes", settings->sizes, "item counts")->delimiter(',');
     cmd->add_option("--width", settings->imageWidth, "camera image width and height (rays = width^2)")
         ->check(CLI::Range(1, 8192));
@@ -314,4 +314,4 @@ void addBenchBvhCommand(CLI::App& bench, CommandResult& result) {
     cmd->callback([settings, &result] { result.exitCode = run(*settings); });
 }
 
-}  // namespace asos::cli
+}  // namespace asos::bench
