@@ -2,7 +2,7 @@
 
 int main(int argc, char** argv) {
     using namespace asos::bench;
-    CLI::App app{"asos-bench: benchmarks of asos, programs that print figures"};
+    CLI::App app{"asos-bench: benchmarks of asos, programs that print figures", "asos-bench"};
     app.require_subcommand(1);
     CommandResult result;
 

@@ -2,7 +2,7 @@
 
 int main(int argc, char** argv) {
     using namespace asos::cli;
-    CLI::App app{"asos: ray tracing with adaptive supersampling in object space"};
+    CLI::App app{"asos: ray tracing with adaptive supersampling in object space", "asos"};
     app.require_subcommand(1);
     CommandResult result;
 

@@ -11,8 +11,10 @@ struct CommandResult {
     int exitCode = 0;
 };
 
-// Parses the command line and runs the chosen subcommand. Returns CLI11's
-// exit code for --help and for a mistake in the options, else the command's.
+// Adds --version ("NAME VERSION", the app's name and the project's
+// version), parses the command line and runs the chosen subcommand. Returns
+// CLI11's exit code for --help, --version and a mistake in the options, else
+// the command's.
 int runProgram(CLI::App& app, int argc, char** argv, const CommandResult& result);
 
 }  // namespace asos::cli
