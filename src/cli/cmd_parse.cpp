@@ -10,7 +10,7 @@
 #include "asos/diag/diagnostics.hpp"
 #include "asos/lang/interpreter.hpp"
 #include "asos/scene/dump.hpp"
-#include "cli/arguments.hpp"
+#include "cli/common/arguments.hpp"
 #include "cli/commands.hpp"
 
 namespace asos::cli {
@@ -52,7 +52,7 @@ int runParse(const ParseArgs& args) {
         rusage usage{};
         getrusage(RUSAGE_SELF, &usage);
         std::cout << "objects " << scene->objects.size() << "\nlights " << scene->lights.size()
-                  << "\nseconds " << seconds << "\npeak_rss_mib " << usage.ru_maxrss / 1024.0 << '\n';
+                  << "\nseconds " << seconds << "\npeak_rss_mib " << static_cast<double>(usage.ru_maxrss) / 1024.0 << '\n';
         return 0;
     }
     std::ios::sync_with_stdio(false);

@@ -26,7 +26,7 @@
 #include "asos/lang/interpreter.hpp"
 #include "asos/render/aov.hpp"
 #include "asos/render/renderer.hpp"
-#include "cli/arguments.hpp"
+#include "cli/common/arguments.hpp"
 #include "cli/commands.hpp"
 
 namespace asos::cli {

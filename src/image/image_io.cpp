@@ -15,8 +15,6 @@
 #include <system_error>
 #include <vector>
 
-#include <OpenImageIO/imagebuf.h>
-#include <OpenImageIO/imagebufalgo.h>
 #include <OpenImageIO/imageio.h>
 
 #include "asos/image/encoding.hpp"
@@ -248,72 +246,6 @@ ReadResult readImage(const fs::path& path) {
     in->close();
     result.image = std::move(image);
     return result;
-}
-
-std::string ImageComparison::summary() const {
-    if (!error.empty()) return "cannot compare: " + error;
-    char line[320];
-    std::snprintf(line, sizeof line,
-                  "%s: mean error %.6g, RMS %.6g, PSNR %.2f dB, max error %.6g at (%d, %d) "
-                  "channel %d; %zu of %zu pixels over the failure threshold, %zu over the "
-                  "warning threshold",
-                  passed ? "PASS" : "FAIL", meanError, rmsError, psnr, maxError, maxX, maxY,
-                  maxChannel, failPixels, pixels, warnPixels);
-    return line;
-}
-
-ImageComparison compareImages(const Image& a, const Image& b, const CompareThresholds& t) {
-    ImageComparison r;
-    if (a.width() != b.width() || a.height() != b.height() || a.channels() != b.channels()) {
-        r.error = "image sizes differ: " + std::to_string(a.width()) + "x" +
-                  std::to_string(a.height()) + "x" + std::to_string(a.channels()) + " and " +
-                  std::to_string(b.width()) + "x" + std::to_string(b.height()) + "x" +
-                  std::to_string(b.channels());
-        return r;
-    }
-    if (a.empty()) {
-        r.error = "images are empty";
-        return r;
-    }
-    const OIIO::ImageSpec spec(a.width(), a.height(), a.channels(), OIIO::TypeDesc::FLOAT);
-    // ImageBuf wraps the buffers without copying; compare only reads them.
-    const OIIO::ImageBuf bufA(spec, const_cast<float*>(a.data().data()));
-    const OIIO::ImageBuf bufB(spec, const_cast<float*>(b.data().data()));
-    const auto cr = OIIO::ImageBufAlgo::compare(bufA, bufB, static_cast<float>(t.failValue),
-                                                static_cast<float>(t.warnValue));
-    // OpenImageIO 2.4 also sets cr.error when some pixel fails; only a
-    // message means the comparison itself went wrong.
-    if (cr.error) {
-        std::string e = OIIO::geterror();
-        if (e.empty()) e = bufA.geterror();
-        if (!e.empty()) {
-            r.error = e;
-            return r;
-        }
-    }
-    r.meanError = cr.meanerror;
-    r.rmsError = cr.rms_error;
-    r.psnr = cr.PSNR;
-    r.maxError = cr.maxerror;
-    r.maxX = cr.maxx;
-    r.maxY = cr.maxy;
-    r.maxChannel = cr.maxc;
-    r.failPixels = cr.nfail;
-    r.warnPixels = cr.nwarn;
-    r.pixels = static_cast<std::size_t>(a.width()) * a.height();
-    // NaN differences fail: written as negated comparisons.
-    r.passed = !(static_cast<double>(r.failPixels) > t.failPercent / 100.0 * r.pixels) &&
-               (r.maxError <= t.hardFail);
-    return r;
-}
-
-Image absoluteDifference(const Image& a, const Image& b) {
-    if (a.width() != b.width() || a.height() != b.height() || a.channels() != b.channels())
-        throw std::invalid_argument("absoluteDifference: image sizes differ");
-    Image d(a.width(), a.height(), a.channelNames());
-    for (std::size_t i = 0; i < a.data().size(); ++i)
-        d.data()[i] = std::fabs(a.data()[i] - b.data()[i]);
-    return d;
 }
 
 }  // namespace asos

@@ -231,10 +231,10 @@ public:
                     c_.countShadowPyray(childLevel);
                     const auto first = static_cast<std::uint32_t>(childItems.size());
                     const Cone cone = coneOf(child);
-                    const PreparedCone prepared = preparedCone(child, cone);
+                    const PreparedCone childPrepared = preparedCone(child, cone);
                     for (std::uint32_t j = n.first; j < n.first + n.count; ++j) {
                         ++c_.coneTests;
-                        const ConeClass k = scene_.primitive(items[j].object).classify(prepared);
+                        const ConeClass k = scene_.primitive(items[j].object).classify(childPrepared);
                         if (k.coverage != Coverage::Miss) childItems.push_back({items[j].object, k});
                     }
                     const auto found = static_cast<std::uint32_t>(childItems.size()) - first;

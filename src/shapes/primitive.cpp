@@ -194,7 +194,7 @@ ConeClass Primitive::classifyGeneral(const PreparedCone& cone) const {
     const double absTol = 1e-11 * (l1(local.apex) + sphereTolerance_);
     local.setRange(cone.tMin * lMin, cone.tMax * lMax, absTol);
 
-    ConeClass out = visit([&](const auto& s) { return s.classify(local); });
+    ConeClass out = visit([&](const auto& shape) { return shape.classify(local); });
     if (out.coverage == Coverage::Miss) return out;
     const double tolNear = out.tNear * kConeDistanceTolerance + absTol;
     const double tolFar = out.tFar * kConeDistanceTolerance + absTol;

@@ -67,10 +67,10 @@ using asos::test::randomUnit;
 Vec3 randomDirection(std::mt19937_64& rng) {
     Vec3 d = randomUnit(rng);
     switch (rng() % 6) {
-        case 0: d[rng() % 3] = 0.0; break;
+        case 0: d[static_cast<int>(rng() % 3)] = 0.0; break;
         case 1: {
             d = Vec3(0.0);
-            d[rng() % 3] = rng() % 2 ? 1.0 : -1.0;
+            d[static_cast<int>(rng() % 3)] = rng() % 2 ? 1.0 : -1.0;
             break;
         }
         default: break;
@@ -113,7 +113,7 @@ std::vector<Bounds3> randomFlatBoxes(std::mt19937_64& rng, int n) {
     for (auto& b : boxes) {
         const Vec3 c = (Vec3(u01(rng), u01(rng), u01(rng)) - 0.5) * 20.0;
         Vec3 h = Vec3(u01(rng), u01(rng), u01(rng)) * 0.3;
-        h[rng() % 3] = 0.0;
+        h[static_cast<int>(rng() % 3)] = 0.0;
         b = {c - h, c + h};
     }
     return boxes;
@@ -532,7 +532,7 @@ TEST_CASE("BVH cone prefilter (float) keeps every box the cone touches", "[accel
                                            std::sin(c.halfAngle) * (std::cos(phi) * u + std::sin(phi) * v));
             const double size = std::pow(10.0, -3.0 + 3.0 * u01(rng));
             Vec3 half(size * u01(rng), size * u01(rng), size * u01(rng));
-            if (rng() % 4 == 0) half[rng() % 3] = 0.0;
+            if (rng() % 4 == 0) half[static_cast<int>(rng() % 3)] = 0.0;
             const Vec3 centre = rim + (Vec3(u01(rng), u01(rng), u01(rng)) - 0.5) * (3.0 * size);
             boxes[k] = {glm::floor((centre - half) * 4096.0) / 4096.0, glm::ceil((centre + half) * 4096.0) / 4096.0};
             for (int axis = 0; axis < 3; ++axis) {

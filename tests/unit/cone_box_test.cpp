@@ -68,7 +68,7 @@ Bounds3 randomBox(std::mt19937_64& rng, const Cone& c) {
     }
     const double size = std::pow(10.0, -3.0 + 3.5 * u01(rng));
     Vec3 half(size * u01(rng), size * u01(rng), size * u01(rng));
-    if (rng() % 5 == 0) half[rng() % 3] = 0.0;  // flat boxes (axis-aligned polygons)
+    if (rng() % 5 == 0) half[static_cast<int>(rng() % 3)] = 0.0;  // flat boxes (axis-aligned polygons)
     const Vec3 offset = (Vec3(u01(rng), u01(rng), u01(rng)) - 0.5) * (2.0 * size);
     return {centre + offset - half, centre + offset + half};
 }

@@ -2,12 +2,11 @@
 // Golden renders: a scene file through the whole pipeline (interpreter,
 // renderer), and the comparison of an image with its reference PNG by
 // OpenImageIO's test-suite thresholds (compareImages). References are
-// rewritten only when ASOS_UPDATE_GOLDENS is set (scripts/update-goldens.sh),
-// and then only those the caller owns; a failing comparison never rewrites
-// one, and leaves the rendered and difference images in the build tree.
+// rewritten only by the golden switch (goldens.hpp), and then only those the
+// caller owns; a failing comparison never rewrites one, and leaves the
+// rendered and difference images in the build tree (goldenOutput).
 #include <catch2/catch.hpp>
 
-#include <cstdlib>
 #include <filesystem>
 #include <optional>
 #include <string>
@@ -15,22 +14,12 @@
 #include <vector>
 
 #include "asos/image/image_io.hpp"
+#include "asos/testing/image_comparison.hpp"
 #include "asos/lang/interpreter.hpp"
 #include "asos/render/renderer.hpp"
+#include "goldens.hpp"
 
 namespace asos::test {
-
-inline bool updatingGoldens() {
-    const char* update = std::getenv("ASOS_UPDATE_GOLDENS");
-    return update && *update;
-}
-
-// A folder of the build tree for what a golden test writes.
-inline std::filesystem::path goldenOutputDir(const std::string& name) {
-    const std::filesystem::path dir = std::filesystem::path(ASOS_BINARY_DIR) / "test-output" / name;
-    std::filesystem::create_directories(dir);
-    return dir;
-}
 
 // Renders `scene` at the settings' size on two threads; `defines` are
 // declared before the scene runs (as -D does).
@@ -50,12 +39,15 @@ inline Image renderSceneFile(const std::filesystem::path& scene, RenderSettings 
     return std::move(out->color);
 }
 
-// Writes `rendered` as PNG into `outputDir` and compares it with
-// `reference`, which is first rewritten from it when updating and
-// `ownReference` (references made by another program are not ours).
+// Writes `rendered` as PNG (the comparison reads its encoded values back)
+// and compares it with `reference`, which is first rewritten from it when
+// updating and `ownReference` (references made by another program are not
+// ours). The rendered image and the difference stay only when they differ.
 inline void compareWithReference(const Image& rendered, const std::filesystem::path& reference,
-                                 const std::filesystem::path& outputDir, bool ownReference = true) {
-    const std::filesystem::path ours = outputDir / reference.filename();
+                                 bool ownReference = true) {
+    const std::filesystem::path ours = goldenOutput(reference);
+    const std::filesystem::path diff = std::filesystem::path(ours).replace_extension(".diff.png");
+    std::filesystem::remove(diff);
     REQUIRE(writeImage(rendered, ours).ok());
     if (ownReference && updatingGoldens())
         std::filesystem::copy_file(ours, reference, std::filesystem::copy_options::overwrite_existing);
@@ -65,12 +57,12 @@ inline void compareWithReference(const Image& rendered, const std::filesystem::p
     REQUIRE(mine.ok());
     REQUIRE(theirs.ok());
     const ImageComparison cmp = compareImages(mine.image, theirs.image);
-    const std::filesystem::path diff = outputDir / (reference.stem().string() + ".diff.png");
     if (!cmp.passed && cmp.error.empty())
         (void)writeImage(absoluteDifference(mine.image, theirs.image), diff, {.transfer = Transfer::Raw});
     INFO(reference.filename().string() << ": " << cmp.summary() << "; rendered " << ours.string()
                                        << ", difference " << diff.string());
     CHECK(cmp.passed);
+    if (cmp.passed) std::filesystem::remove(ours);
 }
 
 }  // namespace asos::test

@@ -1,21 +1,21 @@
 // Golden files of the language: the dump of every example and of the focused
 // scenes in tests/golden/parse/ (NAME.pov → NAME.dump), and the diagnostics
 // of the mistakes in tests/golden/diag/ (NAME.pov → NAME.err, exact text).
-// Goldens are rewritten only by scripts/update-goldens.sh
-// (ASOS_UPDATE_GOLDENS=1); a failing comparison writes what it got into the
-// build tree and leaves the golden alone.
+// Goldens are rewritten only by the golden switch (goldens.hpp,
+// scripts/update-goldens.sh); a failing comparison leaves what it got in the
+// build tree (build/golden-out/tests/golden/...) and the golden alone.
 //
 // Also here: parse → dump → parse → dump is a fixed point for all of them.
 #include <catch2/catch.hpp>
 
 #include <algorithm>
-#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
 
 #include "asos/lang/interpreter.hpp"
 #include "asos/scene/dump.hpp"
+#include "goldens.hpp"
 
 using namespace asos;
 namespace fs = std::filesystem;
@@ -23,11 +23,6 @@ namespace fs = std::filesystem;
 namespace {
 
 const fs::path kSource = ASOS_SOURCE_DIR;
-
-bool updating() {
-    const char* v = std::getenv("ASOS_UPDATE_GOLDENS");
-    return v && std::string(v) == "1";
-}
 
 std::string readText(const fs::path& p) {
     std::ifstream in(p, std::ios::binary);
@@ -61,21 +56,20 @@ std::vector<fs::path> parseScenes() {
 
 void compareGolden(const fs::path& golden, const std::string& actual) {
     const std::string name = fs::relative(golden, kSource).string();
-    if (updating()) {
+    if (test::updatingGoldens()) {
         std::ofstream(golden, std::ios::binary) << actual;
         WARN("rewrote " << name);
-        return;
     }
     INFO("golden " << name);
     CHECK(fs::exists(golden));
-    const std::string expected = readText(golden);
-    if (expected != actual) {
-        const fs::path out = fs::path(ASOS_BINARY_DIR) / "golden-out" / fs::relative(golden, kSource);
-        fs::create_directories(out.parent_path());
-        std::ofstream(out, std::ios::binary) << actual;
-        FAIL_CHECK("differs from the golden; got " << out.string() << " (diff them; if the change is "
-                                                  << "right, run scripts/update-goldens.sh)");
+    const fs::path out = test::goldenOutput(golden);
+    if (readText(golden) == actual) {
+        fs::remove(out);
+        return;
     }
+    std::ofstream(out, std::ios::binary) << actual;
+    FAIL_CHECK("differs from the golden; got " << out.string() << " (diff them; if the change is "
+                                              << "right, run scripts/update-goldens.sh)");
 }
 
 lang::InterpreterOptions optionsFor(const fs::path&) {

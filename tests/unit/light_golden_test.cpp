@@ -2,9 +2,10 @@
 // the six primitives above a ground plane) under each of the four light
 // kinds, by ASOS shadows, and under the rectangular light by the classic
 // grid, at 96 x 72. References live in tests/golden/lights and are rewritten
-// only by scripts/update-goldens.sh (ASOS_UPDATE_GOLDENS=1); images are
-// compared with OpenImageIO's test-suite thresholds (compareImages). On
-// failure the rendered and difference images are written into the build tree.
+// only by the golden switch (goldens.hpp, scripts/update-goldens.sh); images
+// are compared with OpenImageIO's test-suite thresholds (compareImages). On
+// failure the rendered and difference images are left in the build tree
+// (build/golden-out/tests/golden/lights).
 #include <catch2/catch.hpp>
 
 #include <filesystem>
@@ -26,8 +27,7 @@ Image renderFigure6(int light, RenderSettings settings) {
 
 void compareWithReference(const Image& rendered, const std::string& name) {
     test::compareWithReference(rendered,
-                               fs::path(ASOS_SOURCE_DIR) / "tests" / "golden" / "lights" / (name + ".png"),
-                               test::goldenOutputDir("golden_lights"));
+                               fs::path(ASOS_SOURCE_DIR) / "tests" / "golden" / "lights" / (name + ".png"));
 }
 
 }  // namespace

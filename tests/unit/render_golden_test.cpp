@@ -6,11 +6,12 @@
 //  - against our own references: every primitive by ASOS, and the six
 //    primitives by every method, in tests/golden/render (96 x 72).
 // Images are compared with OpenImageIO's test-suite thresholds
-// (compareImages). scripts/update-goldens.sh (ASOS_UPDATE_GOLDENS=1) rewrites
-// the references: ours from this build, POV-Ray's by running `povray` on the
-// scenes of tests/golden/povray; a failing test never rewrites one.
-// On failure the rendered and difference images are written into the build
-// tree and the worst pixel is printed.
+// (compareImages). The golden switch (goldens.hpp, scripts/update-goldens.sh)
+// rewrites the references: ours from this build, POV-Ray's by running
+// `povray` on the scenes of tests/golden/povray; a failing test never
+// rewrites one. On failure the rendered and difference images are left in
+// the build tree (build/golden-out/tests/golden/...) and the worst pixel is
+// printed.
 #include <catch2/catch.hpp>
 
 #include <cstdlib>
@@ -21,18 +22,16 @@
 
 namespace fs = std::filesystem;
 using namespace asos;
+using test::compareWithReference;
 using test::renderSceneFile;
 
 namespace {
 
 fs::path sourceDir(const char* folder) { return fs::path(ASOS_SOURCE_DIR) / "tests" / "golden" / folder; }
 
-void compareWithReference(const Image& rendered, const fs::path& reference, bool ownReference) {
-    test::compareWithReference(rendered, reference, test::goldenOutputDir("golden_render"), ownReference);
-}
-
 // POV-Ray's render of one of tests/golden/povray's scenes, at 160 x 90,
-// rewritten by running povray when updating.
+// rewritten by running povray when updating (its log beside what the test
+// got, in the build tree).
 fs::path povrayReference(const std::string& scene, const std::string& reference,
                          const std::string& povrayOptions) {
     const fs::path dir = sourceDir("povray");
@@ -40,7 +39,7 @@ fs::path povrayReference(const std::string& scene, const std::string& reference,
     if (test::updatingGoldens()) {
         const std::string command = "povray -D -GA +I'" + (dir / (scene + ".pov")).string() + "' +O'" +
                                     png.string() + "' +W160 +H90 " + povrayOptions + " +FN8 > '" +
-                                    (test::goldenOutputDir("golden_render") / (reference + ".povray.log")).string() + "' 2>&1";
+                                    test::goldenOutput(dir / (reference + ".povray.log")).string() + "' 2>&1";
         INFO(command);
         REQUIRE(std::system(command.c_str()) == 0);
     }

@@ -65,7 +65,7 @@ TEST_CASE("Every method renders the same scene alike", "[renderer]") {
         double sum = 0.0;
         for (std::size_t i = 0; i < out.color.data().size(); ++i)
             sum += std::abs(out.color.data()[i] - reference.color.data()[i]);
-        const double mean = sum / out.color.data().size();
+        const double mean = sum / static_cast<double>(out.color.data().size());
         CHECK(mean < (m == RenderMethod::Single ? 0.03 : 0.015));
     }
 }

@@ -1,6 +1,6 @@
 #pragma once
-// Runs the asos program as a user does, for the command-line tests: in a
-// given folder, its stdout and stderr kept in files of this process's own
+// Runs a program of the build (asos, asos-bench) as a user does, for the
+// command-line tests: in a given folder, its stdout and stderr kept in files of this process's own
 // (ctest runs test cases side by side), and read back whole.
 #include <fcntl.h>
 #include <sys/wait.h>
@@ -27,7 +27,8 @@ inline std::string slurp(const std::filesystem::path& p) {
     return s.str();
 }
 
-inline ProgramResult runAsos(const std::filesystem::path& dir, std::vector<std::string> args) {
+inline ProgramResult runProgram(const char* program, const std::filesystem::path& dir,
+                                std::vector<std::string> args) {
     std::filesystem::create_directories(dir);
     const std::string tag = std::to_string(getpid());
     const std::filesystem::path out = dir / ("stdout-" + tag + ".txt");
@@ -39,10 +40,10 @@ inline ProgramResult runAsos(const std::filesystem::path& dir, std::vector<std::
         if (o < 0 || e < 0 || chdir(dir.c_str()) != 0) _exit(126);
         dup2(o, STDOUT_FILENO);
         dup2(e, STDERR_FILENO);
-        std::vector<char*> argv{const_cast<char*>(ASOS_EXE)};
+        std::vector<char*> argv{const_cast<char*>(program)};
         for (auto& a : args) argv.push_back(a.data());
         argv.push_back(nullptr);
-        execv(ASOS_EXE, argv.data());
+        execv(program, argv.data());
         _exit(127);
     }
     ProgramResult r;
@@ -53,6 +54,10 @@ inline ProgramResult runAsos(const std::filesystem::path& dir, std::vector<std::
     r.out = slurp(out);
     r.err = slurp(err);
     return r;
+}
+
+inline ProgramResult runAsos(const std::filesystem::path& dir, std::vector<std::string> args) {
+    return runProgram(ASOS_EXE, dir, std::move(args));
 }
 
 }  // namespace asos::test

@@ -191,7 +191,7 @@ TEST_CASE("Scene packet search gives every ray intersect's answer bit for bit", 
                 Vec3 forward = glm::normalize(Vec3(u(rng), u(rng), u(rng)) - eye);
                 if (trial % 4 == 1) {
                     forward = Vec3(0.0);
-                    forward[rng() % 3] = rng() % 2 ? 1.0 : -1.0;
+                    forward[static_cast<int>(rng() % 3)] = rng() % 2 ? 1.0 : -1.0;
                 }
                 const Vec3 right = glm::normalize(glm::cross(forward, glm::normalize(Vec3(u(rng), u(rng), u(rng)))));
                 const Vec3 up = glm::cross(right, forward);
@@ -205,9 +205,9 @@ TEST_CASE("Scene packet search gives every ray intersect's answer bit for bit", 
                 // One origin, every direction; some with zero or tiny components.
                 for (int i = 0; i < size; ++i) {
                     Vec3 d(u(rng), u(rng), u(rng));
-                    if (i % 5 == 0) d[rng() % 3] = 0.0;
-                    if (i % 7 == 0) d[rng() % 3] = 1e-35;
-                    if (i % 11 == 0) d = Vec3(0.0), d[rng() % 3] = rng() % 2 ? 1.0 : -1.0;
+                    if (i % 5 == 0) d[static_cast<int>(rng() % 3)] = 0.0;
+                    if (i % 7 == 0) d[static_cast<int>(rng() % 3)] = 1e-35;
+                    if (i % 11 == 0) d = Vec3(0.0), d[static_cast<int>(rng() % 3)] = rng() % 2 ? 1.0 : -1.0;
                     packet.push_back({eye, glm::normalize(d)});
                 }
                 break;

@@ -2,7 +2,6 @@
 // Image files through OpenImageIO (src/image/image_io.cpp is the only
 // translation unit that includes it). Nothing here prints: every failure comes
 // back as a message.
-#include <cstddef>
 #include <filesystem>
 #include <string>
 
@@ -53,33 +52,5 @@ struct ReadResult {
 // Reads the first subimage as float, values as stored (integer formats scaled
 // to [0, 1], no colour conversion): a PNG reads back its encoded values.
 ReadResult readImage(const std::filesystem::path& path);
-
-// OpenImageIO's test-suite rule (testsuite/runtest.py, idiff): a comparison
-// fails when more than `failPercent` percent of the pixels have a channel
-// differing by more than `failValue`, or when any value differs by more than
-// `hardFail`. Pixels over `warnValue` are counted as warnings.
-struct CompareThresholds {
-    double failValue = 0.004;
-    double failPercent = 0.02;
-    double hardFail = 0.012;
-    double warnValue = 0.008;
-};
-
-struct ImageComparison {
-    double meanError = 0.0, rmsError = 0.0, psnr = 0.0, maxError = 0.0;
-    int maxX = 0, maxY = 0, maxChannel = 0;  // where the largest difference is
-    std::size_t failPixels = 0, warnPixels = 0, pixels = 0;
-    bool passed = false;
-    std::string error;  // set when the images cannot be compared (sizes differ)
-
-    // One line: verdict, mean, RMS, max error and where it is.
-    std::string summary() const;
-};
-
-ImageComparison compareImages(const Image& a, const Image& b, const CompareThresholds& thresholds = {});
-
-// |a - b| per value, for failure reports. Sizes and channels must match
-// (std::invalid_argument otherwise).
-Image absoluteDifference(const Image& a, const Image& b);
 
 }  // namespace asos

@@ -1,7 +1,8 @@
 #pragma once
-// Values the commands read from their options: numbers, fractions such as
-// `1/64`, and `-D NAME=VALUE` declarations. Each returns nothing when the text
-// is not one; the command names the option in its error.
+// Values the commands of both programs (asos, asos-bench) read from their
+// options: numbers, fractions such as `1/64`, and `-D NAME=VALUE`
+// declarations. Each returns nothing when the text is not one; the command
+// names the option in its error.
 #include <optional>
 #include <string>
 #include <string_view>

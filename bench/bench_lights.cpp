@@ -1,4 +1,4 @@
-// `asos bench lights`: ASOS shadows from distributed lights against the
+// `asos-bench lights`: ASOS shadows from distributed lights against the
 // classic grid of point lights (issue 5's benchmark). The paper's Figure 6
 // arrangement (examples/figure6.pov) is rendered under each area light kind
 // with the ASOS eye method throughout, so that images differ only by how
@@ -37,16 +37,16 @@
 #include "asos/image/image_io.hpp"
 #include "asos/lang/interpreter.hpp"
 #include "asos/render/renderer.hpp"
-#include "cli/arguments.hpp"
-#include "cli/commands.hpp"
+#include "cli/common/arguments.hpp"
+#include "benchmarks.hpp"
 
-namespace asos::cli {
+namespace asos::bench {
 namespace {
 
 namespace fs = std::filesystem;
 
 struct BenchLightsArgs {
-    std::string scene = "examples/figure6.pov";
+    std::string scene;  // empty: examples/figure6.pov
     int width = 640, height = 480;
     int threads = 2;
     std::string lights = "spherical,linear,rectangular";
@@ -109,9 +109,10 @@ Errors compare(const Image& a, const Image& b, const Image* levels = nullptr) {
 
 std::string count(std::uint64_t n) {
     char text[32];
-    if (n >= 10'000'000) std::snprintf(text, sizeof text, "%.0fM", n / 1e6);
-    else if (n >= 1'000'000) std::snprintf(text, sizeof text, "%.1fM", n / 1e6);
-    else if (n >= 10'000) std::snprintf(text, sizeof text, "%.0fk", n / 1e3);
+    const double v = static_cast<double>(n);
+    if (n >= 10'000'000) std::snprintf(text, sizeof text, "%.0fM", v / 1e6);
+    else if (n >= 1'000'000) std::snprintf(text, sizeof text, "%.1fM", v / 1e6);
+    else if (n >= 10'000) std::snprintf(text, sizeof text, "%.0fk", v / 1e3);
     else std::snprintf(text, sizeof text, "%llu", static_cast<unsigned long long>(n));
     return text;
 }
@@ -122,7 +123,7 @@ int runBenchLights(const BenchLightsArgs& args) {
         const auto k = std::find_if(std::begin(kKinds), std::end(kKinds),
                                     [&](const Kind& kind) { return name == kind.name; });
         if (k == std::end(kKinds)) {
-            std::cerr << "asos bench lights: error: --lights takes point, spherical, linear and "
+            std::cerr << "asos-bench lights: error: --lights takes point, spherical, linear and "
                          "rectangular, not '" << name << "'\n";
             return 1;
         }
@@ -130,25 +131,25 @@ int runBenchLights(const BenchLightsArgs& args) {
     }
     std::vector<int> grids;
     for (const std::string& g : splitList(args.grids)) {
-        const std::optional<double> n = parseNumber(g);
+        const std::optional<double> n = cli::parseNumber(g);
         if (!n || *n < 1 || *n > kMaxLightSamplesPerSide || *n != std::floor(*n)) {
-            std::cerr << "asos bench lights: error: --grids takes whole numbers, not '" << g << "'\n";
+            std::cerr << "asos-bench lights: error: --grids takes whole numbers, not '" << g << "'\n";
             return 1;
         }
         grids.push_back(static_cast<int>(*n));
     }
     std::vector<std::pair<std::string, double>> epsList;
     for (const std::string& e : splitList(args.eps)) {
-        const std::optional<double> v = parseFraction(e);
+        const std::optional<double> v = cli::parseFraction(e);
         if (!v || !(*v >= 0.0)) {
-            std::cerr << "asos bench lights: error: --eps takes numbers or fractions, not '" << e << "'\n";
+            std::cerr << "asos-bench lights: error: --eps takes numbers or fractions, not '" << e << "'\n";
             return 1;
         }
         epsList.emplace_back(e, *v);
     }
-    if (!fs::exists(args.scene)) {
-        std::cerr << "asos bench lights: error: no scene '" << args.scene
-                  << "' (run from the repository root, or give --scene)\n";
+    const std::string scenePath = args.scene.empty() ? exampleScene("figure6.pov").string() : args.scene;
+    if (!fs::exists(scenePath)) {
+        std::cerr << "asos-bench lights: error: no scene '" << scenePath << "'\n";
         return 1;
     }
     if (!args.cache.empty()) fs::create_directories(args.cache);
@@ -159,7 +160,7 @@ int runBenchLights(const BenchLightsArgs& args) {
         options.imageHeight = args.height;
         options.defines.push_back({"Light", std::to_string(kind.light)});
         Diagnostics diagnostics;
-        std::optional<SceneDescription> d = lang::interpretFile(args.scene, options, diagnostics);
+        std::optional<SceneDescription> d = lang::interpretFile(scenePath, options, diagnostics);
         for (const Diagnostic& diag : diagnostics.all()) std::cerr << formatDiagnostic(diag);
         if (d && jitter)
             for (Light& l : d->lights)
@@ -178,7 +179,7 @@ int runBenchLights(const BenchLightsArgs& args) {
             try {
                 out = asos::render(d, s, diagnostics);
             } catch (const std::exception& e) {
-                std::cerr << "asos bench lights: error: " << e.what() << '\n';
+                std::cerr << "asos-bench lights: error: " << e.what() << '\n';
                 return std::nullopt;
             }
             for (const Diagnostic& diag : diagnostics.all()) std::cerr << formatDiagnostic(diag);
@@ -230,9 +231,9 @@ int runBenchLights(const BenchLightsArgs& args) {
         return run->image;
     };
 
-    std::printf("asos bench lights: %s at %dx%d, %d threads, ASOS eye method; error against the grid at "
+    std::printf("asos-bench lights: %s at %dx%d, %d threads, ASOS eye method; error against the grid at "
                 "%dx%d jittered points (%d along a linear light), linear RGB",
-                args.scene.c_str(), args.width, args.height, args.threads, args.reference, args.reference,
+                scenePath.c_str(), args.width, args.height, args.threads, args.reference, args.reference,
                 linearReference);
     if (args.behind)
         std::printf("; '*': against the same seen by %dx%d jittered eye rays per pixel, over the pixels "
@@ -300,9 +301,9 @@ int runBenchLights(const BenchLightsArgs& args) {
 
 }  // namespace
 
-void addBenchLightsCommand(CLI::App& bench, CommandResult& result) {
+void addLightsBenchmark(CLI::App& app, CommandResult& result) {
     auto args = std::make_shared<BenchLightsArgs>();
-    CLI::App* cmd = bench.add_subcommand(
+    CLI::App* cmd = app.add_subcommand(
         "lights", "Area light shadows: ASOS beams against the grid of point lights (time, rays, error)");
     cmd->add_option("--scene", args->scene, "Scene with a Light switch (default examples/figure6.pov)");
     cmd->add_option("-W,--width", args->width, "Image width (default 640)");
@@ -321,4 +322,4 @@ void addBenchLightsCommand(CLI::App& bench, CommandResult& result) {
     cmd->callback([args, &result] { result.exitCode = runBenchLights(*args); });
 }
 
-}  // namespace asos::cli
+}  // namespace asos::bench

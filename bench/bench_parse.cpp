@@ -1,4 +1,4 @@
-// asos bench parse [--max-exponent 6] [--povray] [--dir DIR]
+// asos-bench parse [--max-exponent 6] [--povray] [--dir DIR]
 // Writes scenes of 10^3 … 10^N spheres, written out one by one ("explicit")
 // and made by a #while loop ("loop"), then times scene text → description for
 // each: wall time, CPU time (user + system: steadier when the machine is
@@ -6,6 +6,9 @@
 // memory (the child's getrusage maxrss) is its own. With --povray, POV-Ray 3.7
 // parses the same files (`povray +W1 +H1 -D -F -GA +GS<file>`) and the parse
 // time it reports (wall and CPU) is shown with its peak memory.
+// The scenes are generated rather than kept in examples/: their size is the
+// workload (up to 10^7 spheres, hundreds of MiB), and both cases come from
+// the same formula, so the loop makes the spheres written out.
 #include <fcntl.h>
 #include <sys/resource.h>
 #include <sys/wait.h>
@@ -27,9 +30,9 @@
 
 #include "asos/diag/diagnostics.hpp"
 #include "asos/lang/interpreter.hpp"
-#include "cli/commands.hpp"
+#include "benchmarks.hpp"
 
-namespace asos::cli {
+namespace asos::bench {
 
 namespace {
 
@@ -66,7 +69,7 @@ void writeExplicit(const fs::path& path, long n) {
         const long x = i % 100, y = (i / 100) % 100, z = i / 10000;
         const int len = std::snprintf(line, sizeof line,
                                       "sphere { <%ld.25, %ld.5, %ld.75>, 0.%03ld pigment { rgb <%.3f, 0.5, %.3f> } }\n",
-                                      x, y, z, 100 + i % 300, (i % 7) / 7.0, (i % 11) / 11.0);
+                                      x, y, z, 100 + i % 300, static_cast<double>(i % 7) / 7.0, static_cast<double>(i % 11) / 11.0);
         out.write(line, len);
     }
 }
@@ -117,7 +120,7 @@ Measure measureInChild(const fs::path& scene) {
     m.seconds = report[0];
     m.objects = static_cast<std::size_t>(report[1]);
     m.cpuSeconds = report[2];
-    m.peakMiB = usage.ru_maxrss / 1024.0;
+    m.peakMiB = static_cast<double>(usage.ru_maxrss) / 1024.0;
     return m;
 }
 
@@ -158,13 +161,13 @@ std::optional<Measure> measurePovray(const fs::path& scene) {
     m.ok = WIFEXITED(status) && WEXITSTATUS(status) == 0;
     m.seconds = std::stod(match[1]);
     m.cpuSeconds = std::stod(match[2]);
-    m.peakMiB = usage.ru_maxrss / 1024.0;
+    m.peakMiB = static_cast<double>(usage.ru_maxrss) / 1024.0;
     return m;
 }
 
 int runBench(const BenchArgs& args) {
     if (args.maxExponent < 3 || args.maxExponent > 7) {
-        std::cerr << "asos bench parse: error: --max-exponent must be from 3 to 7\n";
+        std::cerr << "asos-bench parse: error: --max-exponent must be from 3 to 7\n";
         return 1;
     }
     std::error_code ec;
@@ -172,7 +175,7 @@ int runBench(const BenchArgs& args) {
                                           : fs::path(args.dir);
     fs::create_directories(dir, ec);
     if (ec) {
-        std::cerr << "asos bench parse: error: cannot create " << dir << ": " << ec.message() << '\n';
+        std::cerr << "asos-bench parse: error: cannot create " << dir << ": " << ec.message() << '\n';
         return 1;
     }
     std::cout << "scene text -> scene description (asos parse), one child process per case\n"
@@ -200,7 +203,7 @@ int runBench(const BenchArgs& args) {
             if (!ok) ++failures;
             std::cout << std::left << std::setw(10) << (loop ? "loop" : "explicit") << std::right
                       << std::setw(10) << n << std::setw(10) << std::fixed << std::setprecision(1)
-                      << fs::file_size(file, ec) / 1048576.0 << std::setw(10) << std::setprecision(3)
+                      << static_cast<double>(fs::file_size(file, ec)) / 1048576.0 << std::setw(10) << std::setprecision(3)
                       << m.seconds << std::setw(10) << m.cpuSeconds << std::setw(10) << std::setprecision(1)
                       << m.peakMiB;
             if (args.povray) {
@@ -221,13 +224,13 @@ int runBench(const BenchArgs& args) {
 
 }  // namespace
 
-void addBenchParseCommand(CLI::App& bench, CommandResult& result) {
+void addParseBenchmark(CLI::App& app, CommandResult& result) {
     auto args = std::make_shared<BenchArgs>();
-    CLI::App* cmd = bench.add_subcommand("parse", "Parse time and peak memory, 10^3 to 10^6 spheres");
+    CLI::App* cmd = app.add_subcommand("parse", "Parse time and peak memory, 10^3 to 10^6 spheres");
     cmd->add_option("--max-exponent", args->maxExponent, "Largest case is 10^N spheres (3 to 7)");
     cmd->add_flag("--povray", args->povray, "Also time POV-Ray 3.7 on the same files");
     cmd->add_option("--dir", args->dir, "Keep the generated scenes in this folder");
     cmd->callback([args, &result] { result.exitCode = runBench(*args); });
 }
 
-}  // namespace asos::cli
+}  // namespace asos::bench

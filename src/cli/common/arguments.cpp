@@ -1,4 +1,4 @@
-#include "cli/arguments.hpp"
+#include "cli/common/arguments.hpp"
 
 #include <cctype>
 #include <charconv>

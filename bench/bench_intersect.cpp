@@ -1,4 +1,4 @@
-// `asos bench intersect`: the paper's Table 3 ("Cone vs. ray intersection")
+// `asos-bench intersect`: the paper's Table 3 ("Cone vs. ray intersection")
 // on this machine. For each primitive: nanoseconds per nearest-hit ray test,
 // per cone classification, and their ratio; then how the cones were
 // classified and the spurious-marginal rate (a Marginal cone whose probe rays
@@ -25,9 +25,9 @@
 
 #include "asos/testing/cone_probe.hpp"
 #include "asos/shapes/primitive.hpp"
-#include "cli/commands.hpp"
+#include "benchmarks.hpp"
 
-namespace asos::cli {
+namespace asos::bench {
 namespace {
 
 class Rng {
@@ -244,7 +244,7 @@ double timeCones(const std::vector<Primitive>& objects, std::vector<Queries::Con
 
 int run(int queries, int repeat, int probes, std::uint64_t seed, const std::string& only,
         const std::string& mix) {
-    std::printf("asos bench intersect: %d queries per primitive, best of 40 interleaved rounds of %d "
+    std::printf("asos-bench intersect: %d queries per primitive, best of 40 interleaved rounds of %d "
                 "pass%s, each round in a fresh order; %d probed cones per primitive; %s placements\n\n",
                 queries, repeat, repeat == 1 ? "" : "es", probes, mix.c_str());
     std::printf("%-9s %9s %9s %12s %7s %7s\n", "primitive", "ray_ns", "cone_ns", "cone+trig_ns",
@@ -330,8 +330,8 @@ int run(int queries, int repeat, int probes, std::uint64_t seed, const std::stri
 
 }  // namespace
 
-void addBenchIntersectCommand(CLI::App& bench, CommandResult& result) {
-    CLI::App* cmd = bench.add_subcommand(
+void addIntersectBenchmark(CLI::App& app, CommandResult& result) {
+    CLI::App* cmd = app.add_subcommand(
         "intersect", "Ray test vs cone classification per primitive (the paper's Table 3)");
     struct Options {
         int queries = 8192;
@@ -365,4 +365,4 @@ void addBenchIntersectCommand(CLI::App& bench, CommandResult& result) {
     });
 }
 
-}  // namespace asos::cli
+}  // namespace asos::bench

@@ -1,4 +1,4 @@
-// `asos bench bvh`: BVH build time and single-thread nearest-hit rays per
+// `asos-bench bvh`: BVH build time and single-thread nearest-hit rays per
 // second on random spheres and random triangles, for camera rays (a pinhole
 // looking at the scene) and random rays (origins inside the scene's bounds,
 // directions uniform on the sphere), and the camera rays again in 8x8 pixel
@@ -28,9 +28,9 @@
 #include "asos/accel/bvh.hpp"
 #include "asos/diag/diagnostics.hpp"
 #include "asos/scene/scene.hpp"
-#include "cli/commands.hpp"
+#include "benchmarks.hpp"
 
-namespace asos::cli {
+namespace asos::bench {
 namespace {
 
 // Unit density: n items in a cube of side n^(1/3), each about 0.4 across.
@@ -213,7 +213,7 @@ ConeResult traceCones(const Scene& scene, const std::vector<Ray>& camera, std::s
             ++cones;
         }
         const double us = (threadSeconds() - start) * 1e6 / static_cast<double>(cones);
-        if (pass == 0 || us < best.microseconds) best = {us, double(visits) / cones};
+        if (pass == 0 || us < best.microseconds) best = {us, static_cast<double>(visits) / static_cast<double>(cones)};
     }
     return best;
 }
@@ -228,6 +228,11 @@ struct Settings {
     int passes = 3;
 };
 
+double perSecond(std::size_t count, double seconds) { return static_cast<double>(count) / seconds; }
+double percent(std::size_t part, std::size_t whole) {
+    return 100.0 * static_cast<double>(part) / static_cast<double>(whole);
+}
+
 // Build time is Scene::build's: the primitives and the BVH over them.
 void benchScene(const char* name, std::vector<Object> objects, const Settings& settings,
                 std::mt19937_64& rng) {
@@ -239,7 +244,7 @@ void benchScene(const char* name, std::vector<Object> objects, const Settings& s
     const std::unique_ptr<Scene> scene = Scene::build(std::move(description), diagnostics);
     const double buildSeconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - buildStart).count();
-    if (!scene) throw std::runtime_error("bench bvh: a generated object was rejected");
+    if (!scene) throw std::runtime_error("asos-bench bvh: a generated object was rejected");
     const Bvh& bvh = scene->bvh();
 
     const auto camera = cameraRays(bvh.bounds(), settings.imageWidth);
@@ -247,7 +252,7 @@ void benchScene(const char* name, std::vector<Object> objects, const Settings& s
     const TraceResult c = trace(*scene, camera, settings.passes);
     const TraceResult p = tracePackets(*scene, camera, settings.imageWidth, settings.passes);
     if (p.hits != c.hits || p.checksum != c.checksum)
-        throw std::runtime_error("bench bvh: the packet pass's hits differ from the single-ray pass's (" +
+        throw std::runtime_error("asos-bench bvh: the packet pass's hits differ from the single-ray pass's (" +
                                  std::to_string(p.hits) + " hits, checksum " +
                                  std::to_string(p.checksum) + " against " + std::to_string(c.hits) +
                                  ", " + std::to_string(c.checksum) + ")");
@@ -255,14 +260,14 @@ void benchScene(const char* name, std::vector<Object> objects, const Settings& s
     const ConeResult cones = traceCones(*scene, camera, settings.coneCount, settings.passes);
     std::printf("%-10s %9zu %9.3f %9zu %6d %11.2f %7.1f%% %11.2f %11.2f %7.1f%% %9.2f %7.1f   %.6g\n",
                 name, count, buildSeconds, bvh.nodeCount(), bvh.depth(),
-                camera.size() / c.seconds * 1e-6, 100.0 * c.hits / camera.size(),
-                camera.size() / p.seconds * 1e-6,
-                random.size() / r.seconds * 1e-6, 100.0 * r.hits / random.size(),
+                perSecond(camera.size(), c.seconds) * 1e-6, percent(c.hits, camera.size()),
+                perSecond(camera.size(), p.seconds) * 1e-6,
+                perSecond(random.size(), r.seconds) * 1e-6, percent(r.hits, random.size()),
                 cones.microseconds, cones.visits, c.checksum + r.checksum);
 }
 
 int run(const Settings& settings) {
-    std::printf("asos bench bvh: nearest hit, one thread tracing (rays/s from its CPU time); "
+    std::printf("asos-bench bvh: nearest hit, one thread tracing (rays/s from its CPU time); "
                 "build on %d threads (wall time)\n",
                 tbb::info::default_concurrency());
     std::printf("camera: %dx%d pinhole rays; random: %zu rays from inside the bounds; "
@@ -293,9 +298,9 @@ int run(const Settings& settings) {
 
 }  // namespace
 
-void addBenchBvhCommand(CLI::App& bench, CommandResult& result) {
+void addBvhBenchmark(CLI::App& app, CommandResult& result) {
     auto settings = std::make_shared<Settings>();
-    CLI::App* cmd = bench.add_subcommand("bvh", "BVH build time and nearest-hit rays per second");
+    CLI::App* cmd = app.add_subcommand("bvh", "BVH build time and nearest-hit rays per second");
     cmd->add_option("--sizes", settings->sizes, "item counts")->delimiter(',');
     cmd->add_option("--width", settings->imageWidth, "camera image width and height (rays = width^2)")
         ->check(CLI::Range(1, 8192));
@@ -309,4 +314,4 @@ void addBenchBvhCommand(CLI::App& bench, CommandResult& result) {
     cmd->callback([settings, &result] { result.exitCode = run(*settings); });
 }
 
-}  // namespace asos::cli
+}  // namespace asos::bench
