@@ -14,8 +14,8 @@
 #   --only    the tables to regenerate (default: all)
 #   --output  where the rewritten document goes (default: --file itself)
 #
-# The benchmark program is ${ASOS_BENCH:-build/asos-bench} (words are split, so
-# ASOS_BENCH="build/asos bench" runs the subcommands of the asos program); the
+# The benchmark program is ${ASOS_BENCH:-build/asos-bench} (its value is split
+# into words, so a wrapper with arguments can stand in for it); the
 # POV-Ray comparison renders with the asos program of the same build
 # (scripts/compare-povray.sh) and needs povray and idiff. Only a Release build
 # is accepted: figures from another build type measure the wrong thing.
@@ -167,11 +167,11 @@ table_intersect() {
 table_render() {
   local size=() repeat=(--repeat 3) name scene args content
   [[ $quick == 1 ]] && size=(-W 160 -H 120) repeat=(--repeat 1)
-  for scene in primitives spheres; do
+  for scene in examples/default.pov examples/bench/spheres.pov; do
     name=render
-    [[ $scene == spheres ]] && name=render-spheres
+    [[ $scene == */spheres.pov ]] && name=render-spheres
     content=$work/$name.md
-    args=(render --builtin "$scene" "${size[@]}" "${repeat[@]}")
+    args=(render "$scene" "${size[@]}" "${repeat[@]}")
     run_bench "$work/$name.log" "${args[@]}"
     { provenance "${bench_name} ${args[*]}"; echo; spaced_table "method " "" <"$work/$name.log"; } >"$content"
     replace_block "$name" "$content"
@@ -214,9 +214,9 @@ table_povray() {
   # The default scene once more with a plain floor: the error of outlines alone.
   sed 's/pigment { checker color rgb 0.85, color rgb 0.3 }/pigment { color rgb 0.75 }/' examples/default.pov >"$plain"
   cmp -s examples/default.pov "$plain" && fail "examples/default.pov has no checkered floor to replace"
-  local scenes=("examples/default.pov" "$plain" "tests/golden/povray/primitives.pov" "examples/spheres.pov")
+  local scenes=("examples/default.pov" "$plain" "tests/golden/povray/primitives.pov" "examples/bench/spheres.pov")
   local labels=("\`examples/default.pov\`" "the same with a plain floor (\`pigment { color rgb 0.75 }\`)"
-                "\`tests/golden/povray/primitives.pov\`" "1600 spheres (\`examples/spheres.pov\`)")
+                "\`tests/golden/povray/primitives.pov\`" "1600 spheres (\`examples/bench/spheres.pov\`)")
   {
     provenance "scripts/compare-povray.sh ${size[*]} SCENE"; echo
     echo "| scene | comparison | mean | max | > 0.004 |"
