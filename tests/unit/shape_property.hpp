@@ -17,6 +17,7 @@
 #include <sstream>
 #include <string>
 
+#include "asos/geometry/frame.hpp"
 #include "asos/shapes/primitive.hpp"
 #include "asos/testing/cone_probe.hpp"
 #include "asos/testing/rng.hpp"
