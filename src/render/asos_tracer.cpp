@@ -40,15 +40,6 @@ bool overlapsAnother(const std::vector<Item>& items, std::uint32_t first, std::u
     return false;
 }
 
-// The index of a K-pyray's random numbers: its level and position.
-std::uint64_t subPosition(int level, std::uint32_t ix, std::uint32_t iy) {
-    return std::uint64_t(level) << 48 | std::uint64_t(iy) << 24 | ix;
-}
-
-Vec2 pointInSquare(const ImageSquare& sq, const Vec2& xi) {
-    return {sq.u0 + xi.x * (sq.u1 - sq.u0), sq.v0 + xi.y * (sq.v1 - sq.v0)};
-}
-
 }  // namespace
 
 AsosTracer::AsosTracer(const RayTracer& tracer, const CameraModel& camera,
@@ -80,9 +71,7 @@ AsosTracer::AsosTracer(const RayTracer& tracer, const CameraModel& camera,
         const Vec3 dir = glm::normalize(camera_.direction());
         double farthest = 0.0;
         for (int corner = 0; corner < 8; ++corner) {
-            const Vec3 p((corner & 1) ? b.hi.x : b.lo.x, (corner & 2) ? b.hi.y : b.lo.y,
-                         (corner & 4) ? b.hi.z : b.lo.z);
-            farthest = std::max(farthest, glm::dot(p - camera_.location(), dir));
+            farthest = std::max(farthest, glm::dot(b.corner(corner) - camera_.location(), dir));
         }
         // Camera ray origins lie in the plane through the location spanned by
         // right and up, which may lean on the direction: allow for its slope.
@@ -325,8 +314,7 @@ PixelResult AsosTracer::trace(int px, int py, AsosScratch& s, RenderCounters& c,
             for (const AsosScratch::Node& n : nodes) {
                 ++leaves;
                 if (jitter) {
-                    const Vec2 p = pointInSquare(
-                        n.pyray.square(),
+                    const Vec2 p = n.pyray.square().pointAt(
                         rng.uniform2(SampleStream::AsosJitter, subPosition(level, n.ix, n.iy)));
                     const Ray ray = camera_.ray(p.x, p.y);
                     ++c.eyeRays;
@@ -353,8 +341,8 @@ PixelResult AsosTracer::trace(int px, int py, AsosScratch& s, RenderCounters& c,
                     const ImageSquare sq = n.pyray.square().quarter(quarter);
                     const std::uint32_t ix = 2 * n.ix + (quarter & 1), iy = 2 * n.iy + (quarter >> 1);
                     const Vec2 p = settings.jitter
-                                       ? pointInSquare(sq, rng.uniform2(SampleStream::AsosJitter,
-                                                                        subPosition(childLevel, ix, iy)))
+                                       ? sq.pointAt(rng.uniform2(SampleStream::AsosJitter,
+                                                                 subPosition(childLevel, ix, iy)))
                                        : Vec2(sq.uMid(), sq.vMid());
                     const Ray ray = camera_.ray(p.x, p.y);
                     ++pyrays;
