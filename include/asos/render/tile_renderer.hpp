@@ -15,7 +15,7 @@
 #include <string_view>
 
 #include "asos/geometry/vec.hpp"
-#include "asos/render/image.hpp"
+#include "asos/image/image.hpp"
 #include "asos/render/stats.hpp"
 #include "asos/util/function_ref.hpp"
 
