@@ -24,28 +24,12 @@
 #include <vector>
 
 #include "asos/testing/cone_probe.hpp"
+#include "asos/testing/rng.hpp"
 #include "asos/shapes/primitive.hpp"
 #include "benchmarks.hpp"
 
 namespace asos::bench {
 namespace {
-
-class Rng {
-public:
-    explicit Rng(std::uint64_t seed) : engine_(seed) {}
-    double uniform(double a = 0.0, double b = 1.0) {
-        return a + (b - a) * static_cast<double>(engine_() >> 11) * 0x1p-53;
-    }
-    bool chance(double p) { return uniform() < p; }
-    Vec3 unitVector() {
-        const double z = uniform(-1.0, 1.0), phi = uniform(0.0, 2.0 * kPi);
-        const double r = std::sqrt(std::max(0.0, 1.0 - z * z));
-        return {r * std::cos(phi), r * std::sin(phi), z};
-    }
-
-private:
-    std::mt19937_64 engine_;
-};
 
 struct Kind {
     const char* name;

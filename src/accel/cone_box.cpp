@@ -48,10 +48,6 @@ constexpr double kAngleSlack = 1e-12;
 // outward by this much, far above their rounding (a few 1e-16).
 constexpr double kValueSlack = 1e-15;
 
-double maxAbs(const Vec3& v) {
-    return std::max({std::abs(v.x), std::abs(v.y), std::abs(v.z)});
-}
-
 // t * u over the cone's distances, where t may be infinite and u zero.
 double extremeProduct(double t, double u) { return u == 0.0 ? 0.0 : t * u; }
 
@@ -68,7 +64,7 @@ ConeBoxTest::ConeBoxTest(const Cone& cone) : cone_(cone) {
     cone_.tMin = std::max(cone.tMin, 0.0);
     cos_ = std::cos(cone_.halfAngle);
     sin_ = std::sin(cone_.halfAngle);
-    apexScale_ = maxAbs(cone_.apex);
+    apexScale_ = maxNorm(cone_.apex);
     const Vec3& w = cone_.axis;
     // A unit vector orthogonal to w: the cross product with the coordinate
     // axis least aligned with w is well conditioned.
@@ -158,7 +154,7 @@ double ConeBoxTest::entryDistance(const Bounds3& box) const {
     if (empty_) return kInfinity;
     const double tScale = std::isfinite(cone_.tMax) ? cone_.tMax : cone_.tMin;
     const double slack =
-        kSlackRelative * (apexScale_ + std::max(maxAbs(box.lo), maxAbs(box.hi)) + tScale) +
+        kSlackRelative * (apexScale_ + std::max(maxNorm(box.lo), maxNorm(box.hi)) + tScale) +
         1e-300;
 
     // 1. The cone's axis-aligned bounds.

@@ -22,9 +22,9 @@
 #include <vector>
 
 #include "asos/diag/diagnostics.hpp"
+#include "asos/image/aov.hpp"
 #include "asos/image/image_io.hpp"
 #include "asos/lang/interpreter.hpp"
-#include "asos/render/aov.hpp"
 #include "asos/render/renderer.hpp"
 #include "cli/common/arguments.hpp"
 #include "cli/commands.hpp"

@@ -13,6 +13,7 @@
 
 #include "asos/lang/ast.hpp"
 #include "asos/lang/interpreter.hpp"
+#include "asos/util/function_ref.hpp"
 
 namespace asos::lang {
 
@@ -98,20 +99,7 @@ struct Abandon {};
 // Interpretation stops (#error, too many errors, a syntax error in an include).
 struct Stop {};
 
-// A non-owning reference to a callable, for the entry handlers of blocks.
-template <typename Signature>
-class FunctionRef;
-template <typename R, typename... Args>
-class FunctionRef<R(Args...)> {
-public:
-    template <typename F>
-    FunctionRef(F& f) : object_(&f), call_([](void* o, Args... a) -> R { return (*static_cast<F*>(o))(a...); }) {}
-    R operator()(Args... a) const { return call_(object_, a...); }
-
-private:
-    void* object_;
-    R (*call_)(void*, Args...);
-};
+// The entry handler of a block, called for each of its entries.
 using EntryHandler = FunctionRef<void(const Node&)>;
 
 // Objects as they arrive. First into a vector reserved for as many objects as

@@ -5,6 +5,7 @@
 #include <type_traits>
 
 #include "asos/geometry/beam.hpp"
+#include "asos/geometry/frame.hpp"
 #include "asos/render/convex_lattice.hpp"
 #include "asos/shapes/local_cone.hpp"
 

@@ -10,6 +10,7 @@ namespace asos {
 namespace {
 
 using Item = AsosScratch::Item;
+using Node = AsosScratch::Node;
 
 // Drops, in place and in order, the objects of items[first, end) that lie
 // wholly behind a Full object (their nearest depth beyond its farthest): no
@@ -38,15 +39,6 @@ bool overlapsAnother(const std::vector<Item>& items, std::uint32_t first, std::u
         if (b.tNear <= a.tFar && a.tNear <= b.tFar) return true;
     }
     return false;
-}
-
-// The index of a K-pyray's random numbers: its level and position.
-std::uint64_t subPosition(int level, std::uint32_t ix, std::uint32_t iy) {
-    return std::uint64_t(level) << 48 | std::uint64_t(iy) << 24 | ix;
-}
-
-Vec2 pointInSquare(const ImageSquare& sq, const Vec2& xi) {
-    return {sq.u0 + xi.x * (sq.u1 - sq.u0), sq.v0 + xi.y * (sq.v1 - sq.v0)};
 }
 
 }  // namespace
@@ -80,9 +72,7 @@ AsosTracer::AsosTracer(const RayTracer& tracer, const CameraModel& camera,
         const Vec3 dir = glm::normalize(camera_.direction());
         double farthest = 0.0;
         for (int corner = 0; corner < 8; ++corner) {
-            const Vec3 p((corner & 1) ? b.hi.x : b.lo.x, (corner & 2) ? b.hi.y : b.lo.y,
-                         (corner & 4) ? b.hi.z : b.lo.z);
-            farthest = std::max(farthest, glm::dot(p - camera_.location(), dir));
+            farthest = std::max(farthest, glm::dot(b.corner(corner) - camera_.location(), dir));
         }
         // Camera ray origins lie in the plane through the location spanned by
         // right and up, which may lean on the direction: allow for its slope.
@@ -95,24 +85,335 @@ AsosTracer::AsosTracer(const RayTracer& tracer, const CameraModel& camera,
     }
 }
 
+// One pixel's trace, in the paper's phases: detect() forms the pixel's list
+// and settles its 0-pyray; each level of the subdivision is tallied by
+// decide() and either stops (shadeStopped, shadeMaxPyrays) or is split into
+// the next by subdivide(); settle() decides each fresh pyray, a leaf or a
+// marginal pyray of the next decision. Holds the pixel's running sums.
+class AsosTracer::PixelTrace {
+public:
+    PixelTrace(const AsosTracer& tracer, int px, int py, AsosScratch& scratch,
+               RenderCounters& counters, AsosPixelReport* report)
+        : asos_(tracer), tracer_(tracer.tracer_), scene_(tracer.scene_), camera_(tracer.camera_),
+          px_(px), py_(py), rng_(tracer.seed_, px, py), s_(scratch), c_(counters), report_(report),
+          background_(backgroundColor(scene_.description())) {}
+
+    PixelResult run();
+
+private:
+    // One level's buffers: the lists of its pyrays (items, and per item
+    // whether the pyray's K-ray hits the object) and its marginal pyrays.
+    struct LevelBuffers {
+        std::vector<Item>& items;
+        std::vector<std::uint8_t>& hits;
+        std::vector<Node>& nodes;
+    };
+    LevelBuffers buffers(int slot) { return {s_.items[slot], s_.hits[slot], s_.nodes[slot]}; }
+
+    // What a level's tally decided, at the finest settings among the objects
+    // it involved.
+    struct LevelDecision {
+        bool stop;
+        AsosSettings settings;
+    };
+
+    std::optional<Vec3> detect(const EyePyray& pixel, LevelBuffers to);
+    std::optional<Vec3> settle(const EyePyray& pyray, int level, std::uint32_t ix, std::uint32_t iy,
+                               LevelBuffers to, std::uint32_t first);
+    LevelDecision decide(int level, LevelBuffers from);
+    void subdivide(int level, double weight, LevelBuffers from, LevelBuffers to);
+    void shadeStopped(int level, double weight, const AsosSettings& settings, LevelBuffers from);
+    void shadeMaxPyrays(int level, double weight, bool jitter, LevelBuffers from);
+
+    std::optional<SurfaceHit> frontHit(const EyePyray& pyray, const Item& front) const;
+    PatternChange patternEdge(const EyePyray& pyray, const Item& front,
+                              const std::optional<SurfaceHit>& hit) const;
+    Ray jitteredRay(const ImageSquare& square, int level, std::uint32_t ix, std::uint32_t iy) const;
+    Vec3 pointSample(const ImageSquare& square, int level, std::uint32_t ix, std::uint32_t iy,
+                     const Ray& ray, const std::vector<Item>& items, const Node& parent);
+    Vec3 shadeLeaf(const ImageSquare& square, int level, std::uint32_t ix, std::uint32_t iy,
+                   const Ray& ray, const std::optional<SurfaceHit>& hit);
+    std::optional<SurfaceHit> nearestInList(const Ray& ray, const std::vector<Item>& items,
+                                            std::uint32_t first, std::uint32_t count,
+                                            std::uint8_t* marks);
+    PixelResult finish() const {
+        if (report_) report_->leaves = leaves_;
+        return PixelResult{color_, pyrays_, static_cast<std::uint32_t>(deepest_)};
+    }
+
+    const AsosTracer& asos_;
+    const RayTracer& tracer_;
+    const Scene& scene_;
+    const CameraModel& camera_;
+    int px_, py_;
+    PixelRandom rng_;
+    AsosScratch& s_;
+    RenderCounters& c_;
+    AsosPixelReport* report_;
+    Vec3 background_;
+    Vec3 color_{0.0};
+    std::uint32_t pyrays_ = 0;
+    int deepest_ = 0, leaves_ = 0;
+};
+
 PixelResult AsosTracer::tracePixel(int x, int y, AsosScratch& scratch, RenderCounters& counters) const {
-    return trace(x, y, scratch, counters, nullptr);
+    return PixelTrace(*this, x, y, scratch, counters, nullptr).run();
 }
 
 AsosPixelReport AsosTracer::tracePixelReport(int x, int y, AsosScratch& scratch,
                                              RenderCounters& counters) const {
     AsosPixelReport report;
-    report.result = trace(x, y, scratch, counters, &report);
+    report.result = PixelTrace(*this, x, y, scratch, counters, &report).run();
     return report;
 }
 
-std::optional<SurfaceHit> AsosTracer::nearestInList(const Ray& ray, const std::vector<Item>& items,
-                                                    std::uint32_t first, std::uint32_t count,
-                                                    std::uint8_t* marks,
-                                                    RenderCounters& counters) const {
+PixelResult AsosTracer::PixelTrace::run() {
+    const ImageSquare pixel{double(px_), double(py_), px_ + 1.0, py_ + 1.0};
+    const EyePyray root = EyePyray::make([this](double u, double v) { return camera_.ray(u, v); },
+                                         pixel, 0, kPovMinIsectDepth, asos_.eyeTMax_);
+    if (const std::optional<Vec3> leaf = detect(root, buffers(0))) {
+        color_ = *leaf;
+        return finish();
+    }
+    // The subdivision phase, all marginal pyrays of a level together; the
+    // buffers of a level and of the next alternate.
+    int cur = 0;
+    for (int level = 0;; ++level) {
+        const LevelBuffers from = buffers(cur);
+        const double weight = std::ldexp(1.0, -2 * level);
+        const LevelDecision decision = decide(level, from);
+        if (decision.stop) {
+            shadeStopped(level, weight, decision.settings, from);
+            break;
+        }
+        const int childLevel = level + 1;
+        deepest_ = childLevel;
+        if (childLevel >= decision.settings.maxLevel) {
+            shadeMaxPyrays(childLevel, 0.25 * weight, decision.settings.jitter, from);
+            break;
+        }
+        const int next = 1 - cur;
+        subdivide(childLevel, 0.25 * weight, from, buffers(next));
+        if (s_.nodes[next].empty()) break;
+        cur = next;
+    }
+    return finish();
+}
+
+// "Detection Phase": the pixel's 0-pyray against the objects the BVH offers
+// gives the pixel's list, which every subpyray is tested against.
+std::optional<Vec3> AsosTracer::PixelTrace::detect(const EyePyray& pixel, LevelBuffers to) {
+    ++pyrays_;
+    c_.countPyray(0);
+    to.items.clear();
+    to.hits.clear();
+    to.nodes.clear();
+    const PreparedCone cone(pixel.cone());
+    auto test = [&](std::uint32_t object) {
+        ++c_.coneTests;
+        const ConeClass k = scene_.primitive(object).classify(cone);
+        if (k.coverage != Coverage::Miss) to.items.push_back({object, k});
+    };
+    // Neighbouring pixels' cones share the eye as apex: a remembered wider
+    // cone's objects serve them (perspective cameras; orthographic pyrays
+    // have an apex each).
+    if (camera_.orthographic()) scene_.coneCandidates(pixel.cone(), test);
+    else s_.eyeCandidates.visit(scene_, pixel.cone(), test);
+    sortByObject(to.items.data(), to.items.data() + to.items.size());
+    return settle(pixel, 0, 0, 0, to, 0);
+}
+
+// A pyray whose objects are to.items[first, end): with those wholly hidden
+// dropped, none left is background and one Full object in front of all
+// covers the pyray ("this object covers the entire pixel and shading can be
+// performed"): a leaf, whose colour is returned. Otherwise the pyray is
+// marginal (or one object's pattern may change in it) and joins the level's
+// nodes, with its K-ray traced against its list for the tally.
+std::optional<Vec3> AsosTracer::PixelTrace::settle(const EyePyray& pyray, int level,
+                                                   std::uint32_t ix, std::uint32_t iy,
+                                                   LevelBuffers to, std::uint32_t first) {
+    const std::uint32_t count = pruneHidden(to.items, first);
+    to.hits.resize(to.items.size(), 0);
+    if (count == 0) {
+        ++leaves_;
+        return background_;
+    }
+    if (count == 1 && to.items[first].cls.coverage == Coverage::Full) {
+        const Item& front = to.items[first];
+        std::optional<SurfaceHit> hit = frontHit(pyray, front);
+        const PatternChange pattern = patternEdge(pyray, front, hit);
+        if (!pattern.mayChange) {
+            ++leaves_;
+            return shadeLeaf(pyray.square(), level, ix, iy, pyray.centralRay(), hit);
+        }
+        to.hits[first] = 1;
+        to.nodes.push_back({pyray, ix, iy, first, count, std::move(hit), pattern});
+        return std::nullopt;
+    }
+    ++c_.eyeRays;
+    std::optional<SurfaceHit> hit =
+        nearestInList(pyray.centralRay(), to.items, first, count, to.hits.data());
+    to.nodes.push_back({pyray, ix, iy, first, count, std::move(hit), {}});
+    return std::nullopt;
+}
+
+// "Subdivision Phase", the decision: the tally of each marginal K-pyray
+// against each object it is marginal on (in: its K-ray hits it), and of the
+// Full objects that interpenetrate another (in: its K-ray sees them), gives
+// the paper's bound on the change another level could make, L / 2^2K, or
+// half that where every pyray of an object is near one edge of it
+// ("Proximity to One Edge"); the level stops when the bound is within EPS or
+// the level is MAX.
+AsosTracer::PixelTrace::LevelDecision AsosTracer::PixelTrace::decide(int level, LevelBuffers from) {
+    s_.tally.clear();
+    AsosSettings settings = AsosSettings::coarsest();
+    for (const Node& n : from.nodes)
+        for (std::uint32_t i = n.first; i < n.first + n.count; ++i) {
+            const std::uint32_t object = from.items[i].object;
+            const ConeClass& k = from.items[i].cls;
+            if (k.coverage == Coverage::Marginal) {
+                s_.tally.add(object, from.hits[i] != 0, k.singleEdge);
+            } else if (overlapsAnother(from.items, n.first, n.count, i)) {
+                s_.tally.add(object, n.hit && n.hit->objectIndex == static_cast<int>(object), false);
+            } else if (n.pattern.mayChange) {
+                // in: the K-ray sees the pattern's second colour.
+                s_.tally.add(object,
+                             n.hit && pigmentIndex(textureOf(scene_.object(object)).pigment,
+                                                   n.hit->position) == 1,
+                             n.pattern.singleEdge);
+            } else {
+                continue;
+            }
+            settings = settings.finest(asos_.objectSettings_[object]);
+        }
+    const double bound = s_.tally.changeBound(level);
+    if (report_) {
+        AsosLevelReport r;
+        r.level = level;
+        r.marginal = static_cast<int>(from.nodes.size());
+        for (const SubdivisionTally::Entry& e : s_.tally.entries()) {
+            r.in += e.in;
+            r.out += e.out;
+        }
+        r.bound = bound;
+        r.settings = settings;
+        report_->levels.push_back(r);
+    }
+    return {level >= settings.maxLevel || bound <= settings.eps, settings};
+}
+
+// "Subdivision Phase", the split: each marginal pyray into four subpyrays,
+// each tested against its parent's objects only ("that list has already been
+// formed"), then settled.
+void AsosTracer::PixelTrace::subdivide(int level, double weight, LevelBuffers from,
+                                       LevelBuffers to) {
+    to.items.clear();
+    to.hits.clear();
+    to.nodes.clear();
+    for (const Node& n : from.nodes) {
+        const std::array<EyePyray, 4> children =
+            n.pyray.split([this](double u, double v) { return camera_.ray(u, v); });
+        for (int quarter = 0; quarter < 4; ++quarter) {
+            const EyePyray& child = children[quarter];
+            const std::uint32_t ix = 2 * n.ix + (quarter & 1), iy = 2 * n.iy + (quarter >> 1);
+            ++pyrays_;
+            c_.countPyray(level);
+            const auto first = static_cast<std::uint32_t>(to.items.size());
+            const PreparedCone cone(child.cone());
+            for (std::uint32_t i = n.first; i < n.first + n.count; ++i) {
+                ++c_.coneTests;
+                const ConeClass k = scene_.primitive(from.items[i].object).classify(cone);
+                if (k.coverage != Coverage::Miss) to.items.push_back({from.items[i].object, k});
+            }
+            if (const std::optional<Vec3> leaf = settle(child, level, ix, iy, to, first))
+                color_ += weight * *leaf;
+        }
+    }
+}
+
+// The stop: each marginal K-pyray is a leaf shaded with its K-ray, or, at
+// MAX with jitter, with a random ray inside it ("Jittering of MAX-rays").
+void AsosTracer::PixelTrace::shadeStopped(int level, double weight, const AsosSettings& settings,
+                                          LevelBuffers from) {
+    const bool jitter = settings.jitter && level >= settings.maxLevel;
+    for (const Node& n : from.nodes) {
+        ++leaves_;
+        const ImageSquare& square = n.pyray.square();
+        color_ += weight *
+                  (jitter ? pointSample(square, level, n.ix, n.iy,
+                                        jitteredRay(square, level, n.ix, n.iy), from.items, n)
+                          : shadeLeaf(square, level, n.ix, n.iy, n.pyray.centralRay(), n.hit));
+    }
+}
+
+// "Jittering of MAX-rays": a MAX-pyray needs no detection, it is one point
+// sample, its central ray or, with jitter, a random ray inside it.
+void AsosTracer::PixelTrace::shadeMaxPyrays(int level, double weight, bool jitter,
+                                            LevelBuffers from) {
+    for (const Node& n : from.nodes)
+        for (int quarter = 0; quarter < 4; ++quarter) {
+            const ImageSquare square = n.pyray.square().quarter(quarter);
+            const std::uint32_t ix = 2 * n.ix + (quarter & 1), iy = 2 * n.iy + (quarter >> 1);
+            const Ray ray = jitter ? jitteredRay(square, level, ix, iy)
+                                   : camera_.ray(square.uMid(), square.vMid());
+            ++pyrays_;
+            ++leaves_;
+            c_.countPyray(level);
+            color_ += weight * pointSample(square, level, ix, iy, ray, from.items, n);
+        }
+}
+
+// The central ray of a pyray resolved by one Full object in front of
+// everything else must hit that object ("additional eye rays through this
+// pixel can only strike this object").
+std::optional<SurfaceHit> AsosTracer::PixelTrace::frontHit(const EyePyray& pyray,
+                                                           const Item& front) const {
+    const Ray& ray = pyray.centralRay();
+    ++c_.eyeRays;
+    ++c_.rayTests;
+    std::optional<SurfaceHit> hit =
+        scene_.primitive(front.object).intersect(ray, kPovMinIsectDepth, kInfinity);
+    if (hit) hit->objectIndex = static_cast<int>(front.object);
+    else hit = tracer_.nearestHit(ray);  // rounding at the cone's rim: ask the scene
+    return hit;
+}
+
+// Whether the front object's pigment pattern may change inside the pyray's
+// footprint (an edge of the texture rather than of the object).
+PatternChange AsosTracer::PixelTrace::patternEdge(const EyePyray& pyray, const Item& front,
+                                                  const std::optional<SurfaceHit>& hit) const {
+    if (!asos_.patternEdges_ || !asos_.patterned_[front.object] || !hit ||
+        hit->objectIndex != static_cast<int>(front.object))
+        return PatternChange{};
+    const Footprint footprint(camera_, pyray.square(), hit->position, hit->normal, hit->t);
+    return pigmentMayChange(textureOf(scene_.object(front.object)).pigment, footprint);
+}
+
+Ray AsosTracer::PixelTrace::jitteredRay(const ImageSquare& square, int level, std::uint32_t ix,
+                                        std::uint32_t iy) const {
+    const Vec2 p =
+        square.pointAt(rng_.uniform2(SampleStream::AsosJitter, subPosition(level, ix, iy)));
+    return camera_.ray(p.x, p.y);
+}
+
+// A leaf's point sample by `ray` against its parent's objects.
+Vec3 AsosTracer::PixelTrace::pointSample(const ImageSquare& square, int level, std::uint32_t ix,
+                                         std::uint32_t iy, const Ray& ray,
+                                         const std::vector<Item>& items, const Node& parent) {
+    ++c_.eyeRays;
+    const std::optional<SurfaceHit> hit =
+        nearestInList(ray, items, parent.first, parent.count, nullptr);
+    return shadeLeaf(square, level, ix, iy, ray, hit);
+}
+
+std::optional<SurfaceHit> AsosTracer::PixelTrace::nearestInList(const Ray& ray,
+                                                                const std::vector<Item>& items,
+                                                                std::uint32_t first,
+                                                                std::uint32_t count,
+                                                                std::uint8_t* marks) {
     std::optional<SurfaceHit> nearest;
     for (std::uint32_t i = first; i < first + count; ++i) {
-        ++counters.rayTests;
+        ++c_.rayTests;
         // With marks to keep, every object is asked whether the ray hits it
         // at all; without, only for a hit nearer than the best so far.
         const double tMax = marks || !nearest ? kInfinity : nearest->t;
@@ -127,23 +428,25 @@ std::optional<SurfaceHit> AsosTracer::nearestInList(const Ray& ray, const std::v
     return nearest;
 }
 
-Vec3 AsosTracer::shadeLeaf(const ImageSquare& square, int level, std::uint32_t ix, std::uint32_t iy,
-                           const Ray& ray, const std::optional<SurfaceHit>& hit,
-                           const PixelRandom& rng, AsosScratch& scratch,
-                           RenderCounters& counters) const {
-    if (!hit) return backgroundColor(scene_.description());
+// A leaf's colour: its ray shaded, point lights shadowed by shadow pyrays
+// through the leaf's footprint ("Antialiased Point Light Sources"), area
+// lights by shadow beams from the shaded point.
+Vec3 AsosTracer::PixelTrace::shadeLeaf(const ImageSquare& square, int level, std::uint32_t ix,
+                                       std::uint32_t iy, const Ray& ray,
+                                       const std::optional<SurfaceHit>& hit) {
+    if (!hit) return background_;
     std::optional<Footprint> footprint;  // made when a light first needs it
     LightSample storage;
     // Area lights: shadow beams from the shaded point (render/area_light.hpp),
     // with random numbers of this leaf's own.
-    LightContext context{&scratch.area, rng, subPosition(level, ix, iy), nullptr};
+    LightContext context{&s_.area, rng_, subPosition(level, ix, iy), nullptr};
     auto lightArriving = [&](const ShadingPoint& p) -> std::span<const LightSample> {
         const Light& light = *p.light;
         if (tracer_.sceneLights()[static_cast<std::size_t>(p.lightIndex)].isArea()) {
             if (tracer_.sceneLights().setup().apex == ShadowApex::Behind && !footprint)
                 footprint.emplace(camera_, square, hit->position, hit->normal, hit->t);
             context.footprint = footprint ? &*footprint : nullptr;
-            return tracer_.areaLightSamples(p, context, counters);
+            return tracer_.areaLightSamples(p, context, c_);
         }
         if (!facesLight(p.position, p.normal, light.position)) return {};
         double lit = 1.0;
@@ -152,276 +455,27 @@ Vec3 AsosTracer::shadeLeaf(const ImageSquare& square, int level, std::uint32_t i
             PointShadowQuery query;
             query.lightPosition = light.position;
             query.lightIndex = static_cast<std::size_t>(p.lightIndex);
-            query.settings = lightSettings_[static_cast<std::size_t>(p.lightIndex)];
+            query.settings = asos_.lightSettings_[static_cast<std::size_t>(p.lightIndex)];
             query.shadedObject = static_cast<std::uint32_t>(hit->objectIndex);
             // An open tube is the boundary of a convex solid: its outer side,
             // like any convex surface, shadows itself only through N.L <= 0.
             // Only its inner side, seen through an opening (the normal
             // turned toward the viewer points inward), can be in its own
             // shadow.
-            query.shadedCanSelfShadow = selfShadowing_[query.shadedObject] != 0 &&
+            query.shadedCanSelfShadow = asos_.selfShadowing_[query.shadedObject] != 0 &&
                                         glm::dot(p.normal, hit->normal) < 0.0;
             query.level = level;
             query.ix = ix;
             query.iy = iy;
-            query.rng = rng;
+            query.rng = rng_;
             query.jitterKey = mix64(static_cast<std::uint64_t>(p.lightIndex));
-            lit = pointLightLitFraction(scene_, *footprint, query, scratch.shadow, counters);
+            lit = pointLightLitFraction(scene_, *footprint, query, s_.shadow, c_);
             if (!(lit > 0.0)) return {};
         }
         storage = pointLightSample(light.position, light.color, p.position, lit);
         return {&storage, 1};
     };
-    return tracer_.shadeWith(*hit, ray, 1, 1.0, lightArriving, counters, context);
-}
-
-PixelResult AsosTracer::trace(int px, int py, AsosScratch& s, RenderCounters& c,
-                              AsosPixelReport* report) const {
-    const PixelRandom rng(seed_, px, py);
-    auto rayAt = [this](double u, double v) { return camera_.ray(u, v); };
-    const Vec3 background = backgroundColor(scene_.description());
-    Vec3 color(0.0);
-    std::uint32_t pyrays = 0;
-    int deepest = 0, leaves = 0;
-
-    // The central ray of a pyray resolved by one Full object in front of
-    // everything else must hit that object ("additional eye rays through
-    // this pixel can only strike this object").
-    auto frontHit = [&](const EyePyray& pyray, const Item& front) {
-        const Ray& ray = pyray.centralRay();
-        ++c.eyeRays;
-        ++c.rayTests;
-        std::optional<SurfaceHit> hit =
-            scene_.primitive(front.object).intersect(ray, kPovMinIsectDepth, kInfinity);
-        if (hit) hit->objectIndex = static_cast<int>(front.object);
-        else hit = tracer_.nearestHit(ray);  // rounding at the cone's rim: ask the scene
-        return hit;
-    };
-    // Whether the front object's pigment pattern may change inside the
-    // pyray's footprint (an edge of the texture rather than of the object).
-    auto patternEdge = [&](const EyePyray& pyray, const Item& front,
-                           const std::optional<SurfaceHit>& hit) {
-        if (!patternEdges_ || !patterned_[front.object] || !hit ||
-            hit->objectIndex != static_cast<int>(front.object))
-            return PatternChange{};
-        const Footprint footprint(camera_, pyray.square(), hit->position, hit->normal, hit->t);
-        return pigmentMayChange(textureOf(scene_.object(front.object)).pigment, footprint);
-    };
-    // How a fresh pyray's objects items[first, first + count) decide it:
-    // resolved with no object (background) or one in front, or marginal.
-    struct Resolution {
-        bool resolved;
-        const Item* front;
-    };
-    auto resolve = [](const std::vector<Item>& items, std::uint32_t first, std::uint32_t count) {
-        if (count == 0) return Resolution{true, nullptr};
-        if (count == 1 && items[first].cls.coverage == Coverage::Full)
-            return Resolution{true, &items[first]};
-        return Resolution{false, nullptr};
-    };
-
-    // Detection phase: the pixel's list.
-    const ImageSquare pixel{double(px), double(py), px + 1.0, py + 1.0};
-    const EyePyray root = EyePyray::make(rayAt, pixel, 0, kPovMinIsectDepth, eyeTMax_);
-    ++pyrays;
-    c.countPyray(0);
-    std::vector<Item>& rootItems = s.items[0];
-    rootItems.clear();
-    const PreparedCone rootCone(root.cone());
-    auto detect = [&](std::uint32_t object) {
-        ++c.coneTests;
-        const ConeClass k = scene_.primitive(object).classify(rootCone);
-        if (k.coverage != Coverage::Miss) rootItems.push_back({object, k});
-    };
-    // Neighbouring pixels' cones share the eye as apex: a remembered wider
-    // cone's objects serve them (perspective cameras; orthographic pyrays
-    // have an apex each).
-    if (camera_.orthographic()) scene_.coneCandidates(root.cone(), detect);
-    else s.eyeCandidates.visit(scene_, root.cone(), detect);
-    sortByObject(rootItems.data(), rootItems.data() + rootItems.size());
-    const std::uint32_t rootCount = pruneHidden(rootItems, 0);
-    const auto [resolved, front] = resolve(rootItems, 0, rootCount);
-
-    auto finish = [&]() {
-        if (report) report->leaves = leaves;
-        return PixelResult{color, pyrays, static_cast<std::uint32_t>(deepest)};
-    };
-    s.hits[0].assign(rootCount, 0);
-    s.nodes[0].clear();
-    if (resolved && !front) {
-        ++leaves;
-        color = background;
-        return finish();
-    }
-    if (resolved) {
-        std::optional<SurfaceHit> hit = frontHit(root, *front);
-        const PatternChange pattern = patternEdge(root, *front, hit);
-        if (!pattern.mayChange) {
-            ++leaves;
-            color = shadeLeaf(root.square(), 0, 0, 0, root.centralRay(), hit, rng, s, c);
-            return finish();
-        }
-        s.hits[0][0] = 1;
-        s.nodes[0].push_back({root, 0, 0, 0, rootCount, std::move(hit), pattern});
-    } else {
-        s.nodes[0].push_back({root, 0, 0, 0, rootCount, std::nullopt, {}});
-        ++c.eyeRays;
-        s.nodes[0][0].hit =
-            nearestInList(root.centralRay(), rootItems, 0, rootCount, s.hits[0].data(), c);
-    }
-
-    // Subdivision phase, all marginal pyrays of a level together.
-    int cur = 0;
-    for (int level = 0;; ++level) {
-        const std::vector<AsosScratch::Node>& nodes = s.nodes[cur];
-        const std::vector<Item>& items = s.items[cur];
-        const std::vector<std::uint8_t>& hits = s.hits[cur];
-        const double weight = std::ldexp(1.0, -2 * level);
-
-        // The tally: each marginal pyray against each object it is marginal
-        // on (in: its K-ray hits it), and the Full objects that interpenetrate
-        // another (in: its K-ray sees them). The settings are the finest
-        // among those objects.
-        s.tally.clear();
-        AsosSettings settings = AsosSettings::coarsest();
-        for (const AsosScratch::Node& n : nodes)
-            for (std::uint32_t i = n.first; i < n.first + n.count; ++i) {
-                const std::uint32_t object = items[i].object;
-                const ConeClass& k = items[i].cls;
-                if (k.coverage == Coverage::Marginal) {
-                    s.tally.add(object, hits[i] != 0, k.singleEdge);
-                } else if (overlapsAnother(items, n.first, n.count, i)) {
-                    s.tally.add(object, n.hit && n.hit->objectIndex == static_cast<int>(object),
-                                false);
-                } else if (n.pattern.mayChange) {
-                    // in: the K-ray sees the pattern's second colour.
-                    s.tally.add(object,
-                                n.hit && pigmentIndex(textureOf(scene_.object(object)).pigment,
-                                                      n.hit->position) == 1,
-                                n.pattern.singleEdge);
-                } else {
-                    continue;
-                }
-                settings = settings.finest(objectSettings_[object]);
-            }
-        const double bound = s.tally.changeBound(level);
-        if (report) {
-            AsosLevelReport r;
-            r.level = level;
-            r.marginal = static_cast<int>(nodes.size());
-            for (const SubdivisionTally::Entry& e : s.tally.entries()) {
-                r.in += e.in;
-                r.out += e.out;
-            }
-            r.bound = bound;
-            r.settings = settings;
-            report->levels.push_back(r);
-        }
-
-        if (level >= settings.maxLevel || bound <= settings.eps) {
-            // Stop: each marginal K-pyray is shaded with its K-ray, or at MAX
-            // with jitter, a random ray inside it.
-            const bool jitter = settings.jitter && level >= settings.maxLevel;
-            for (const AsosScratch::Node& n : nodes) {
-                ++leaves;
-                if (jitter) {
-                    const Vec2 p = pointInSquare(
-                        n.pyray.square(),
-                        rng.uniform2(SampleStream::AsosJitter, subPosition(level, n.ix, n.iy)));
-                    const Ray ray = camera_.ray(p.x, p.y);
-                    ++c.eyeRays;
-                    const std::optional<SurfaceHit> hit =
-                        nearestInList(ray, items, n.first, n.count, nullptr, c);
-                    color += weight * shadeLeaf(n.pyray.square(), level, n.ix, n.iy, ray, hit, rng,
-                                                s, c);
-                } else {
-                    color += weight * shadeLeaf(n.pyray.square(), level, n.ix, n.iy,
-                                                n.pyray.centralRay(), n.hit, rng, s, c);
-                }
-            }
-            break;
-        }
-
-        const int childLevel = level + 1;
-        const double childWeight = 0.25 * weight;
-        deepest = childLevel;
-        if (childLevel >= settings.maxLevel) {
-            // MAX-pyrays need no detection: each is one point sample, its
-            // central ray or, with jitter, a random ray inside it.
-            for (const AsosScratch::Node& n : nodes)
-                for (int quarter = 0; quarter < 4; ++quarter) {
-                    const ImageSquare sq = n.pyray.square().quarter(quarter);
-                    const std::uint32_t ix = 2 * n.ix + (quarter & 1), iy = 2 * n.iy + (quarter >> 1);
-                    const Vec2 p = settings.jitter
-                                       ? pointInSquare(sq, rng.uniform2(SampleStream::AsosJitter,
-                                                                        subPosition(childLevel, ix, iy)))
-                                       : Vec2(sq.uMid(), sq.vMid());
-                    const Ray ray = camera_.ray(p.x, p.y);
-                    ++pyrays;
-                    ++leaves;
-                    c.countPyray(childLevel);
-                    ++c.eyeRays;
-                    const std::optional<SurfaceHit> hit =
-                        nearestInList(ray, items, n.first, n.count, nullptr, c);
-                    color += childWeight * shadeLeaf(sq, childLevel, ix, iy, ray, hit, rng, s, c);
-                }
-            break;
-        }
-
-        // Subdivide: each marginal pyray into four, tested against its own
-        // objects only.
-        const int next = 1 - cur;
-        std::vector<Item>& childItems = s.items[next];
-        std::vector<std::uint8_t>& childHits = s.hits[next];
-        std::vector<AsosScratch::Node>& childNodes = s.nodes[next];
-        childItems.clear();
-        childHits.clear();
-        childNodes.clear();
-        for (const AsosScratch::Node& n : nodes) {
-            const std::array<EyePyray, 4> children = n.pyray.split(rayAt);
-            for (int quarter = 0; quarter < 4; ++quarter) {
-                const EyePyray& child = children[quarter];
-                const std::uint32_t ix = 2 * n.ix + (quarter & 1), iy = 2 * n.iy + (quarter >> 1);
-                ++pyrays;
-                c.countPyray(childLevel);
-                const auto first = static_cast<std::uint32_t>(childItems.size());
-                const PreparedCone cone(child.cone());
-                for (std::uint32_t i = n.first; i < n.first + n.count; ++i) {
-                    ++c.coneTests;
-                    const ConeClass k = scene_.primitive(items[i].object).classify(cone);
-                    if (k.coverage != Coverage::Miss) childItems.push_back({items[i].object, k});
-                }
-                const std::uint32_t count = pruneHidden(childItems, first);
-                const auto [childResolved, childFront] = resolve(childItems, first, count);
-                if (childResolved && !childFront) {
-                    ++leaves;
-                    color += childWeight * background;
-                    continue;
-                }
-                childHits.resize(childItems.size(), 0);
-                if (childResolved) {
-                    std::optional<SurfaceHit> hit = frontHit(child, *childFront);
-                    const PatternChange pattern = patternEdge(child, *childFront, hit);
-                    if (!pattern.mayChange) {
-                        ++leaves;
-                        color += childWeight * shadeLeaf(child.square(), childLevel, ix, iy,
-                                                         child.centralRay(), hit, rng, s, c);
-                        continue;
-                    }
-                    childHits[first] = 1;
-                    childNodes.push_back({child, ix, iy, first, count, std::move(hit), pattern});
-                    continue;
-                }
-                ++c.eyeRays;
-                std::optional<SurfaceHit> hit =
-                    nearestInList(child.centralRay(), childItems, first, count, childHits.data(), c);
-                childNodes.push_back({child, ix, iy, first, count, std::move(hit), {}});
-            }
-        }
-        if (childNodes.empty()) break;
-        cur = next;
-    }
-    return finish();
+    return tracer_.shadeWith(*hit, ray, 1, 1.0, lightArriving, c_, context);
 }
 
 }  // namespace asos

@@ -10,8 +10,6 @@ namespace {
 // Wider cones than this are not remembered: their lists would be long and
 // their containment tests loose.
 constexpr double kWidestRemembered = 0.25 * kPi;
-
-double l1(const Vec3& v) { return std::abs(v.x) + std::abs(v.y) + std::abs(v.z); }
 }  // namespace
 
 bool ConeCandidateCache::holds(const Cone& cone) const {
@@ -45,7 +43,7 @@ bool BeamCandidateCache::sphereMayMeet(const PreparedCone& cone, const Vec3& cen
     const Vec3 v = center - cone.apex;
     const double d2 = glm::dot(v, v);
     const double d = std::sqrt(d2);
-    const double margin = radius * (1.0 + 1e-9) + 1e-9 * (d + l1(cone.apex) + radius);
+    const double margin = radius * (1.0 + 1e-9) + 1e-9 * (d + l1Norm(cone.apex) + radius);
     if (d - margin > cone.tMax) return false;
     if (d + margin < cone.tMin) return false;
     if (!(cone.cosHalf > 0.0)) return true;  // a half-angle of a right angle or more

@@ -76,12 +76,7 @@ ShadowPyray makeShadowPyray(const Vec3& light, const Footprint& footprint, const
 }
 
 std::uint64_t subKey(std::uint64_t key, int level, std::uint32_t ix, std::uint32_t iy) {
-    return mix64(key ^ (std::uint64_t(level) << 48 | std::uint64_t(iy) << 24 | ix));
-}
-
-// The image point at fractions xi of the square.
-Vec2 pointInSquare(const ImageSquare& sq, const Vec2& xi) {
-    return {sq.u0 + xi.x * (sq.u1 - sq.u0), sq.v0 + xi.y * (sq.v1 - sq.v0)};
+    return mix64(key ^ subPosition(level, ix, iy));
 }
 
 }  // namespace
@@ -168,7 +163,7 @@ double pointLightLitFraction(const Scene& scene, const Footprint& footprint,
     if (q.level >= maxLevel) {
         if (!q.settings.jitter) return plainRayLit(footprint.point());
         const Vec2 xi = q.rng.uniform2(SampleStream::ShadowJitter, subKey(q.jitterKey, q.level, q.ix, q.iy));
-        const Vec2 p = pointInSquare(footprint.square(), xi);
+        const Vec2 p = footprint.square().pointAt(xi);
         return plainRayLit(footprint.at(p.x, p.y));
     }
 
@@ -266,9 +261,8 @@ double pointLightLitFraction(const Scene& scene, const Footprint& footprint,
                     const std::uint32_t ix = 2 * n.ix + (quarter & 1), iy = 2 * n.iy + (quarter >> 1);
                     Vec3 target;
                     if (q.settings.jitter) {
-                        const Vec2 p = pointInSquare(
-                            sq, q.rng.uniform2(SampleStream::ShadowJitter,
-                                               subKey(q.jitterKey, childLevel, ix, iy)));
+                        const Vec2 p = sq.pointAt(q.rng.uniform2(
+                            SampleStream::ShadowJitter, subKey(q.jitterKey, childLevel, ix, iy)));
                         target = footprint.at(p.x, p.y);
                     } else {
                         target = footprint.at(sq.uMid(), sq.vMid());

@@ -4,6 +4,8 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "asos/geometry/frame.hpp"
+
 namespace asos {
 
 namespace {
@@ -41,16 +43,6 @@ Vec3 symmetricEigenvalues(Mat3 a) {
 }
 
 }  // namespace
-
-Mat3 frameAroundAxis(const Vec3& n) {
-    // Duff et al., "Building an Orthonormal Basis, Revisited" (2017).
-    const double sign = std::copysign(1.0, n.z);
-    const double a = -1.0 / (sign + n.z);
-    const double b = n.x * n.y * a;
-    const Vec3 u(1.0 + sign * n.x * n.x * a, sign * b, -sign * n.x);
-    const Vec3 v(b, sign + n.y * n.y * a, -n.y);
-    return Mat3(u, v, n);
-}
 
 LocalFrame LocalFrame::make(const Transform& worldFromObject, const Mat3& objectFromLocal,
                             const Vec3& objectOffset) {

@@ -7,8 +7,6 @@ namespace asos {
 
 namespace {
 
-double l1(const Vec3& v) { return std::abs(v.x) + std::abs(v.y) + std::abs(v.z); }
-
 // Rounding can move a computed bound by a few ulps; pad so the box stays
 // conservative for the BVH.
 Bounds3 padded(Bounds3 b) {
@@ -32,7 +30,7 @@ Primitive::Primitive(LocalShape shape, LocalFrame frame, const char* name)
     localSphere_ = visit([](const auto& s) { return s.boundingSphere(); });
     worldBounds_ = padded(
         visit([&](const auto& s) { return s.worldBounds(frame_.worldFromLocal, frame_.worldOffset); }));
-    sphereTolerance_ = l1(localSphere_.center) +
+    sphereTolerance_ = l1Norm(localSphere_.center) +
                        (std::isfinite(localSphere_.radius) ? localSphere_.radius : 0.0);
 }
 
@@ -95,7 +93,7 @@ ConeClass Primitive::classifyRigid(const PreparedCone& cone) const {
     }
     local.cosHalf = cone.cosHalf;
     local.sinHalf = cone.sinHalf;
-    const double absTol = 1e-11 * (l1(local.apex) + sphereTolerance_);
+    const double absTol = 1e-11 * (l1Norm(local.apex) + sphereTolerance_);
     local.absTol = absTol;  // the range is set below, or by the shape (classifyRanging)
     const double t0 = kScaled ? cone.tMin * frame_.localPerWorld : cone.tMin;
     const double t1 = kScaled ? cone.tMax * frame_.localPerWorld : cone.tMax;
@@ -191,7 +189,7 @@ ConeClass Primitive::classifyGeneral(const PreparedCone& cone) const {
     const double lMax = std::min(frame_.sigmaMax, la + chord * frame_.sigmaMax);
     // Divided by below; the reciprocals are ready while the shape works.
     const double invLMin = 1.0 / lMin, invLMax = 1.0 / lMax;
-    const double absTol = 1e-11 * (l1(local.apex) + sphereTolerance_);
+    const double absTol = 1e-11 * (l1Norm(local.apex) + sphereTolerance_);
     local.setRange(cone.tMin * lMin, cone.tMax * lMax, absTol);
 
     ConeClass out = visit([&](const auto& shape) { return shape.classify(local); });

@@ -8,6 +8,7 @@
 #include <stdexcept>
 #include <string>
 
+#include "asos/geometry/frame.hpp"
 #include "asos/shapes/primitive.hpp"
 
 namespace asos {

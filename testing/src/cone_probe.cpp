@@ -4,7 +4,7 @@
 #include <cmath>
 #include <sstream>
 
-#include "asos/shapes/local_frame.hpp"
+#include "asos/geometry/frame.hpp"
 
 namespace asos {
 

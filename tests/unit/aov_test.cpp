@@ -2,7 +2,7 @@
 
 #include <filesystem>
 
-#include "asos/render/aov.hpp"
+#include "asos/image/aov.hpp"
 
 using namespace asos;
 namespace fs = std::filesystem;

@@ -11,6 +11,7 @@
 #include "asos/geometry/beam_rect.hpp"
 #include "asos/geometry/beam_segment.hpp"
 #include "asos/geometry/beam_sphere.hpp"
+#include "asos/geometry/frame.hpp"
 #include "random_direction.hpp"
 
 using namespace asos;

@@ -14,38 +14,17 @@
 #include <cstdint>
 #include <cstdlib>
 #include <functional>
-#include <random>
 #include <sstream>
 #include <string>
 
-#include "asos/testing/cone_probe.hpp"
+#include "asos/geometry/frame.hpp"
 #include "asos/shapes/primitive.hpp"
+#include "asos/testing/cone_probe.hpp"
+#include "asos/testing/rng.hpp"
 
 namespace shapetest {
 
 using namespace asos;
-
-class Rng {
-public:
-    explicit Rng(std::uint64_t seed) : engine_(seed) {}
-    double uniform(double a = 0.0, double b = 1.0) {
-        return a + (b - a) * static_cast<double>(engine_() >> 11) * 0x1p-53;
-    }
-    bool chance(double p) { return uniform() < p; }
-    int index(int n) { return static_cast<int>(engine_() % static_cast<std::uint64_t>(n)); }
-    double logUniform(double lo10, double hi10) { return std::pow(10.0, uniform(lo10, hi10)); }
-    Vec3 unitVector() {
-        const double z = uniform(-1.0, 1.0), phi = uniform(0.0, 2.0 * kPi);
-        const double r = std::sqrt(std::max(0.0, 1.0 - z * z));
-        return {r * std::cos(phi), r * std::sin(phi), z};
-    }
-    Vec3 inBox(const Vec3& lo, const Vec3& hi) {
-        return {uniform(lo.x, hi.x), uniform(lo.y, hi.y), uniform(lo.z, hi.z)};
-    }
-
-private:
-    std::mt19937_64 engine_;
-};
 
 inline std::uint64_t splitmix(std::uint64_t x) {
     x += 0x9e3779b97f4a7c15ull;

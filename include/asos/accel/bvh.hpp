@@ -193,7 +193,7 @@ struct ConePrefilter {
         sinHalf = splat(std::sin(c.halfAngle));
         tMin = splat(std::max(c.tMin, 0.0));
         tMax = splat(c.tMax);
-        apexScale = splat(std::max({std::abs(c.apex.x), std::abs(c.apex.y), std::abs(c.apex.z)}));
+        apexScale = splat(maxNorm(c.apex));
     }
     void setTMax(double t) {
         const float f = static_cast<float>(t);

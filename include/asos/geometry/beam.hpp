@@ -21,13 +21,6 @@ struct BeamRay {
     double distance = kInfinity;
 };
 
-// An orthonormal frame around a unit vector w (deterministic in w).
-struct Frame {
-    Vec3 u, v, w;
-    static Frame around(const Vec3& w);
-    Vec3 toWorld(double x, double y, double z) const { return x * u + y * v + z * w; }
-};
-
 // The angle between two nonzero vectors, accurate at 0 and pi (atan2 of the
 // cross and dot products, not acos).
 double angleBetween(const Vec3& a, const Vec3& b);

@@ -27,6 +27,8 @@ struct ImageSquare {
 
     double uMid() const { return 0.5 * (u0 + u1); }
     double vMid() const { return 0.5 * (v0 + v1); }
+    // The image point at fractions f of the square (a jittered ray's).
+    Vec2 pointAt(const Vec2& f) const { return {u0 + f.x * (u1 - u0), v0 + f.y * (v1 - v0)}; }
     // Quarter q: bit 0 picks the upper u half, bit 1 the upper v half. The
     // quarters share their edges exactly (the same midpoints).
     ImageSquare quarter(int q) const {

@@ -17,6 +17,7 @@
 #include <optional>
 
 #include "asos/geometry/beam.hpp"
+#include "asos/geometry/frame.hpp"
 
 namespace asos {
 

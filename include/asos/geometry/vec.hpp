@@ -1,6 +1,8 @@
 #pragma once
 // The numeric types shared by every stage. Geometry is double precision;
 // acceleration structures may store floats internally (rounded outward).
+#include <algorithm>
+#include <cmath>
 #include <limits>
 
 #include <glm/glm.hpp>
@@ -21,6 +23,15 @@ inline constexpr double kInfinity = std::numeric_limits<double>::infinity();
 // value bit for bit.
 __attribute__((always_inline)) inline double dot3(const Vec3& a, const Vec3& b) {
     return a.x * b.x + a.y * b.y + a.z * b.z;
+}
+
+// |x| + |y| + |z|, summed in that order: the scale of a point's coordinates
+// in the rounding tolerances of the shapes and caches.
+inline double l1Norm(const Vec3& v) { return std::abs(v.x) + std::abs(v.y) + std::abs(v.z); }
+
+// max(|x|, |y|, |z|).
+inline double maxNorm(const Vec3& v) {
+    return std::max({std::abs(v.x), std::abs(v.y), std::abs(v.z)});
 }
 
 }  // namespace asos

@@ -5,7 +5,7 @@
 #include <filesystem>
 #include <string>
 
-#include "asos/render/image.hpp"
+#include "asos/image/image.hpp"
 
 namespace asos {
 

@@ -87,14 +87,9 @@ public:
     const AsosSettings& lightSettings(std::size_t light) const { return lightSettings_[light]; }
 
 private:
-    PixelResult trace(int x, int y, AsosScratch& scratch, RenderCounters& counters,
-                      AsosPixelReport* report) const;
-    Vec3 shadeLeaf(const ImageSquare& square, int level, std::uint32_t ix, std::uint32_t iy,
-                   const Ray& ray, const std::optional<SurfaceHit>& hit, const PixelRandom& rng,
-                   AsosScratch& scratch, RenderCounters& counters) const;
-    std::optional<SurfaceHit> nearestInList(const Ray& ray, const std::vector<AsosScratch::Item>& items,
-                                            std::uint32_t first, std::uint32_t count,
-                                            std::uint8_t* marks, RenderCounters& counters) const;
+    // One pixel's trace: the paper's phases, and the pixel's running sums
+    // (src/render/asos_tracer.cpp).
+    class PixelTrace;
 
     const RayTracer& tracer_;
     const Scene& scene_;

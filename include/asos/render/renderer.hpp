@@ -12,8 +12,8 @@
 #include <string_view>
 
 #include "asos/diag/diagnostics.hpp"
+#include "asos/image/image.hpp"
 #include "asos/render/classic_methods.hpp"
-#include "asos/render/image.hpp"
 #include "asos/render/light_model.hpp"
 #include "asos/render/stats.hpp"
 #include "asos/render/tile_renderer.hpp"

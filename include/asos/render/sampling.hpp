@@ -37,6 +37,12 @@ constexpr double toUnitDouble(std::uint64_t bits) {
     return static_cast<double>(bits >> 11) * (1.0 / 9007199254740992.0);
 }
 
+// The index of a K-pyray's random numbers: its level and its position among
+// the pixel's 2^K x 2^K squares.
+constexpr std::uint64_t subPosition(int level, std::uint32_t ix, std::uint32_t iy) {
+    return std::uint64_t(level) << 48 | std::uint64_t(iy) << 24 | ix;
+}
+
 // The random numbers of one pixel. Cheap to construct; copyable; no state
 // changes when numbers are drawn.
 class PixelRandom {

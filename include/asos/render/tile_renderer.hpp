@@ -15,9 +15,9 @@
 #include <string_view>
 
 #include "asos/geometry/vec.hpp"
-#include "asos/render/function_ref.hpp"
-#include "asos/render/image.hpp"
+#include "asos/image/image.hpp"
 #include "asos/render/stats.hpp"
+#include "asos/util/function_ref.hpp"
 
 namespace asos {
 

@@ -79,8 +79,4 @@ struct LocalFrame::Flattened {
     glm::dmat2 inPlane{1.0};
 };
 
-// A rotation taking +z to the unit vector n (columns: two unit vectors
-// perpendicular to n, then n). Exact for coordinate axes.
-Mat3 frameAroundAxis(const Vec3& n);
-
 }  // namespace asos

@@ -8,7 +8,7 @@
 
 #include "asos/geometry/vec.hpp"
 #include "asos/image/image_io.hpp"
-#include "asos/render/image.hpp"
+#include "asos/image/image.hpp"
 
 namespace asos {
 

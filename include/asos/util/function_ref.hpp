@@ -1,7 +1,8 @@
 #pragma once
 // A non-owning reference to a callable (like C++26's std::function_ref):
 // two pointers, no allocation, one indirect call. For callbacks that cross a
-// translation unit boundary once per tile, not once per ray.
+// translation unit boundary once per tile or per block entry, not once per
+// ray: the tile renderer's work and the interpreter's entry handlers.
 #include <memory>
 #include <type_traits>
 #include <utility>

@@ -1,4 +1,4 @@
-#include "asos/render/aov.hpp"
+#include "asos/image/aov.hpp"
 
 #include <algorithm>
 #include <array>
