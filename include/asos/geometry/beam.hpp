@@ -1,11 +1,11 @@
 #pragma once
 // What every beam (pyramidal ray or shadow cone) shares: the rays it hands the
 // tracer and the cones that bound it. The beams themselves: beam_eye.hpp (eye
-// pyrays), beam_quad.hpp (a point light's shadow pyray through a footprint),
-// beam_rect.hpp, beam_segment.hpp and beam_sphere.hpp (shadow beams toward
-// rectangular, linear and spherical lights). docs/accel.md describes
-// them; the paper's "Adaptive Supersampling in Object-Space" and "Distributed
-// Light Sources" sections are what they serve.
+// pyrays), and the light forms' shadow beams toward rectangular, linear and
+// spherical lights (lights/rectangle_light.hpp, segment_light.hpp,
+// sphere_light.hpp). docs/accel.md describes them; the paper's "Adaptive
+// Supersampling in Object-Space" and "Distributed Light Sources" sections are
+// what they serve.
 #include <span>
 
 #include "asos/geometry/cone.hpp"

@@ -13,11 +13,11 @@
 #include <vector>
 
 #include "asos/geometry/cone.hpp"
+#include "asos/lights/light_piece.hpp"
 #include "asos/render/cone_candidates.hpp"
-#include "asos/render/light_beams.hpp"
-#include "asos/render/light_model.hpp"
 #include "asos/render/point_light_shadow.hpp"
 #include "asos/render/sampling.hpp"
+#include "asos/render/scene_lights.hpp"
 #include "asos/render/shading.hpp"
 #include "asos/render/stats.hpp"
 #include "asos/scene/scene.hpp"

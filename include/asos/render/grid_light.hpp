@@ -15,7 +15,9 @@
 // POV-Ray's lattice from edge to edge (i / (n - 1)), jitter moving a point by
 // up to half a step (kept on the light). A spherical light's cells are mapped
 // onto its apparent disc by Shirley and Chiu's equal-area concentric map
-// (geometry/beam_sphere.hpp, concentricDisc), as the ASOS beams' pieces are.
+// (geometry/concentric_disc.hpp), as the ASOS beams' pieces are. Each light
+// form says where its points lie and how it weights them
+// (lights/light_form.hpp, GridPoints).
 #include <span>
 
 #include "asos/render/area_light.hpp"

@@ -14,7 +14,7 @@
 #include "asos/diag/diagnostics.hpp"
 #include "asos/render/classic_methods.hpp"
 #include "asos/render/image.hpp"
-#include "asos/render/light_model.hpp"
+#include "asos/render/scene_lights.hpp"
 #include "asos/render/stats.hpp"
 #include "asos/render/tile_renderer.hpp"
 #include "asos/scene/description.hpp"

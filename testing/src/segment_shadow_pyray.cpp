@@ -1,4 +1,4 @@
-#include "asos/geometry/beam_segment.hpp"
+#include "asos/testing/segment_shadow_pyray.hpp"
 
 #include <algorithm>
 #include <cmath>

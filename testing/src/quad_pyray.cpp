@@ -1,4 +1,4 @@
-#include "asos/geometry/beam_quad.hpp"
+#include "asos/testing/quad_pyray.hpp"
 
 #include <algorithm>
 #include <cmath>
