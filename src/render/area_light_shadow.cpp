@@ -731,30 +731,6 @@ std::optional<Vec3> behindApex(const LightModel& model, const Vec3& point, const
     return apex;
 }
 
-WholeLight wholeLightVisibility(const Scene& scene, const LightModel& model, const AreaLightQuery& q,
-                                RenderCounters& counters) {
-    WholeLight answer = WholeLight::Partial;
-    withAreaForm(model.form, [&](const auto& light) {
-        const auto beams = light.beamFrom(q.point, kTolerance);
-        if (!beams) return;
-        const LightPiece root = beams->root();
-        const PreparedCone prepared(root.cone);
-        const double nearestLight = beams->nearestLightDistance(root) - kTolerance;
-        bool any = false, blocked = false;
-        scene.coneCandidates(root.cone, [&](std::uint32_t object) {
-            if (blocked || scene.object(object).noShadow) return;
-            if (object == q.shadedObject && !q.shadedCanSelfShadow) return;
-            ++counters.coneTests;
-            const ConeClass k = scene.primitive(object).classify(prepared);
-            if (k.coverage == Coverage::Miss) return;
-            any = true;
-            blocked = k.coverage == Coverage::Full && k.tFar < nearestLight;
-        });
-        answer = blocked ? WholeLight::Blocked : (any ? WholeLight::Partial : WholeLight::Lit);
-    });
-    return answer;
-}
-
 std::span<const LightSample> asosAreaLightSamples(const Scene& scene, const LightModel& model,
                                                   ShadowApex apex, const AreaLightQuery& query,
                                                   AreaLightScratch& scratch, RenderCounters& counters) {

@@ -4,8 +4,6 @@
 #include <cmath>
 #include <optional>
 
-#include "asos/render/area_light_shadow.hpp"
-
 namespace asos {
 
 namespace {
@@ -16,19 +14,9 @@ constexpr double kTolerance = kPovShadowTolerance;
 // from the shaded point.
 template <AreaLightForm Form>
 void gridSamples(const Form& form, const Scene& scene, const LightModel& model,
-                                         const AreaLightQuery& q, AreaLightScratch& s, RenderCounters& counters, bool culling) {
+                                         const AreaLightQuery& q, AreaLightScratch& s, RenderCounters& counters) {
     const std::optional<typename Form::GridPoints> light = form.gridFrom(q.point);
     if (!light) return;  // the point sees no light (inside a spherical one)
-    // With culling, a whole-light verdict stands for every ray (adaptive
-    // sampling, whose choices depend on the rays, traces them anyway).
-    std::optional<bool> allVisible;
-    if (culling && !model.shadowless && !model.adaptive) {
-        switch (wholeLightVisibility(scene, model, q, counters)) {
-            case WholeLight::Lit: allVisible = true; break;
-            case WholeLight::Blocked: return;
-            case WholeLight::Partial: break;
-        }
-    }
     const int n1 = std::max(model.count1, 1);
     const int n2 = std::max(model.count2, 1);  // 1 for a segment
     const std::uint64_t key = mix64(q.key ^ mix64(0x9e1d0u + q.lightIndex));
@@ -36,7 +24,7 @@ void gridSamples(const Form& form, const Scene& scene, const LightModel& model,
         return q.rng.uniform2(SampleStream::LightJitter, mix64(key ^ (std::uint64_t(j) << 32 | std::uint32_t(i))));
     };
     auto blocked = [&](const BeamRay& ray) {
-        if (allVisible || model.shadowless || !(ray.distance > 2.0 * kTolerance)) return false;
+        if (model.shadowless || !(ray.distance > 2.0 * kTolerance)) return false;
         ++counters.shadowRays;
         return scene.occluded(ray.ray, kTolerance, ray.distance - kTolerance);
     };
@@ -116,9 +104,9 @@ void gridSamples(const Form& form, const Scene& scene, const LightModel& model,
 
 std::span<const LightSample> gridAreaLightSamples(const Scene& scene, const LightModel& model,
                                                   const AreaLightQuery& q, AreaLightScratch& s,
-                                                  RenderCounters& counters, bool culling) {
+                                                  RenderCounters& counters) {
     s.samples.clear();
-    withAreaForm(model.form, [&](const auto& form) { gridSamples(form, scene, model, q, s, counters, culling); });
+    withAreaForm(model.form, [&](const auto& form) { gridSamples(form, scene, model, q, s, counters); });
     return s.samples;
 }
 

@@ -149,7 +149,8 @@ struct AreaLightQuery {
 };
 
 // The samples of an area light at a shaded point, by the lights' method
-// (setup().method) and apex; the span lives in `scratch` until its next use.
+// (setup().method) and apex, or by the setup's own sampler where it has one;
+// the span lives in `scratch` until its next use.
 // A shadowless light is unshadowed. Nothing comes from parts of the light
 // behind the surface.
 std::span<const LightSample> areaLightSamples(const Scene& scene, const SceneLights& lights,

@@ -24,11 +24,8 @@
 
 namespace asos {
 
-// `culling`: skip the rays a cone test over the whole light decides
-// (LightSetup::gridCulling); the samples are the same.
 std::span<const LightSample> gridAreaLightSamples(const Scene& scene, const LightModel& model,
                                                   const AreaLightQuery& query,
-                                                  AreaLightScratch& scratch, RenderCounters& counters,
-                                                  bool culling = false);
+                                                  AreaLightScratch& scratch, RenderCounters& counters);
 
 }  // namespace asos

@@ -4,6 +4,7 @@
 // the ASOS beams start.
 #include <cstddef>
 #include <optional>
+#include <span>
 #include <string_view>
 #include <vector>
 
@@ -26,14 +27,25 @@ enum class ShadowApex { Surface, Behind };
 const char* shadowApexName(ShadowApex apex);  // "surface", "behind"
 std::optional<ShadowApex> parseShadowApex(std::string_view name);
 
+class Scene;
+struct AreaLightQuery;
+struct AreaLightScratch;
+struct LightSample;
+struct RenderCounters;
+
+// A sampler of area lights in place of the method's (render/area_light.hpp
+// says what it answers): how a caller plugs in its own, as the benchmarks
+// plug in their references from asos_testing.
+using AreaLightSampler = std::span<const LightSample> (*)(const Scene& scene, const LightModel& model,
+                                                          const AreaLightQuery& query,
+                                                          AreaLightScratch& scratch, RenderCounters& counters);
+
 struct LightSetup {
     LightMethod method = LightMethod::Grid;
     std::optional<int> samples;  // --light-samples
     ShadowApex apex = ShadowApex::Surface;
-    // Grid lights skip the shadow rays that one cone test over the whole
-    // light decides (all lit, or all blocked): the same image for less time.
-    // For references (asos bench lights); the classic method traces them all.
-    bool gridCulling = false;
+    // The caller's sampler of area lights, used instead of the method's.
+    AreaLightSampler sampler = nullptr;
     // The command line's asos options over global_settings'; by default
     // global_settings' over the built-in defaults.
     std::optional<AsosSettings> sceneSettings;
