@@ -33,41 +33,68 @@ struct LightPieceSink {
     void operator()(const LightPiece&) const {}
 };
 
-// The beam of an area light from one point (its apex): its pieces, how
-// they split, their rays, shares and bounds.
+// The beam of an area light from one point (its apex), as the ASOS shadow
+// tracer asks it (render/area_light_shadow.cpp). Every answer about a piece
+// is about a piece the beam made.
 template <class B>
 concept AreaLightBeam = requires(const B& beam, const LightPiece& piece, LightPiece* out, const Vec2& xi,
                                  const Vec3& direction, BeamRay* rays, int level) {
-    // How many pieces one split makes (a fixed number per form).
+    // How many pieces one split makes.
     { B::kChildren } -> std::convertible_to<int>;
-    // Whether the paper's "Proximity to One Edge" halving holds for its splits.
+    // Whether the paper's "Proximity to One Edge" halving holds for a split.
     { B::kSingleEdgeHalving } -> std::convertible_to<bool>;
+    // The whole light: the level-0 piece, with its cone.
     { beam.root() } -> std::same_as<LightPiece>;
+    // The pieces of the next level, written to out[]; returns how many.
+    // Without cones (false) their cones are left empty: pieces only
+    // sampled by rays.
     { beam.split(piece, out, true) } -> std::same_as<int>;
+    // f(const LightPiece&) for each piece `level` levels below `piece`,
+    // without cones, in the order repeated split()s give them, with the same
+    // regions, paths and central rays, bit for bit (point samples at MAX:
+    // docs/lights.md, "Speed").
     beam.forEachDescendant(piece, level, LightPieceSink{});
+    // The central points of those pieces as a lattice, where the form has
+    // one (down to LightLattice::kMaxDepth levels).
     { beam.lattice(piece, level) } -> std::same_as<std::optional<LightLattice>>;
+    // A ray inside the piece from two numbers in [0, 1), uniform over it.
     { beam.sample(piece, xi) } -> std::same_as<BeamRay>;
+    // A piece's share of the light at a level, exactly. Inline: it is asked
+    // for every sample.
     { beam.share(level) } -> std::same_as<double>;
+    // No ray of the piece reaches the light nearer than this.
     { beam.nearestLightDistance(piece) } -> std::same_as<double>;
+    // Pairs of rays across the piece through its central point, one pair
+    // per coordinate, written to rays[] (at most four); returns how many.
+    // Their means less the central value are the piece's second differences.
     { beam.probeRays(piece, rays) } -> std::same_as<int>;
+    // The central ray's and each probe ray's weight in a rule exact for
+    // quadratics over the piece; they sum to 1.
     { beam.ruleWeights(piece) } -> std::same_as<std::pair<double, double>>;
+    // Where the piece lies against the plane through the apex with this
+    // normal: Unknown where only rays can tell.
     { beam.horizonSide(piece, direction) } -> std::same_as<HorizonSide>;
+    // The emitter's weighting along a direction. Inline: it is asked for
+    // every sample.
     { beam.emission(direction) } -> std::same_as<double>;
 };
 
-// The grid of an area light seen from one point: the ray toward the light's
-// point (s, t) in [0, 1]^2, and the emitter's weighting along a direction.
+// The grid of an area light seen from one point (render/grid_light.hpp).
 template <class G>
 concept AreaLightGridPoints = requires(const G& grid, double s, const Vec3& direction) {
+    // The ray toward the light's point (s, t) in [0, 1]^2 and the distance to it.
     { grid.toward(s, s) } -> std::same_as<BeamRay>;
+    // The emitter's weighting along a direction.
     { grid.emission(direction) } -> std::same_as<double>;
 };
 
-// What every light form answers: its name (as the docs and statistics call
-// it) and its size (area, length, disc area; 0 for a point).
+// What every light form answers.
 template <class L>
 concept LightFormBasics = requires(const L& light) {
+    // Its name, as the docs and the scene call it.
     { L::kName } -> std::convertible_to<const char*>;
+    // The size its power is spread over (area, length, disc area; 0 for a
+    // point): its intensity is colour / size.
     { light.size() } -> std::same_as<double>;
 };
 
@@ -76,10 +103,17 @@ template <class L>
 concept AreaLightForm = LightFormBasics<L> && AreaLightBeam<typename L::Beam> &&
                         AreaLightGridPoints<typename L::GridPoints> &&
                         requires(const L& light, const Vec3& point, double tMin) {
+    // Its beam from a point, rays starting at distance tMin; none where the
+    // point sees no beam (in the light's plane, on its line, inside it).
     { light.beamFrom(point, tMin) } -> std::same_as<std::optional<typename L::Beam>>;
+    // Its grid's points as seen from a point; none where the point sees none.
     { light.gridFrom(point) } -> std::same_as<std::optional<typename L::GridPoints>>;
+    // Whether the beam from an apex toward the light holds a point (the
+    // apex behind the surface, render/area_light_shadow.hpp).
     { light.beamHolds(point, point) } -> std::same_as<bool>;
+    // Half its width: the scale its beam's cross-section grows toward.
     { light.halfWidth() } -> std::same_as<double>;
+    // A box that holds it.
     { light.bounds() } -> std::same_as<Bounds3>;
 };
 

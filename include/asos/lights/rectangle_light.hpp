@@ -34,8 +34,7 @@ struct RectangleLight {
 
     // Its area.
     double size() const { return glm::length(glm::cross(edgeA, edgeB)); }
-    // Half the side of the square of its area: the scale of its beam's
-    // cross-section (render/area_light_shadow.hpp, the apex behind).
+    // Half the side of the square of its area.
     double halfWidth() const { return 0.5 * std::sqrt(size()); }
     Bounds3 bounds() const {
         Bounds3 b = Bounds3::of(corner);
@@ -44,65 +43,45 @@ struct RectangleLight {
         b.extend(corner + edgeA + edgeB);
         return b;
     }
-    // Whether the beam from `apex` toward the light holds point `p`: the
-    // ray from the apex through p meets the parallelogram.
+    // The ray from the apex through p meets the parallelogram.
     bool beamHolds(const Vec3& apex, const Vec3& p) const;
-
+    // None where the apex lies in the light's plane (below rounding): it
+    // sees the light edge on and receives nothing.
     class Beam;
-    // The beam from `apex`, its rays starting at distance tMin; none when
-    // the apex lies in the light's plane (below rounding), which sees the
-    // light edge on and receives nothing.
     std::optional<Beam> beamFrom(const Vec3& apex, double tMin) const;
-
     class GridPoints;
-    // The grid's points as seen from `point` (never none).
     std::optional<GridPoints> gridFrom(const Vec3& point) const;
 };
 
+// The answers of an AreaLightBeam (lights/light_form.hpp) for a rectangle.
 class RectangleLight::Beam {
 public:
-    static constexpr int kChildren = 4;
-    // The paper's "Proximity to One Edge" halving holds for quarters: a
-    // straight occluder edge is a straight line in the light's plane.
+    static constexpr int kChildren = 4;  // quarters
+    // A straight occluder edge is a straight line in the light's plane.
     static constexpr bool kSingleEdgeHalving = true;
 
-    // The whole light: the level-0 piece.
     LightPiece root() const;
-    // The four quarters of `piece`, written to out[]; returns 4. Without
-    // `cones` their cones are left empty (pieces only sampled by rays).
     int split(const LightPiece& piece, LightPiece* out, bool cones = true) const;
-    // The pieces `depth` levels below `piece`, without cones, each passed
-    // to f(const LightPiece&) in the order repeated split()s give them, with
-    // the same regions, paths and central rays (bit for bit), made without
-    // the levels between (point samples at MAX: docs/lights.md, "Speed").
+    // Made without the levels between.
     template <class F>
     void forEachDescendant(const LightPiece& piece, int depth, F&& f) const {
         descend(piece.a0, piece.b0, piece.a1, piece.b1, piece.level, piece.path, depth, f);
     }
-    // The central points of those pieces as a lattice, down to
-    // LightLattice::kMaxDepth levels.
     std::optional<LightLattice> lattice(const LightPiece& piece, int depth) const {
         if (depth < 0 || depth > LightLattice::kMaxDepth) return std::nullopt;
         return LightLattice::ofRectangle(apex_, light_.corner, light_.edgeA, light_.edgeB, piece, depth);
     }
 
-    // A ray inside the piece from two numbers in [0, 1), uniform over its area.
     BeamRay sample(const LightPiece& piece, const Vec2& xi) const;
-    // The piece's share of the light: 4^-level. Inline: asked for every sample.
-    double share(int level) const { return exactShare(2 * level); }
-    // No ray of the piece reaches the light nearer than this: the distance
-    // to the apex's foot clamped to the piece (a lower bound, the height
-    // above the plane, for other parallelograms).
+    double share(int level) const { return exactShare(2 * level); }  // 4^-level
+    // The distance to the apex's foot clamped to the piece; for other
+    // parallelograms a lower bound, the height above the plane.
     double nearestLightDistance(const LightPiece& piece) const;
-    // The rays toward the midpoints of the piece's opposite edges, two pairs
-    // (their means less the central value are its second differences);
-    // returns 4.
+    // Toward the midpoints of the piece's opposite edges: 4.
     int probeRays(const LightPiece& piece, BeamRay* out) const;
-    // The weights of the central ray and of each probe ray in a rule exact
-    // for quadratics over a square piece.
+    // A square piece's.
     std::pair<double, double> ruleWeights(const LightPiece&) const { return {1.0 / 3.0, 1.0 / 6.0}; }
-    // Whether the plane through the apex with this normal crosses the piece,
-    // exactly up to rounding (Across where it is in doubt): the height of a
+    // Exact up to rounding (Across where it is in doubt): the height of a
     // point of the light above the plane is affine in its coordinates, so
     // its range over the piece is at the piece's corners.
     HorizonSide horizonSide(const LightPiece& piece, const Vec3& normal) const {
@@ -115,8 +94,7 @@ public:
         if (hi < -margin) return HorizonSide::Below;
         return HorizonSide::Across;
     }
-    // The emitter's weighting along a direction: |cos theta| to the normal.
-    // Inline: asked for every sample.
+    // |cos theta| to the normal.
     double emission(const Vec3& dir) const { return std::abs(dot3(normal_, dir)); }
 
 private:
@@ -149,13 +127,14 @@ private:
     double footS_ = 0.0, footT_ = 0.0, height_ = 0.0;
 };
 
+// The answers of AreaLightGridPoints (lights/light_form.hpp) for a rectangle.
 class RectangleLight::GridPoints {
 public:
-    // The ray toward the point (s, t) of the light and the distance to it.
     BeamRay toward(double s, double t) const {
         return rayToward(point_, light_.corner + s * light_.edgeA + t * light_.edgeB);
     }
-    // The emitter's weighting along a direction: |cos theta| to the normal.
+    // |cos theta| to the normal (normalised as the grid always has: its
+    // images depend on these bits).
     double emission(const Vec3& dir) const { return std::abs(glm::dot(normal_, dir)); }
 
 private:

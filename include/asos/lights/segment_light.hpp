@@ -29,8 +29,6 @@ struct SegmentLight {
 
     // Its length.
     double size() const { return length; }
-    // Half its length: the scale of its beam's cross-section
-    // (render/area_light_shadow.hpp, the apex behind).
     double halfWidth() const { return 0.5 * length; }
     Bounds3 bounds() const {
         // The end as the beams make it (start + the edge): the same box.
@@ -38,76 +36,59 @@ struct SegmentLight {
         b.extend(start + (end - start));
         return b;
     }
-    // Whether the beam from `apex` toward the light holds point `p`. A
-    // triangle holds no area: p's projection onto the triangle's plane lies
-    // in it (so the beam spans p's extent along the light).
+    // A triangle holds no area: p's projection onto the triangle's plane
+    // lies in it (so the beam spans p's extent along the light).
     bool beamHolds(const Vec3& apex, const Vec3& p) const;
-
+    // None where the apex lies on the segment's line (below rounding).
     class Beam;
-    // The beam from `apex`, its rays starting at distance tMin; none when
-    // the apex lies on the segment's line (below rounding).
     std::optional<Beam> beamFrom(const Vec3& apex, double tMin) const;
-
     class GridPoints;
-    // The grid's points as seen from `point` (never none).
     std::optional<GridPoints> gridFrom(const Vec3& point) const;
 };
 
+// The answers of an AreaLightBeam (lights/light_form.hpp) for a segment.
 class SegmentLight::Beam {
 public:
-    static constexpr int kChildren = 2;
-    // The paper's "Proximity to One Edge" halving holds for halves: a
-    // straight occluder edge crosses the segment at one point.
+    static constexpr int kChildren = 2;  // halves
+    // A straight occluder edge crosses the segment at one point.
     static constexpr bool kSingleEdgeHalving = true;
 
-    // The whole light: the level-0 piece.
     LightPiece root() const { return make(0.0, 1.0, 0, 0, true); }
-    // The two halves of `piece`, written to out[]; returns 2. Without
-    // `cones` their cones are left empty (pieces only sampled by rays).
     int split(const LightPiece& piece, LightPiece* out, bool cones = true) const {
         const double mid = 0.5 * (piece.a0 + piece.a1);
         out[0] = make(piece.a0, mid, piece.level + 1, 2 * piece.path, cones);
         out[1] = make(mid, piece.a1, piece.level + 1, 2 * piece.path + 1, cones);
         return kChildren;
     }
-    // The pieces `depth` levels below `piece`, without cones, each passed
-    // to f(const LightPiece&) in the order repeated split()s give them, with
-    // the same regions, paths and central rays (bit for bit), made without
-    // the levels between.
+    // Made without the levels between.
     template <class F>
     void forEachDescendant(const LightPiece& piece, int depth, F&& f) const {
         descend(piece.a0, piece.a1, piece.level, piece.path, depth, f);
     }
-    // The central points of those pieces as a lattice of one row, down to
-    // LightLattice::kMaxDepth levels.
+    // One row.
     std::optional<LightLattice> lattice(const LightPiece& piece, int depth) const {
         if (depth < 0 || depth > LightLattice::kMaxDepth) return std::nullopt;
         return LightLattice::ofSegment(apex_, corner_, edgeA_, piece, depth);
     }
 
-    // A ray inside the piece from the first of two numbers in [0, 1),
-    // uniform over its length.
+    // From the first number.
     BeamRay sample(const LightPiece& piece, const Vec2& xi) const {
         return apex_.toward(corner_ + (piece.a0 + xi.x * (piece.a1 - piece.a0)) * edgeA_);
     }
-    // The piece's share of the light: 2^-level. Inline: asked for every sample.
-    double share(int level) const { return exactShare(level); }
-    // No ray of the piece reaches the light nearer than this.
+    double share(int level) const { return exactShare(level); }  // 2^-level
     double nearestLightDistance(const LightPiece& piece) const {
         const Vec3 nearest = corner_ + std::clamp(footS_, piece.a0, piece.a1) * edgeA_;
         return glm::length(nearest - apex_.point) * (1.0 - 1e-12);
     }
-    // The rays toward the piece's two ends (their mean less the central
-    // value is its second difference); returns 2.
+    // Toward the piece's two ends: 2.
     int probeRays(const LightPiece& piece, BeamRay* out) const {
         out[0] = apex_.toward(corner_ + piece.a0 * edgeA_);
         out[1] = apex_.toward(corner_ + piece.a1 * edgeA_);
         return 2;
     }
-    // Simpson's rule: the central ray's weight and each end's.
+    // Simpson's rule.
     std::pair<double, double> ruleWeights(const LightPiece&) const { return {2.0 / 3.0, 1.0 / 6.0}; }
-    // Whether the plane through the apex with this normal crosses the piece,
-    // exactly up to rounding (Across where it is in doubt): the height of a
+    // Exact up to rounding (Across where it is in doubt): the height of a
     // point of the segment above the plane is affine along it.
     HorizonSide horizonSide(const LightPiece& piece, const Vec3& normal) const {
         const double h0 = glm::dot(normal, corner_ - apex_.point), hA = glm::dot(normal, edgeA_);
@@ -118,8 +99,7 @@ public:
         if (hi < -margin) return HorizonSide::Below;
         return HorizonSide::Across;
     }
-    // The emitter's weighting: the same along every direction.
-    double emission(const Vec3&) const { return 1.0; }
+    double emission(const Vec3&) const { return 1.0; }  // the same every way
 
 private:
     friend struct SegmentLight;
@@ -148,11 +128,11 @@ private:
     double footS_ = 0.0;             // the apex's foot on the line
 };
 
+// The answers of AreaLightGridPoints (lights/light_form.hpp) for a segment.
 class SegmentLight::GridPoints {
 public:
-    // The ray toward the point s of the light (t unused) and the distance to it.
+    // The point s (t unused).
     BeamRay toward(double s, double) const { return rayToward(point_, light_.start + s * (light_.end - light_.start)); }
-    // The emitter's weighting: the same along every direction.
     double emission(const Vec3&) const { return 1.0; }
 
 private:

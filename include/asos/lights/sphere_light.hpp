@@ -37,46 +37,34 @@ struct SphereLight {
 
     // The area of the disc of its radius (the paper's A in I A).
     double size() const { return kPi * radius * radius; }
-    // Its radius: the scale of its beam's cross-section
-    // (render/area_light_shadow.hpp, the apex behind).
     double halfWidth() const { return radius; }
     Bounds3 bounds() const {
         Bounds3 b = Bounds3::of(centre - Vec3(radius));
         b.extend(centre + Vec3(radius));
         return b;
     }
-    // Whether the beam from `apex` toward the light (its tangent cone)
-    // holds point `p`.
+    // The tangent cone from the apex holds p.
     bool beamHolds(const Vec3& apex, const Vec3& p) const;
-
+    // None, and no grid, where the point lies on or inside the sphere.
     class Beam;
-    // The beam from `apex`, its rays starting at distance tMin; none when
-    // the apex lies on or inside the sphere.
     std::optional<Beam> beamFrom(const Vec3& apex, double tMin) const;
-
     class GridPoints;
-    // The grid's points as seen from `point`; none when the point lies on
-    // or inside the sphere.
     std::optional<GridPoints> gridFrom(const Vec3& point) const;
 };
 
+// The answers of an AreaLightBeam (lights/light_form.hpp) for a sphere.
 class SphereLight::Beam {
 public:
-    static constexpr int kChildren = 4;
-    // No "Proximity to One Edge" halving: the central rays of the
-    // equal-area pieces are not placed symmetrically about their parent's.
+    static constexpr int kChildren = 4;  // equal-area pieces
+    // Not for the equal-area pieces: their central rays are not placed
+    // symmetrically about their parent's.
     static constexpr bool kSingleEdgeHalving = false;
 
-    // The whole light: the level-0 piece, the tangent cone.
-    LightPiece root() const;
-    // The four pieces of `piece`, written to out[]; returns 4. Without
-    // `cones` their cones are left empty (pieces only sampled by rays). The
-    // layout of the first levels does not depend on the apex: they come from
-    // discPieceTable().
+    LightPiece root() const;  // the tangent cone
+    // The layout of the first levels does not depend on the apex: they come
+    // from discPieceTable().
     int split(const LightPiece& piece, LightPiece* out, bool cones = true) const;
-    // The pieces `depth` levels below `piece`, without cones, each passed
-    // to f(const LightPiece&) in the order repeated split()s give them, with
-    // the same regions, paths and central rays (bit for bit).
+    // Made from the table where its levels reach.
     template <class F>
     void forEachDescendant(const LightPiece& piece, int depth, F&& f) const {
         const DiscPieceTable& table = discPieceTable();
@@ -95,33 +83,26 @@ public:
     // No lattice: the pieces' central points are no affine image of a grid.
     std::optional<LightLattice> lattice(const LightPiece&, int) const { return std::nullopt; }
 
-    // A ray inside the piece from two numbers in [0, 1), uniform over its
-    // area of the apparent disc.
+    // Uniform over its area of the apparent disc.
     BeamRay sample(const LightPiece& piece, const Vec2& xi) const {
         return tangent_.ray(apex_.point,
                             concentricDisc(piece.a0 + xi.x * (piece.a1 - piece.a0), piece.b0 + xi.y * (piece.b1 - piece.b0)));
     }
-    // The piece's share of the light: 4^-level. Inline: asked for every sample.
-    double share(int level) const { return exactShare(2 * level); }
-    // No ray of the piece reaches the light nearer than this.
+    double share(int level) const { return exactShare(2 * level); }  // 4^-level
     double nearestLightDistance(const LightPiece& piece) const {
         return tangent_.distanceAtRadius(innerRadius(DiscCell{piece.a0, piece.a1, piece.b0, piece.b1}), -1.0) *
                (1.0 - 1e-12);
     }
-    // Two pairs of rays across the piece through its central point: toward
-    // the images of its cell's edges' midpoints (for the whole disc,
-    // opposite points of its rim); returns 4.
+    // Toward the images of its cell's edges' midpoints (for the whole disc,
+    // opposite points of its rim): 4.
     int probeRays(const LightPiece& piece, BeamRay* out) const;
-    // The weights of the central ray and of each probe ray in a rule exact
-    // for quadratics: over the pieces in their equal-area coordinates, and
-    // (1/2, 1/8) over the whole disc.
+    // Over the pieces in their equal-area coordinates; over the whole disc.
     std::pair<double, double> ruleWeights(const LightPiece& piece) const {
         return piece.level == 0 ? std::pair{0.5, 0.125} : std::pair{1.0 / 3.0, 1.0 / 6.0};
     }
-    // Not known without rays: the tracer finds it from the piece's rays.
+    // The tracer finds it from the piece's rays.
     HorizonSide horizonSide(const LightPiece&, const Vec3&) const { return HorizonSide::Unknown; }
-    // The emitter's weighting: the same along every direction.
-    double emission(const Vec3&) const { return 1.0; }
+    double emission(const Vec3&) const { return 1.0; }  // the same every way
 
 private:
     friend struct SphereLight;
@@ -151,12 +132,11 @@ private:
     TangentCone tangent_;
 };
 
+// The answers of AreaLightGridPoints (lights/light_form.hpp) for a sphere.
 class SphereLight::GridPoints {
 public:
-    // The ray toward the image of (s, t) on the apparent disc, to the
-    // sphere's near side.
+    // Through the image of (s, t) on the apparent disc, to the sphere's near side.
     BeamRay toward(double s, double t) const { return tangent_.ray(point_, concentricDisc(s, t)); }
-    // The emitter's weighting: the same along every direction.
     double emission(const Vec3&) const { return 1.0; }
 
 private:
