@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "asos/testing/direction_cone.hpp"
+
 namespace asos {
 
 QuadPyray QuadPyray::make(const Vec3& apex, const std::array<Vec3, 4>& corners, int level,

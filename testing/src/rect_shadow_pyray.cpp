@@ -4,6 +4,9 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "asos/testing/direction_cone.hpp"
+#include "asos/testing/solid_angle.hpp"
+
 namespace asos {
 
 std::optional<RectShadowPyray> RectShadowPyray::make(const Vec3& point, const RectangleLight& light,

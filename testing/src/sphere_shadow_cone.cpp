@@ -4,6 +4,8 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "asos/testing/direction_cone.hpp"
+
 namespace asos {
 
 namespace {

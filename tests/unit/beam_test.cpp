@@ -9,9 +9,11 @@
 #include "asos/geometry/beam_eye.hpp"
 #include "asos/geometry/concentric_disc.hpp"
 #include "asos/geometry/tangent_cone.hpp"
+#include "asos/testing/direction_cone.hpp"
 #include "asos/testing/quad_pyray.hpp"
 #include "asos/testing/rect_shadow_pyray.hpp"
 #include "asos/testing/segment_shadow_pyray.hpp"
+#include "asos/testing/solid_angle.hpp"
 #include "asos/testing/sphere_shadow_cone.hpp"
 #include "random_direction.hpp"
 
