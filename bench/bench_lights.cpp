@@ -37,6 +37,7 @@
 #include "asos/image/image_io.hpp"
 #include "asos/lang/interpreter.hpp"
 #include "asos/render/renderer.hpp"
+#include "asos/testing/culled_grid_light.hpp"
 #include "cli/common/arguments.hpp"
 #include "benchmarks.hpp"
 
@@ -213,7 +214,7 @@ int runBenchLights(const BenchLightsArgs& args) {
         RenderSettings s;
         s.lightMethod = LightMethod::Grid;
         s.lightSamples = linear ? linearReference : args.reference;
-        s.gridLightCulling = true;
+        s.areaLightSampler = culledGridAreaLightSamples;
         if (eyeSamples > 0) {
             s.method = RenderMethod::Jitter;
             s.samples = eyeSamples;

@@ -9,10 +9,11 @@ std::span<const LightSample> areaLightSamples(const Scene& scene, const SceneLig
                                               const AreaLightQuery& query, AreaLightScratch& scratch,
                                               RenderCounters& counters) {
     const LightModel& model = lights[query.lightIndex];
+    const LightSetup& setup = lights.setup();
     const std::span<const LightSample> samples =
-        lights.setup().method == LightMethod::Asos
-            ? asosAreaLightSamples(scene, model, lights.setup().apex, query, scratch, counters)
-            : gridAreaLightSamples(scene, model, query, scratch, counters, lights.setup().gridCulling);
+        setup.sampler                      ? setup.sampler(scene, model, query, scratch, counters)
+        : setup.method == LightMethod::Asos ? asosAreaLightSamples(scene, model, setup.apex, query, scratch, counters)
+                                            : gridAreaLightSamples(scene, model, query, scratch, counters);
     if (!query.diffuseOnly || samples.size() < 2) return samples;
     return mergeDiffuse(samples, scratch.merged);
 }

@@ -93,26 +93,30 @@ PreparedCone preparedCone(const LightPiece& piece, const Cone& cone) {
 }
 
 // The shadow of one area light at one point: detection, then subdivision
-// of the marginal sub-beams level by level.
+// of the marginal sub-beams level by level. One instance per light form:
+// the form is known once per shaded point, and nothing below asks it again.
+template <AreaLightForm Form>
 class BeamShadow {
 public:
     using Item = AreaLightScratch::Item;
     using Node = AreaBeamNode;
+    using Beam = typename Form::Beam;
 
-    BeamShadow(const Scene& scene, const LightModel& model, const AreaLightQuery& query,
-               const Origin& origin, AreaLightScratch& scratch, RenderCounters& counters)
+    BeamShadow(const Scene& scene, const LightModel& model, const Form& form, const Beam& beams,
+               const AreaLightQuery& query, const Origin& origin, AreaLightScratch& scratch,
+               RenderCounters& counters)
         : scene_(scene),
           model_(model),
+          form_(form),
           q_(query),
           origin_(origin),
-          beams_(model, origin.apex, origin.behind ? 0.0 : kTolerance),
+          beams_(beams),
           s_(scratch),
           c_(counters) {
         jitterKey_ = mix64(query.key ^ mix64(0xa5ea11u + query.lightIndex));
     }
 
     void run() {
-        if (!beams_.valid()) return;  // the point lies in the light (its plane, its line, inside it)
         const LightPiece root = beams_.root();
         if (belowHorizon(q_.normal, root)) return;
         if (model_.shadowless) {
@@ -150,8 +154,8 @@ public:
         nodes[0].clear();
         nodes[0].push_back({root, 0, rootCount, false});
         const AsosSettings& settings = model_.asos;
-        const bool halving = beams_.singleEdgeHalving();
-        LightPiece children[LightBeams::kMaxChildren];
+        const bool halving = Beam::kSingleEdgeHalving;
+        LightPiece children[Beam::kChildren];
         int cur = 0;
         for (int level = 0;; ++level) {
             std::vector<Node>& levelNodes = nodes[cur];
@@ -266,7 +270,7 @@ private:
         sampleRay(ray, occluders, count, share);
     }
     // The MAX-beams `depth` levels below `piece` without jitter: their
-    // central rays (LightBeams::forEachCentralRay), each decided as
+    // central rays (of the beam's lattice where it has one), each decided as
     // pointSample decides it, with the occluders' primitives looked up once
     // and the counters kept here (the inner loop of a penumbra).
     void sampleCentralRays(const LightPiece& piece, int depth, const Item* occluders, std::uint32_t count,
@@ -278,18 +282,17 @@ private:
         // pieces). Detection cannot tell so where the point lies next to the
         // occluder (a box or cone standing on the ground), nor from the
         // piece's cone, which reaches past a lattice's samples.
-        const bool latticed = beams_.hasLattice(depth);
-        LightBeams::Lattice lattice;
+        const std::optional<LightLattice> lattice = beams_.lattice(piece, depth);
+        const bool latticed = lattice.has_value();
         Vec3 corners[4];
         int cornerCount = 0;
         if (latticed) {
-            lattice = beams_.lattice(piece, depth);
-            const int i1 = lattice.columns() - 1, j1 = lattice.rows() - 1;
-            corners[cornerCount++] = lattice.offset(0, 0);
-            corners[cornerCount++] = lattice.offset(i1, 0);
+            const int i1 = lattice->columns() - 1, j1 = lattice->rows() - 1;
+            corners[cornerCount++] = lattice->offset(0, 0);
+            corners[cornerCount++] = lattice->offset(i1, 0);
             if (j1 > 0) {
-                corners[cornerCount++] = lattice.offset(0, j1);
-                corners[cornerCount++] = lattice.offset(i1, j1);
+                corners[cornerCount++] = lattice->offset(0, j1);
+                corners[cornerCount++] = lattice->offset(i1, j1);
             }
         } else {
             cornerCount = pyramidAbout(piece.cone, corners);
@@ -333,9 +336,8 @@ private:
                 emitAbove(ray, share);
             }
         };
-        // The lattice's loop with `blocked(dir, t0, t1)` inlined; a lattice
-        // made above is not made again (forEachCentralRay's rays, in its
-        // order, bit for bit).
+        // The lattice's loop with `blocked(dir, t0, t1)` inlined (the central
+        // rays of forEachDescendant's pieces, in its order, bit for bit).
         const auto sample = [&](auto&& blocked, auto summedHere) {
             const auto each = [&](const BeamRay& ray) __attribute__((always_inline)) {
                 ++pieces;
@@ -352,31 +354,31 @@ private:
                 lit(ray, summedHere);
             };
             if (!latticed) {
-                beams_.forEachCentralRay(piece, depth, each);
+                beams_.forEachDescendant(piece, depth, [&](const LightPiece& p) { each(p.central); });
                 return;
             }
-            for (int m = 0; m < lattice.count(); ++m) {
-                const LightBeams::Lattice::Place at = lattice.place(m);
-                each(lattice.ray(at.i, at.j));
+            for (int m = 0; m < lattice->count(); ++m) {
+                const LightLattice::Place at = lattice->place(m);
+                each(lattice->ray(at.i, at.j));
             }
         };
         // One convex occluder clear of the rays' ends (convexShadow): its
         // shadow on the lattice is a convex set's points, found with few
         // tests (ConvexLattice); then the lit samples in the lattice's order.
         const auto sampleConvex = [&](auto&& blocked, auto summedHere) {
-            const ConvexLattice shadow(lattice.columns(), lattice.rows(), [&](int i, int j) {
-                const BeamRay ray = lattice.ray(i, j);
+            const ConvexLattice shadow(lattice->columns(), lattice->rows(), [&](int i, int j) {
+                const BeamRay ray = lattice->ray(i, j);
                 const double t1 = ray.distance - kTolerance;
                 return kTolerance < t1 && blocked(ray.ray.dir, kTolerance, t1);
             });
-            for (int m = 0; m < lattice.count(); ++m) {
-                const LightBeams::Lattice::Place at = lattice.place(m);
+            for (int m = 0; m < lattice->count(); ++m) {
+                const LightLattice::Place at = lattice->place(m);
                 if (shadow.member(at.i, at.j)) continue;
-                const BeamRay ray = lattice.ray(at.i, at.j);
+                const BeamRay ray = lattice->ray(at.i, at.j);
                 if (dot3(q_.normal, ray.ray.dir) < kPovEpsilon) continue;
                 lit(ray, summedHere);
             }
-            pieces += std::uint64_t(lattice.count());
+            pieces += std::uint64_t(lattice->count());
             rays += std::uint64_t(shadow.tests());
         };
         // sample(blocked) with the sum kept in locals where it may be.
@@ -388,7 +390,7 @@ private:
             // One occluder (the common case): its shape's test is resolved
             // once for the whole lattice, with what does not depend on the
             // direction computed once (Primitive::withAnyTestFrom).
-            const bool convex = convexShadow(*first[0].primitive, depth);
+            const bool convex = latticed && convexShadow(*first[0].primitive);
             first[0].primitive->withAnyTestFrom(origin_.apex, [&](const auto& test) {
                 const auto blocked = [&](const Vec3& dir, double t0, double t1) __attribute__((always_inline)) {
                     ++tests;
@@ -421,8 +423,8 @@ private:
         c_.shadowRays += rays;
         c_.rayTests += tests;
     }
-    // Whether one occluder's shadow on the lattice of the MAX-pieces `depth`
-    // levels below a piece is the lattice's points in a convex set, so that
+    // Whether one occluder's shadow on a lattice of MAX-pieces (the beam's
+    // lattice below a piece) is the lattice's points in a convex set, so that
     // ConvexLattice may find it: a convex occluder (Primitive::convex); rays
     // from the shaded point, each tested from the shadow tolerance to the
     // tolerance before the light; the occluder farther than twice the
@@ -431,14 +433,14 @@ private:
     // the point to the ray's light point meets the occluder, and the light
     // points for which it does are a convex set's (docs/lights.md, "Convex
     // occluders").
-    bool convexShadow(const Primitive& occluder, int depth) const {
-        if (origin_.behind || !beams_.hasLattice(depth) || !occluder.bounded() || !occluder.convex()) return false;
+    bool convexShadow(const Primitive& occluder) const {
+        if (origin_.behind || !occluder.bounded() || !occluder.convex()) return false;
         const Bounds3 b = occluder.worldBounds();
         const double margin = 2.0 * kTolerance;
         const Vec3& a = origin_.apex;
         const Vec3 gap = glm::max(glm::max(b.lo - a, a - b.hi), Vec3(0.0));
         if (!(glm::dot(gap, gap) > margin * margin)) return false;
-        const Bounds3 light = beams_.lightBounds();
+        const Bounds3 light = form_.bounds();
         for (int axis = 0; axis < 3; ++axis)
             if (b.lo[axis] > light.hi[axis] + margin || b.hi[axis] < light.lo[axis] - margin) return true;
         return false;
@@ -470,7 +472,7 @@ private:
     // pieces it leaves (docs/lights.md, "Detection where it pays": with the
     // cheaper samples of FrustumFromOrigin, three for quarters took less time
     // than two).
-    int undetectedLevels() const { return beams_.shape() == LightShape::Segment ? 4 : 3; }
+    static constexpr int undetectedLevels() { return Beam::kChildren == 2 ? 4 : 3; }
 
     // Whether the stopping rule could stop at the next level (of pieces each
     // `childShare` of the light) if the children of this level's marginal
@@ -480,7 +482,7 @@ private:
     // central rays say. s_.tally holds this level's tally (in + out: the
     // beams listing each occluder).
     bool detectionMayStop(double childShare, double eps) const {
-        const int perSplit = beams_.shape() == LightShape::Segment ? 2 : 4;
+        const int perSplit = Beam::kChildren;
         double least = 0.0;
         for (const SubdivisionTally::Entry& e : s_.tally.entries()) {
             const int n = perSplit * (e.in + e.out);
@@ -562,7 +564,7 @@ private:
     // that error is negligible (below EPS / 64 of the piece's share) the
     // central ray alone carries the piece; where half the sum is within EPS,
     // a rule exact for quadratics: the central ray and the probes
-    // (LightBeams::ruleWeights); otherwise the pieces are refined alike,
+    // (the beam's ruleWeights); otherwise the pieces are refined alike,
     // down to MAX.
     //
     // The tangent plane (the horizon) through a piece is the exception: the
@@ -572,7 +574,7 @@ private:
     // across it: such a piece is refined to MAX, where its central ray alone
     // carries it, as a grid point would. Rectangles and segments know exactly
     // and without rays whether the horizon crosses a piece
-    // (LightBeams::horizonSide); sphere pieces find it from their five
+    // (the beam's horizonSide); sphere pieces find it from their five
     // directions.
     void refineLit(const LightPiece& piece) {
         const bool deepest = piece.level >= model_.asos.maxLevel;
@@ -624,7 +626,7 @@ private:
     // here. A child wholly below the horizon carries nothing, as if it had
     // been left out.
     void refineChildren(const LightPiece& piece) {
-        LightPiece children[LightBeams::kMaxChildren];
+        LightPiece children[Beam::kChildren];
         const int count = beams_.split(piece, children, false);
         for (int i = 0; i < count; ++i) refineLit(children[i]);
     }
@@ -652,61 +654,21 @@ private:
 
     const Scene& scene_;
     const LightModel& model_;
+    const Form& form_;
     const AreaLightQuery& q_;
     const Origin& origin_;
-    LightBeams beams_;
+    Beam beams_;
     AreaLightScratch& s_;
     RenderCounters& c_;
     std::uint64_t jitterKey_ = 0;
 };
 
-// Whether the beam from `apex` toward the light holds footprint point `f`.
-bool beamHolds(const LightModel& m, const Vec3& apex, const Vec3& f) {
-    const Vec3 d = f - apex;
-    switch (m.shape) {
-        case LightShape::Rectangle: {
-            const LightRectangle& r = m.rectangle;
-            const Vec3 n = glm::cross(r.edgeA, r.edgeB);
-            const double along = glm::dot(d, n);
-            if (along == 0.0) return false;
-            const double t = glm::dot(r.corner - apex, n) / along;
-            if (!(t > 0.0)) return false;
-            const Vec3 rel = apex + t * d - r.corner;
-            const double nn = glm::dot(n, n);
-            const double s = glm::dot(glm::cross(rel, r.edgeB), n) / nn;
-            const double u = glm::dot(glm::cross(r.edgeA, rel), n) / nn;
-            return s >= 0.0 && s <= 1.0 && u >= 0.0 && u <= 1.0;
-        }
-        case LightShape::Segment: {
-            // A triangle cannot hold an area: it must span the footprint's
-            // extent along the light, i.e. hold the footprint point's
-            // projection onto the triangle's plane.
-            const Vec3 a = m.start - apex, b = m.end - apex;
-            const Vec3 normal = glm::cross(a, b);
-            const double length = glm::length(normal);
-            if (!(length > 0.0)) return false;
-            const Vec3 unit = normal / length;
-            const Vec3 p = d - glm::dot(d, unit) * unit;
-            return glm::dot(glm::cross(a, p), unit) >= 0.0 && glm::dot(glm::cross(p, b), unit) >= 0.0 &&
-                   glm::dot(p, a + b) > 0.0;
-        }
-        case LightShape::Sphere: {
-            const Vec3 toCentre = m.position - apex;
-            const double distance = glm::length(toCentre);
-            if (!(distance > m.radius)) return false;
-            return angleBetween(d, toCentre) <= std::asin(m.radius / distance);
-        }
-        case LightShape::Point: break;
-    }
-    return false;
-}
-
-}  // namespace
-
-std::optional<Vec3> behindApex(const LightModel& model, const Vec3& point, const Vec3& normal,
-                               const Footprint& footprint) {
-    if (!model.isArea() || !footprint.onTangentPlane()) return std::nullopt;
-    const Vec3 toLight = model.position - point;
+// behindApex, for the light's form: `centre`, the light's position.
+template <AreaLightForm Form>
+std::optional<Vec3> behindApexOf(const Form& light, const Vec3& centre, const Vec3& point, const Vec3& normal,
+                                 const Footprint& footprint) {
+    if (!footprint.onTangentPlane()) return std::nullopt;
+    const Vec3 toLight = centre - point;
     const double distance = glm::length(toLight);
     if (!(distance > 0.0)) return std::nullopt;
     const Vec3 axis = toLight / distance;
@@ -718,16 +680,12 @@ std::optional<Vec3> behindApex(const LightModel& model, const Vec3& point, const
     if (!(reach > 0.0)) return std::nullopt;
     const auto holds = [&](double h) {
         const Vec3 apex = point - h * axis;
-        return std::all_of(corners.begin(), corners.end(),
-                           [&](const Vec3& c) { return beamHolds(model, apex, c); });
+        return std::all_of(corners.begin(), corners.end(), [&](const Vec3& c) { return light.beamHolds(apex, c); });
     };
     // The beam's cross-section at the surface grows with the distance behind
     // it, toward the light's own size: start from the similar-triangles
     // estimate, double until it holds, then halve the bracket.
-    const double lightRadius =
-        model.shape == LightShape::Sphere ? model.radius
-        : model.shape == LightShape::Segment ? 0.5 * model.size
-                                             : 0.5 * std::sqrt(model.size);
+    const double lightRadius = light.halfWidth();
     double hi = reach * distance / std::max(lightRadius - reach, 0.125 * lightRadius);
     const double farthest = 1e3 * distance;
     while (!holds(hi)) {
@@ -742,34 +700,16 @@ std::optional<Vec3> behindApex(const LightModel& model, const Vec3& point, const
     return point - hi * axis;
 }
 
-WholeLight wholeLightVisibility(const Scene& scene, const LightModel& model, const AreaLightQuery& q,
-                                RenderCounters& counters) {
-    const LightBeams beams(model, q.point, kTolerance);
-    if (!beams.valid()) return WholeLight::Partial;
-    const LightPiece root = beams.root();
-    const PreparedCone prepared(root.cone);
-    const double nearestLight = beams.nearestLightDistance(root) - kTolerance;
-    bool any = false, blocked = false;
-    scene.coneCandidates(root.cone, [&](std::uint32_t object) {
-        if (blocked || scene.object(object).noShadow) return;
-        if (object == q.shadedObject && !q.shadedCanSelfShadow) return;
-        ++counters.coneTests;
-        const ConeClass k = scene.primitive(object).classify(prepared);
-        if (k.coverage == Coverage::Miss) return;
-        any = true;
-        blocked = k.coverage == Coverage::Full && k.tFar < nearestLight;
-    });
-    return blocked ? WholeLight::Blocked : (any ? WholeLight::Partial : WholeLight::Lit);
-}
-
-std::span<const LightSample> asosAreaLightSamples(const Scene& scene, const LightModel& model,
-                                                  ShadowApex apex, const AreaLightQuery& query,
-                                                  AreaLightScratch& scratch, RenderCounters& counters) {
-    scratch.samples.clear();
+// The ASOS samples of area light `light` (the model's form), into the
+// scratch's samples or its diffuse sum.
+template <AreaLightForm Form>
+void beamSamples(const Form& light, const Scene& scene, const LightModel& model, ShadowApex apex,
+                 const AreaLightQuery& query, AreaLightScratch& scratch, RenderCounters& counters) {
     Origin origin;
     origin.apex = query.point;
     if (apex == ShadowApex::Behind && query.footprint) {
-        if (const std::optional<Vec3> a = behindApex(model, query.point, query.normal, *query.footprint)) {
+        if (const std::optional<Vec3> a =
+                behindApexOf(light, model.position, query.point, query.normal, *query.footprint)) {
             origin.apex = *a;
             origin.behind = true;
             origin.normal = query.normal;
@@ -777,8 +717,29 @@ std::span<const LightSample> asosAreaLightSamples(const Scene& scene, const Ligh
             if (!(origin.depth > 0.0)) origin = Origin{query.point};
         }
     }
+    // No beam where the point lies in the light (its plane, its line, inside it).
+    if (const std::optional<typename Form::Beam> beams = light.beamFrom(origin.apex, origin.behind ? 0.0 : kTolerance))
+        BeamShadow<Form>(scene, model, light, *beams, query, origin, scratch, counters).run();
+}
+
+}  // namespace
+
+std::optional<Vec3> behindApex(const LightModel& model, const Vec3& point, const Vec3& normal,
+                               const Footprint& footprint) {
+    std::optional<Vec3> apex;
+    withAreaForm(model.form,
+                 [&](const auto& light) { apex = behindApexOf(light, model.position, point, normal, footprint); });
+    return apex;
+}
+
+std::span<const LightSample> asosAreaLightSamples(const Scene& scene, const LightModel& model,
+                                                  ShadowApex apex, const AreaLightQuery& query,
+                                                  AreaLightScratch& scratch, RenderCounters& counters) {
+    scratch.samples.clear();
     scratch.diffuseSum.clear();
-    if (model.isArea()) BeamShadow(scene, model, query, origin, scratch, counters).run();
+    withAreaForm(model.form, [&](const auto& light) {
+        beamSamples(light, scene, model, apex, query, scratch, counters);
+    });
     if (!query.diffuseOnly) return scratch.samples;
     // The samples were summed as they were made (BeamShadow::add): the one
     // sample that lights the point as all of them (mergeDiffuse), or none

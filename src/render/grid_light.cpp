@@ -4,94 +4,32 @@
 #include <cmath>
 #include <optional>
 
-#include "asos/geometry/beam_sphere.hpp"
-#include "asos/render/area_light_shadow.hpp"
-
 namespace asos {
 
 namespace {
 
 constexpr double kTolerance = kPovShadowTolerance;
 
-// The light's points by their coordinates (s, t) in [0, 1]^2 (a segment
-// uses s), as seen from the shaded point.
-class LightPoints {
-public:
-    LightPoints(const LightModel& model, const Vec3& point) : model_(model), point_(point) {
-        if (model.shape == LightShape::Rectangle)
-            normal_ = glm::normalize(glm::cross(model.rectangle.edgeA, model.rectangle.edgeB));
-        if (model.shape == LightShape::Sphere)
-            sphere_ = SphereShadowCone::make(point, model.position, model.radius, 0.0);
-    }
-
-    // False when the point sees no light (inside the spherical light).
-    bool usable() const { return model_.shape != LightShape::Sphere || sphere_.has_value(); }
-
-    // The ray toward a light point and the distance to it; the light point
-    // itself for a sphere is where the direction meets its near side.
-    BeamRay toward(double s, double t) const {
-        Vec3 target(0.0);
-        switch (model_.shape) {
-            case LightShape::Rectangle: {
-                const LightRectangle& r = model_.rectangle;
-                target = r.corner + s * r.edgeA + t * r.edgeB;
-                break;
-            }
-            case LightShape::Segment: target = model_.start + s * (model_.end - model_.start); break;
-            case LightShape::Sphere: {
-                const Vec2 disc = concentricDisc(s, t);
-                return sphere_->rayAt(disc.x, disc.y);
-            }
-            case LightShape::Point: target = model_.position; break;
-        }
-        const Vec3 offset = target - point_;
-        const double distance = glm::length(offset);
-        return {Ray{point_, distance > 0.0 ? offset / distance : Vec3(0.0)}, distance};
-    }
-
-    // The emitter's weighting along a direction: cos theta for a rectangle.
-    double emission(const Vec3& dir) const {
-        return model_.shape == LightShape::Rectangle ? std::abs(glm::dot(normal_, dir)) : 1.0;
-    }
-
-private:
-    const LightModel& model_;
-    Vec3 point_;
-    Vec3 normal_{0.0};
-    std::optional<SphereShadowCone> sphere_;
-};
-
-}  // namespace
-
-std::span<const LightSample> gridAreaLightSamples(const Scene& scene, const LightModel& model,
-                                                  const AreaLightQuery& q, AreaLightScratch& s,
-                                                  RenderCounters& counters, bool culling) {
-    s.samples.clear();
-    const LightPoints light(model, q.point);
-    if (!light.usable()) return s.samples;
-    // With culling, a whole-light verdict stands for every ray (adaptive
-    // sampling, whose choices depend on the rays, traces them anyway).
-    std::optional<bool> allVisible;
-    if (culling && !model.shadowless && !model.adaptive) {
-        switch (wholeLightVisibility(scene, model, q, counters)) {
-            case WholeLight::Lit: allVisible = true; break;
-            case WholeLight::Blocked: return s.samples;
-            case WholeLight::Partial: break;
-        }
-    }
+// The samples of area light `form` (the model's): its grid's points seen
+// from the shaded point.
+template <AreaLightForm Form>
+void gridSamples(const Form& form, const Scene& scene, const LightModel& model,
+                                         const AreaLightQuery& q, AreaLightScratch& s, RenderCounters& counters) {
+    const std::optional<typename Form::GridPoints> light = form.gridFrom(q.point);
+    if (!light) return;  // the point sees no light (inside a spherical one)
     const int n1 = std::max(model.count1, 1);
-    const int n2 = model.shape == LightShape::Segment ? 1 : std::max(model.count2, 1);
+    const int n2 = std::max(model.count2, 1);  // 1 for a segment
     const std::uint64_t key = mix64(q.key ^ mix64(0x9e1d0u + q.lightIndex));
     auto jitter = [&](int i, int j) {
         return q.rng.uniform2(SampleStream::LightJitter, mix64(key ^ (std::uint64_t(j) << 32 | std::uint32_t(i))));
     };
     auto blocked = [&](const BeamRay& ray) {
-        if (allVisible || model.shadowless || !(ray.distance > 2.0 * kTolerance)) return false;
+        if (model.shadowless || !(ray.distance > 2.0 * kTolerance)) return false;
         ++counters.shadowRays;
         return scene.occluded(ray.ray, kTolerance, ray.distance - kTolerance);
     };
     auto sampleOf = [&](const BeamRay& ray, double weight) {
-        return LightSample{ray.ray.dir, ray.distance, model.color * (weight * light.emission(ray.ray.dir))};
+        return LightSample{ray.ray.dir, ray.distance, model.color * (weight * light->emission(ray.ray.dir))};
     };
 
     if (!model.adaptive) {
@@ -102,11 +40,11 @@ std::span<const LightSample> gridAreaLightSamples(const Scene& scene, const Ligh
         for (int j = 0; j < n2; ++j)
             for (int i = 0; i < n1; ++i) {
                 const Vec2 xi = model.jitter ? jitter(i, j) : Vec2(0.5);
-                const BeamRay ray = light.toward((i + xi.x) / n1, (j + xi.y) / n2);
+                const BeamRay ray = light->toward((i + xi.x) / n1, (j + xi.y) / n2);
                 if (glm::dot(q.normal, ray.ray.dir) < kPovEpsilon) continue;
                 if (!blocked(ray)) s.samples.push_back(sampleOf(ray, weight));
             }
-        return s.samples;
+        return;
     }
 
     // POV-Ray's adaptive scheme over its lattice from edge to edge: each
@@ -125,7 +63,7 @@ std::span<const LightSample> gridAreaLightSamples(const Scene& scene, const Ligh
             // POV-Ray moves a point by up to half a lattice step (here kept on
             // the light).
             const Vec2 xi = model.jitter ? jitter(i, j) - 0.5 : Vec2(0.0);
-            const BeamRay ray = light.toward(coordinate(i + xi.x, n1), coordinate(j + xi.y, n2));
+            const BeamRay ray = light->toward(coordinate(i + xi.x, n1), coordinate(j + xi.y, n2));
             s.gridState[k] = blocked(ray) ? 0 : 1;
             s.gridSamples[k] = sampleOf(ray, 1.0);
         }
@@ -160,6 +98,15 @@ std::span<const LightSample> gridAreaLightSamples(const Scene& scene, const Ligh
         sample.color *= s.gridWeights[k];
         s.samples.push_back(sample);
     }
+}
+
+}  // namespace
+
+std::span<const LightSample> gridAreaLightSamples(const Scene& scene, const LightModel& model,
+                                                  const AreaLightQuery& q, AreaLightScratch& s,
+                                                  RenderCounters& counters) {
+    s.samples.clear();
+    withAreaForm(model.form, [&](const auto& form) { gridSamples(form, scene, model, q, s, counters); });
     return s.samples;
 }
 

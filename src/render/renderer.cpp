@@ -194,7 +194,7 @@ RenderOutput render(const Scene& scene, const RenderSettings& settings) {
     lights.method = effectiveLightMethod(settings);
     lights.samples = settings.lightSamples;
     lights.apex = settings.shadowApex;
-    lights.gridCulling = settings.gridLightCulling;
+    lights.sampler = settings.areaLightSampler;
     lights.sceneSettings = sceneAsosSettings(scene.description().globals, settings.asos);
     const RayTracer tracer(scene, lights);
     const TileRenderOptions options = tileOptions(settings);

@@ -11,7 +11,7 @@
 #include <cmath>
 #include <functional>
 
-#include "asos/geometry/beam_sphere.hpp"
+#include "asos/geometry/concentric_disc.hpp"
 #include "asos/render/area_light.hpp"
 #include "asos/render/area_light_shadow.hpp"
 #include "asos/render/grid_light.hpp"
@@ -84,9 +84,10 @@ double integrate(int m1, int m2, const std::function<double(double, double)>& f)
 // (the 1 / A of I = colour / A cancels the area element's A).
 double exactRectangle(const LightModel& m, const Vec3& p, const Vec3& n,
                       const std::function<bool(const Vec3&, const Vec3&)>& visible = {}) {
-    const Vec3 normal = glm::normalize(glm::cross(m.rectangle.edgeA, m.rectangle.edgeB));
+    const RectangleLight& r = std::get<RectangleLight>(m.form);
+    const Vec3 normal = glm::normalize(glm::cross(r.edgeA, r.edgeB));
     return integrate(400, 400, [&](double s, double t) {
-        const Vec3 y = m.rectangle.corner + s * m.rectangle.edgeA + t * m.rectangle.edgeB;
+        const Vec3 y = r.corner + s * r.edgeA + t * r.edgeB;
         const Vec3 d = glm::normalize(y - p);
         if (visible && !visible(p, y)) return 0.0;
         return std::abs(glm::dot(normal, d)) * std::max(0.0, glm::dot(n, d));
@@ -126,7 +127,7 @@ TEST_CASE("An unoccluded rectangular light is integrated to EPS, near and far, h
         INFO(c.what);
         LightSetupScene s(areaLight(c.position, c.axis1, c.axis2, 4, 4), {});
         const LightModel model = makeLightModel(s.d.lights[0], settings);
-        REQUIRE(model.shape == LightShape::Rectangle);
+        REQUIRE(std::holds_alternative<RectangleLight>(model.form));
         const double exact = exactRectangle(model, c.point, c.normal);
         RenderCounters counters;
         const double asos = s.received(LightMethod::Asos, settings, c.point, c.normal, counters);
@@ -206,8 +207,8 @@ TEST_CASE("A spherical light partly hidden by a sphere: across the penumbra with
     Object occluder = makeObject(SphereShape{occluderCentre, occluderRadius}, litTexture(Vec3(1.0)));
     LightSetupScene s(areaLight(lightCentre, {2, 0, 0}, {0, 0, 2}, 8, 8, true), {occluder});
     const LightModel model = makeLightModel(s.d.lights[0], settings);
-    REQUIRE(model.shape == LightShape::Sphere);
-    REQUIRE(model.radius == 1.0);
+    REQUIRE(std::holds_alternative<SphereLight>(model.form));
+    REQUIRE(std::get<SphereLight>(model.form).radius == 1.0);
     const Vec3 up(0, 1, 0);
     int partial = 0;
     // The umbra ends near x = 0.6 and the penumbra near x = 3.
@@ -252,7 +253,7 @@ TEST_CASE("A linear light over a long box edge: the penumbra profile within EPS"
     Object box = makeObject(BoxShape{{-50, 0, -50}, {50, 1, 0}}, litTexture(Vec3(1.0)));
     LightSetupScene s(areaLight({0, 5, 0}, {0, 0, 2}, {0, 0, 0}, 16, 1), {box});
     const LightModel model = makeLightModel(s.d.lights[0], settings);
-    REQUIRE(model.shape == LightShape::Segment);
+    REQUIRE(std::holds_alternative<SegmentLight>(model.form));
     const Vec3 up(0, 1, 0);
     for (double z0 = 0.01; z0 < 0.3; z0 += 0.02) {
         const Vec3 p(0.3, 0, z0);

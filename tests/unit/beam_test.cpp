@@ -7,11 +7,15 @@
 
 #include "asos/accel/cone_box.hpp"
 #include "asos/geometry/beam_eye.hpp"
-#include "asos/geometry/beam_quad.hpp"
-#include "asos/geometry/beam_rect.hpp"
-#include "asos/geometry/beam_segment.hpp"
-#include "asos/geometry/beam_sphere.hpp"
+#include "asos/geometry/concentric_disc.hpp"
 #include "asos/geometry/frame.hpp"
+#include "asos/geometry/tangent_cone.hpp"
+#include "asos/testing/direction_cone.hpp"
+#include "asos/testing/quad_pyray.hpp"
+#include "asos/testing/rect_shadow_pyray.hpp"
+#include "asos/testing/segment_shadow_pyray.hpp"
+#include "asos/testing/solid_angle.hpp"
+#include "asos/testing/sphere_shadow_cone.hpp"
 #include "random_direction.hpp"
 
 using namespace asos;
@@ -188,7 +192,7 @@ TEST_CASE("Rectangle shadow pyray: quarters tile the light, rays inside the cone
     std::mt19937_64 rng(24);
     std::uniform_real_distribution<double> u01(0.0, 1.0);
     for (int trial = 0; trial < 200; ++trial) {
-        const LightRectangle light{Vec3(u01(rng), 5 + u01(rng), u01(rng)), randomUnit(rng) * (0.1 + 3 * u01(rng)),
+        const RectangleLight light{Vec3(u01(rng), 5 + u01(rng), u01(rng)), randomUnit(rng) * (0.1 + 3 * u01(rng)),
                                    randomUnit(rng) * (0.1 + 3 * u01(rng))};
         // Points near and far, head-on and grazing.
         const Vec3 point = light.corner + randomUnit(rng) * std::pow(10.0, -1.0 + 3.0 * u01(rng));
@@ -224,9 +228,9 @@ TEST_CASE("Rectangle shadow pyray: quarters tile the light, rays inside the cone
         }
     }
     // In the light's plane: no beam. Zero area: an error.
-    const LightRectangle light{Vec3(0.0), Vec3(1, 0, 0), Vec3(0, 1, 0)};
+    const RectangleLight light{Vec3(0.0), Vec3(1, 0, 0), Vec3(0, 1, 0)};
     CHECK_FALSE(RectShadowPyray::make(Vec3(3, 3, 0), light).has_value());
-    CHECK_THROWS_AS(RectShadowPyray::make(Vec3(0, 0, 1), LightRectangle{Vec3(0.0), Vec3(1, 0, 0), Vec3(2, 0, 0)}),
+    CHECK_THROWS_AS(RectShadowPyray::make(Vec3(0, 0, 1), RectangleLight{Vec3(0.0), Vec3(1, 0, 0), Vec3(2, 0, 0)}),
                     std::invalid_argument);
     // Head-on unit square at distance 1 (corner at the foot): cos theta of the
     // central ray and the nearest distance are known.

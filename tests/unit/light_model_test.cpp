@@ -1,9 +1,10 @@
-// The light forms (render/light_model.hpp): which area_light is a rectangle,
+// The light forms (lights/light_model.hpp): which area_light is a rectangle,
 // a segment, a sphere or a point, the grid counts and --light-samples, and
 // what the renderer refuses or warns about.
 #include <catch2/catch.hpp>
 
-#include "asos/render/light_model.hpp"
+#include "asos/lights/light_model.hpp"
+#include "asos/render/scene_lights.hpp"
 
 using namespace asos;
 
@@ -29,11 +30,12 @@ TEST_CASE("area_light forms: rectangle, segment, sphere, point", "[lights]") {
     const Vec3 x(1, 0, 0), z(0, 0, 1);
 
     const LightModel rect = makeLightModel(withArea(2.0 * x, 3.0 * z, 4, 5), scene);
-    CHECK(rect.shape == LightShape::Rectangle);
-    CHECK(rect.rectangle.corner == Vec3(0, 5, 0.5));
-    CHECK(rect.rectangle.edgeA == 2.0 * x);
-    CHECK(rect.rectangle.edgeB == 3.0 * z);
-    CHECK(rect.size == 6.0);
+    REQUIRE(std::holds_alternative<RectangleLight>(rect.form));
+    const RectangleLight& r = std::get<RectangleLight>(rect.form);
+    CHECK(r.corner == Vec3(0, 5, 0.5));
+    CHECK(r.edgeA == 2.0 * x);
+    CHECK(r.edgeB == 3.0 * z);
+    CHECK(rect.size() == 6.0);
     CHECK(rect.intensity() == Vec3(0.5, 1.0, 2.0) / 6.0);
     CHECK((rect.count1 == 4 && rect.count2 == 5));
     CHECK_FALSE(rect.adaptive);
@@ -41,22 +43,22 @@ TEST_CASE("area_light forms: rectangle, segment, sphere, point", "[lights]") {
     // A zero axis, or a count of 1: a segment along the other axis.
     for (const Light& l : {withArea(2.0 * x, Vec3(0.0), 8, 3), withArea(2.0 * x, z, 8, 1)}) {
         const LightModel seg = makeLightModel(l, scene);
-        CHECK(seg.shape == LightShape::Segment);
-        CHECK(seg.start == Vec3(0, 5, 2));
-        CHECK(seg.end == Vec3(2, 5, 2));
-        CHECK(seg.size == 2.0);
+        REQUIRE(std::holds_alternative<SegmentLight>(seg.form));
+        CHECK(std::get<SegmentLight>(seg.form).start == Vec3(0, 5, 2));
+        CHECK(std::get<SegmentLight>(seg.form).end == Vec3(2, 5, 2));
+        CHECK(seg.size() == 2.0);
         CHECK((seg.count1 == 8 && seg.count2 == 1));
     }
     const LightModel along2 = makeLightModel(withArea(x, 4.0 * z, 1, 6), scene);
-    CHECK(along2.shape == LightShape::Segment);
-    CHECK(along2.end - along2.start == 4.0 * z);
+    REQUIRE(std::holds_alternative<SegmentLight>(along2.form));
+    CHECK(std::get<SegmentLight>(along2.form).end - std::get<SegmentLight>(along2.form).start == 4.0 * z);
     CHECK(along2.count1 == 6);
 
     // 1 x 1, or both axes zero: a point light, as in POV-Ray.
-    CHECK(makeLightModel(withArea(x, z, 1, 1), scene).shape == LightShape::Point);
-    CHECK(makeLightModel(withArea(Vec3(0.0), Vec3(0.0), 4, 4), scene).shape == LightShape::Point);
+    CHECK_FALSE(makeLightModel(withArea(x, z, 1, 1), scene).isArea());
+    CHECK_FALSE(makeLightModel(withArea(Vec3(0.0), Vec3(0.0), 4, 4), scene).isArea());
     Light plain;
-    CHECK(makeLightModel(plain, scene).shape == LightShape::Point);
+    CHECK(std::holds_alternative<PointLight>(makeLightModel(plain, scene).form));
 
     // circular orient: a sphere of half the first axis's length.
     Light sphere = withArea(3.0 * x, 3.0 * z, 6, 6);
@@ -64,9 +66,10 @@ TEST_CASE("area_light forms: rectangle, segment, sphere, point", "[lights]") {
     sphere.area->adaptive = 1;
     sphere.area->jitter = true;
     const LightModel ball = makeLightModel(sphere, scene);
-    CHECK(ball.shape == LightShape::Sphere);
-    CHECK(ball.radius == 1.5);
-    CHECK(ball.size == Approx(kPi * 2.25));
+    REQUIRE(std::holds_alternative<SphereLight>(ball.form));
+    CHECK(std::get<SphereLight>(ball.form).radius == 1.5);
+    CHECK(std::get<SphereLight>(ball.form).centre == Vec3(1, 5, 2));
+    CHECK(ball.size() == Approx(kPi * 2.25));
     CHECK(ball.adaptive == 1);
     CHECK(ball.jitter);
     CHECK(ball.position == Vec3(1, 5, 2));
@@ -106,7 +109,7 @@ TEST_CASE("Light forms asos refuses or warns about", "[lights]") {
     REQUIRE(orientMessages.size() == 2);  // not circular; unequal axes
     CHECK(orientMessages[0].severity == Severity::Warning);
     CHECK(orientMessages[1].severity == Severity::Warning);
-    CHECK(makeLightModel(oriented, AsosSettings{}).radius == 0.5);
+    CHECK(std::get<SphereLight>(makeLightModel(oriented, AsosSettings{}).form).radius == 0.5);
 
     CHECK_FALSE(check(withArea(x, 2.0 * x, 4, 4)).first);  // parallel axes
     Light negative = withArea(x, z, 4, 4);
@@ -115,7 +118,7 @@ TEST_CASE("Light forms asos refuses or warns about", "[lights]") {
     CHECK_FALSE(check(withArea(x, z, 4, kMaxLightSamplesPerSide + 1)).first);
 }
 
-TEST_CASE("Light method and shadow apex names", "[lights]") {
+TEST_CASE("Light method, shadow apex and light form names", "[lights]") {
     CHECK(parseLightMethod("asos") == LightMethod::Asos);
     CHECK(parseLightMethod("grid") == LightMethod::Grid);
     CHECK_FALSE(parseLightMethod("stochastic"));
@@ -123,5 +126,6 @@ TEST_CASE("Light method and shadow apex names", "[lights]") {
     CHECK(parseShadowApex("behind") == ShadowApex::Behind);
     CHECK(parseShadowApex("surface") == ShadowApex::Surface);
     CHECK_FALSE(parseShadowApex("under"));
-    CHECK(std::string(lightShapeName(LightShape::Segment)) == "linear");
+    CHECK(std::string(lightFormName(LightForm(SegmentLight{}))) == "linear");
+    CHECK(std::string(lightFormName(LightForm{})) == "point");
 }

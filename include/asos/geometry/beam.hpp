@@ -1,13 +1,11 @@
 #pragma once
 // What every beam (pyramidal ray or shadow cone) shares: the rays it hands the
 // tracer and the cones that bound it. The beams themselves: beam_eye.hpp (eye
-// pyrays), beam_quad.hpp (a point light's shadow pyray through a footprint),
-// beam_rect.hpp, beam_segment.hpp and beam_sphere.hpp (shadow beams toward
-// rectangular, linear and spherical lights). docs/accel.md describes
-// them; the paper's "Adaptive Supersampling in Object-Space" and "Distributed
-// Light Sources" sections are what they serve.
-#include <span>
-
+// pyrays), and the light forms' shadow beams toward rectangular, linear and
+// spherical lights (lights/rectangle_light.hpp, segment_light.hpp,
+// sphere_light.hpp). docs/accel.md describes them; the paper's "Adaptive
+// Supersampling in Object-Space" and "Distributed Light Sources" sections are
+// what they serve.
 #include "asos/geometry/cone.hpp"
 #include "asos/geometry/ray.hpp"
 #include "asos/geometry/vec.hpp"
@@ -29,24 +27,5 @@ double angleBetween(const Vec3& a, const Vec3& b);
 // computed for a ray of the beam, so that rounding in those angles (~1e-16)
 // never leaves a ray of the beam outside its cone.
 inline constexpr double kConeAnglePad = 1e-13;
-
-// The axis and half-angle of the smallest circular cone (apex at the origin)
-// holding every given unit direction. The directions must lie in an open
-// hemisphere (then the cone also holds every positive combination of them,
-// i.e. the whole pyramid they span, since its half-angle is below pi/2);
-// otherwise the result is a cone about their mean of half-angle pi (all
-// directions). The half-angle is the largest angle from the axis to a
-// direction plus kConeAnglePad, so the directions are inside despite rounding.
-struct DirectionCone {
-    Vec3 axis{0.0, 0.0, 1.0};
-    double halfAngle = 0.0;
-};
-DirectionCone smallestEnclosingCone(std::span<const Vec3> directions);
-
-// The solid angle of the spherical triangle spanned by three directions (Van
-// Oosterom and Strackee), and of the pyramid over a planar convex polygon's
-// corners as seen from `apex`.
-double solidAngle(const Vec3& a, const Vec3& b, const Vec3& c);
-double solidAngleOfPolygon(const Vec3& apex, std::span<const Vec3> corners);
 
 }  // namespace asos

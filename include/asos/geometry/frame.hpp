@@ -1,6 +1,6 @@
 #pragma once
 // An orthonormal frame around a unit vector: the shadow cones' frames toward
-// a light (geometry/beam_sphere.hpp) and the primitives' local frames
+// a light (geometry/tangent_cone.hpp) and the primitives' local frames
 // (shapes/local_frame.hpp) are built by the same formula.
 #include "asos/geometry/vec.hpp"
 

@@ -13,11 +13,11 @@
 #include <vector>
 
 #include "asos/geometry/cone.hpp"
+#include "asos/lights/light_piece.hpp"
 #include "asos/render/cone_candidates.hpp"
-#include "asos/render/light_beams.hpp"
-#include "asos/render/light_model.hpp"
 #include "asos/render/point_light_shadow.hpp"
 #include "asos/render/sampling.hpp"
+#include "asos/render/scene_lights.hpp"
 #include "asos/render/shading.hpp"
 #include "asos/render/stats.hpp"
 #include "asos/scene/scene.hpp"
@@ -149,7 +149,8 @@ struct AreaLightQuery {
 };
 
 // The samples of an area light at a shaded point, by the lights' method
-// (setup().method) and apex; the span lives in `scratch` until its next use.
+// (setup().method) and apex, or by the setup's own sampler where it has one;
+// the span lives in `scratch` until its next use.
 // A shadowless light is unshadowed. Nothing comes from parts of the light
 // behind the surface.
 std::span<const LightSample> areaLightSamples(const Scene& scene, const SceneLights& lights,

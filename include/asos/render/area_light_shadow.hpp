@@ -29,13 +29,6 @@ std::span<const LightSample> asosAreaLightSamples(const Scene& scene, const Ligh
                                                   ShadowApex apex, const AreaLightQuery& query,
                                                   AreaLightScratch& scratch, RenderCounters& counters);
 
-// What one cone test over the whole light (from the point, as the ASOS beam's
-// detection phase) says of every ray toward it: none is blocked, all are, or
-// it cannot tell.
-enum class WholeLight { Lit, Blocked, Partial };
-WholeLight wholeLightVisibility(const Scene& scene, const LightModel& model, const AreaLightQuery& query,
-                                RenderCounters& counters);
-
 // Where a beam starts behind the surface (ShadowApex::Behind): on the line
 // from the light's centre through `point`, the nearest point behind the
 // surface from which the beam to the light holds every corner of the

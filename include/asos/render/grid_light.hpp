@@ -15,18 +15,17 @@
 // POV-Ray's lattice from edge to edge (i / (n - 1)), jitter moving a point by
 // up to half a step (kept on the light). A spherical light's cells are mapped
 // onto its apparent disc by Shirley and Chiu's equal-area concentric map
-// (geometry/beam_sphere.hpp, concentricDisc), as the ASOS beams' pieces are.
+// (geometry/concentric_disc.hpp), as the ASOS beams' pieces are. Each light
+// form says where its points lie and how it weights them
+// (lights/light_form.hpp, GridPoints).
 #include <span>
 
 #include "asos/render/area_light.hpp"
 
 namespace asos {
 
-// `culling`: skip the rays a cone test over the whole light decides
-// (LightSetup::gridCulling); the samples are the same.
 std::span<const LightSample> gridAreaLightSamples(const Scene& scene, const LightModel& model,
                                                   const AreaLightQuery& query,
-                                                  AreaLightScratch& scratch, RenderCounters& counters,
-                                                  bool culling = false);
+                                                  AreaLightScratch& scratch, RenderCounters& counters);
 
 }  // namespace asos

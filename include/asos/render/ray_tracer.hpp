@@ -12,7 +12,7 @@
 #include <span>
 
 #include "asos/render/area_light.hpp"
-#include "asos/render/light_model.hpp"
+#include "asos/render/scene_lights.hpp"
 #include "asos/render/shading.hpp"
 #include "asos/render/stats.hpp"
 #include "asos/scene/scene.hpp"
@@ -24,7 +24,7 @@ inline const Texture& textureOf(const Object& object) { return *object.texture; 
 
 class RayTracer {
 public:
-    // `lights`: how area lights are shadowed (render/light_model.hpp).
+    // `lights`: how area lights are shadowed (render/scene_lights.hpp).
     explicit RayTracer(const Scene& scene, const LightSetup& lights = {})
         : scene_(scene),
           shading_(ShadingSettings::from(scene.description().globals)),

@@ -14,7 +14,7 @@
 #include "asos/diag/diagnostics.hpp"
 #include "asos/image/image.hpp"
 #include "asos/render/classic_methods.hpp"
-#include "asos/render/light_model.hpp"
+#include "asos/render/scene_lights.hpp"
 #include "asos/render/stats.hpp"
 #include "asos/render/tile_renderer.hpp"
 #include "asos/scene/description.hpp"
@@ -45,7 +45,9 @@ struct RenderSettings {
     std::optional<LightMethod> lightMethod;
     std::optional<int> lightSamples;  // replaces every area light's counts by N x N
     ShadowApex shadowApex = ShadowApex::Surface;  // behind: ASOS eye and light methods only
-    bool gridLightCulling = false;  // LightSetup::gridCulling (references only)
+    // A sampler of area lights in place of the light method's (a
+    // benchmark's reference from asos_testing): LightSetup::sampler.
+    AreaLightSampler areaLightSampler = nullptr;
     int threads = 0;            // 0: all cores
     std::uint64_t seed = 0;
     std::optional<PixelRegion> region;  // default: the whole image

@@ -5,7 +5,7 @@
 #include <cstddef>
 #include <string>
 
-#include "asos/render/image.hpp"
+#include "asos/image/image.hpp"
 
 namespace asos {
 

@@ -1,7 +1,9 @@
-#include "asos/geometry/beam_quad.hpp"
+#include "asos/testing/quad_pyray.hpp"
 
 #include <algorithm>
 #include <cmath>
+
+#include "asos/testing/direction_cone.hpp"
 
 namespace asos {
 

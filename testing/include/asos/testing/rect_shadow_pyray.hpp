@@ -4,20 +4,16 @@
 // or of a sub-rectangle of it at level K, bounded by a cone and split into the
 // four quarters of the rectangle when marginal. Each piece carries its share
 // of the light's area, and the tracer weights it by I A cos(theta) along the
-// central ray.
+// central ray. A reference, each piece a value of its own with the smallest
+// cone of its corner rays: the renderer's beams (lights/rectangle_light.hpp)
+// make the same pieces for speed; the tests compare them.
 #include <array>
 #include <optional>
 
 #include "asos/geometry/beam.hpp"
+#include "asos/lights/rectangle_light.hpp"
 
 namespace asos {
-
-// The light: points corner + s edgeA + t edgeB, s and t in [0, 1].
-struct LightRectangle {
-    Vec3 corner{0.0};
-    Vec3 edgeA{1.0, 0.0, 0.0};
-    Vec3 edgeB{0.0, 1.0, 0.0};
-};
 
 // [s0, s1] x [t0, t1] of the light's parameter square.
 struct RectRegion {
@@ -30,7 +26,7 @@ public:
     // the shaded surface) to the whole light. Empty when the point lies in
     // the light's plane (the light is seen edge on and sends it nothing).
     // Throws std::invalid_argument for a light of zero area.
-    static std::optional<RectShadowPyray> make(const Vec3& point, const LightRectangle& light,
+    static std::optional<RectShadowPyray> make(const Vec3& point, const RectangleLight& light,
                                                double tMin = 0.0);
 
     // The four level K+1 quarters of the rectangle: bit 0 the upper s half,
@@ -66,7 +62,7 @@ public:
     const Cone& cone() const { return cone_; }
 
 private:
-    RectShadowPyray(const Vec3& point, const LightRectangle& light, const RectRegion& region,
+    RectShadowPyray(const Vec3& point, const RectangleLight& light, const RectRegion& region,
                     int level, double tMin);
     Vec3 lightPoint(double s, double t) const {
         return light_.corner + s * light_.edgeA + t * light_.edgeB;
@@ -74,7 +70,7 @@ private:
     BeamRay toward(double xi1, double xi2) const;
 
     Vec3 point_{0.0};
-    LightRectangle light_;
+    RectangleLight light_;
     RectRegion region_;
     int level_ = 0;
     double tMin_ = 0.0;

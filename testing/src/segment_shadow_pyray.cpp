@@ -1,8 +1,10 @@
-#include "asos/geometry/beam_segment.hpp"
+#include "asos/testing/segment_shadow_pyray.hpp"
 
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
+
+#include "asos/testing/direction_cone.hpp"
 
 namespace asos {
 

@@ -1,4 +1,4 @@
-#include "asos/render/light_model.hpp"
+#include "asos/lights/light_model.hpp"
 
 #include <cmath>
 
@@ -12,34 +12,6 @@ constexpr double kAxisLengthTolerance = 1e-10;
 bool active(const Vec3& axis, int count) { return count > 1 && glm::length(axis) > 0.0; }
 
 }  // namespace
-
-const char* lightMethodName(LightMethod method) {
-    return method == LightMethod::Asos ? "asos" : "grid";
-}
-
-std::optional<LightMethod> parseLightMethod(std::string_view name) {
-    if (name == "asos") return LightMethod::Asos;
-    if (name == "grid") return LightMethod::Grid;
-    return std::nullopt;
-}
-
-const char* shadowApexName(ShadowApex apex) { return apex == ShadowApex::Behind ? "behind" : "surface"; }
-
-std::optional<ShadowApex> parseShadowApex(std::string_view name) {
-    if (name == "surface") return ShadowApex::Surface;
-    if (name == "behind") return ShadowApex::Behind;
-    return std::nullopt;
-}
-
-const char* lightShapeName(LightShape shape) {
-    switch (shape) {
-        case LightShape::Point: return "point";
-        case LightShape::Rectangle: return "rectangular";
-        case LightShape::Segment: return "linear";
-        case LightShape::Sphere: return "spherical";
-    }
-    return "?";
-}
 
 LightModel makeLightModel(const Light& light, const AsosSettings& sceneSettings,
                           std::optional<int> samples) {
@@ -63,25 +35,19 @@ LightModel makeLightModel(const Light& light, const AsosSettings& sceneSettings,
         // POV-Ray's oriented disc: circular, facing the point, of the first
         // axis's length. Here a sphere of that diameter (paper: "Spherical
         // Light Sources").
-        m.radius = 0.5 * glm::length(a.axis1);
-        if (!(m.radius > 0.0)) return m;
-        m.shape = LightShape::Sphere;
-        m.size = kPi * m.radius * m.radius;
+        const double radius = 0.5 * glm::length(a.axis1);
+        if (!(radius > 0.0)) return m;
+        m.form = SphereLight{light.position, radius};
         counts(a.size1, a.size2);
         return m;
     }
     const bool first = active(a.axis1, a.size1), second = active(a.axis2, a.size2);
     if (first && second) {
-        m.shape = LightShape::Rectangle;
-        m.rectangle = {light.position - 0.5 * a.axis1 - 0.5 * a.axis2, a.axis1, a.axis2};
-        m.size = glm::length(glm::cross(a.axis1, a.axis2));
+        m.form = RectangleLight{light.position - 0.5 * a.axis1 - 0.5 * a.axis2, a.axis1, a.axis2};
         counts(a.size1, a.size2);
     } else if (first || second) {
         const Vec3& axis = first ? a.axis1 : a.axis2;
-        m.shape = LightShape::Segment;
-        m.start = light.position - 0.5 * axis;
-        m.end = light.position + 0.5 * axis;
-        m.size = glm::length(axis);
+        m.form = SegmentLight{light.position - 0.5 * axis, light.position + 0.5 * axis, glm::length(axis)};
         m.count1 = samples ? *samples : (first ? a.size1 : a.size2);
         m.count2 = 1;
     }
@@ -121,14 +87,6 @@ bool checkLight(const Light& light, Diagnostics& diagnostics) {
               "one count 1, for a linear light)");
     }
     return ok;
-}
-
-SceneLights::SceneLights(const SceneDescription& description, const LightSetup& setup)
-    : setup_(setup) {
-    const AsosSettings scene = setup.sceneSettings.value_or(sceneAsosSettings(description.globals, {}));
-    models_.reserve(description.lights.size());
-    for (const Light& light : description.lights)
-        models_.push_back(makeLightModel(light, scene, setup.samples));
 }
 
 }  // namespace asos

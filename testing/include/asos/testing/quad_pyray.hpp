@@ -5,7 +5,9 @@
 // eye pyray's corner rays meet the surface's tangent plane). It starts at the
 // level of the eye pyray that made it and splits into the four bilinear
 // quarters of the quadrilateral; a tracer that prefers the footprints of the
-// eye sub-pyrays themselves makes those with make(..., level + 1).
+// eye sub-pyrays themselves makes those with make(..., level + 1). A
+// reference for the tests: the renderer's point-light shadows
+// (render/point_light_shadow.hpp) make their own pyrays.
 #include <array>
 
 #include "asos/geometry/beam.hpp"

@@ -3,7 +3,8 @@
 // Figure 5c): the triangle of rays from a shaded point to a segment of the
 // light, split in two halves when marginal. Each piece carries its share of
 // the light's length; the point its central ray reaches on the line acts as a
-// point light.
+// point light. A reference: the renderer's beams (lights/segment_light.hpp)
+// make the same pieces for speed; the tests compare them.
 #include <array>
 #include <optional>
 

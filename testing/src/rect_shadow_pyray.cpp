@@ -1,12 +1,15 @@
-#include "asos/geometry/beam_rect.hpp"
+#include "asos/testing/rect_shadow_pyray.hpp"
 
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
 
+#include "asos/testing/direction_cone.hpp"
+#include "asos/testing/solid_angle.hpp"
+
 namespace asos {
 
-std::optional<RectShadowPyray> RectShadowPyray::make(const Vec3& point, const LightRectangle& light,
+std::optional<RectShadowPyray> RectShadowPyray::make(const Vec3& point, const RectangleLight& light,
                                                      double tMin) {
     const Vec3 normal = glm::cross(light.edgeA, light.edgeB);
     const double area = glm::length(normal);
@@ -20,7 +23,7 @@ std::optional<RectShadowPyray> RectShadowPyray::make(const Vec3& point, const Li
     return RectShadowPyray(point, light, RectRegion{}, 0, tMin);
 }
 
-RectShadowPyray::RectShadowPyray(const Vec3& point, const LightRectangle& light,
+RectShadowPyray::RectShadowPyray(const Vec3& point, const RectangleLight& light,
                                  const RectRegion& region, int level, double tMin)
     : point_(point), light_(light), region_(region), level_(level), tMin_(tMin) {
     const std::array<Vec3, 4> c = corners();

@@ -1,0 +1,64 @@
+// The benchmarks' reference sampler (asos_testing's culled_grid_light.hpp)
+// gives the classic grid's samples, bit for bit, with fewer shadow rays: lit,
+// blocked and partly shadowed points under each area light form.
+#include <catch2/catch.hpp>
+
+#include <vector>
+
+#include "asos/render/grid_light.hpp"
+#include "asos/testing/culled_grid_light.hpp"
+#include "render_scenes.hpp"
+
+using namespace asos;
+using namespace asos::testing;
+
+TEST_CASE("The culled grid: the grid's samples, without the rays one cone test decides", "[lights]") {
+    const Vec3 up(0, 1, 0);
+    // Axes for a rectangle, a segment (second axis of zero length) and a sphere (orient).
+    struct Form {
+        Vec3 axis2;
+        bool orient;
+    };
+    const Form forms[] = {{{0, 0, 2}, false}, {{0, 0, 0}, false}, {{0, 0, 2}, true}};
+    for (const Form& form : forms) {
+        SceneDescription d;
+        d.objects.push_back(makeObject(PlaneShape{{0, 1, 0}, 0.0}, litTexture(Vec3(1.0))));
+        d.objects.push_back(makeObject(SphereShape{{0, 3, 0}, 0.8}, litTexture(Vec3(1.0))));
+        Light light = pointLight({0, 6, 0});
+        AreaLight area;
+        area.axis1 = {2, 0, 0};
+        area.axis2 = form.axis2;
+        area.size1 = area.size2 = 6;
+        area.jitter = true;
+        area.circular = area.orient = form.orient;
+        light.area = area;
+        d.lights.push_back(light);
+        const std::unique_ptr<Scene> scene = buildScene(d);
+        const LightModel model = makeLightModel(light, AsosSettings{});
+        REQUIRE(model.isArea());
+        AreaLightScratch scratch;
+        std::uint64_t gridRays = 0, culledRays = 0;
+        // Under the occluder (umbra), across its penumbra, far out (lit).
+        for (double x : {0.0, 0.6, 1.0, 1.5, 2.0, 3.0, 8.0, 30.0}) {
+            AreaLightQuery q;
+            q.point = Vec3(x, 0, 0.2 * x);
+            q.normal = up;
+            q.key = 7;
+            RenderCounters counters;
+            const std::span<const LightSample> g = gridAreaLightSamples(*scene, model, q, scratch, counters);
+            const std::vector<LightSample> grid(g.begin(), g.end());
+            gridRays += counters.shadowRays;
+            counters = RenderCounters{};
+            const std::span<const LightSample> c = culledGridAreaLightSamples(*scene, model, q, scratch, counters);
+            culledRays += counters.shadowRays;
+            INFO(lightFormName(model.form) << " at x = " << x);
+            REQUIRE(c.size() == grid.size());
+            for (std::size_t i = 0; i < grid.size(); ++i) {
+                CHECK(c[i].direction == grid[i].direction);
+                CHECK(c[i].distance == grid[i].distance);
+                CHECK(c[i].color == grid[i].color);
+            }
+        }
+        CHECK(culledRays < gridRays);
+    }
+}
