@@ -21,9 +21,7 @@ using Result = asos::test::ProgramResult;
 using asos::test::slurp;
 
 fs::path scratchDir() {
-    const fs::path dir = fs::path(ASOS_BINARY_DIR) / "test-output" / "cli_render";
-    fs::create_directories(dir);
-    return dir;
+    return asos::test::testCaseDir("cli_render", Catch::getResultCapture().getCurrentTestName());
 }
 
 Result runAsos(std::vector<std::string> args) { return asos::test::runAsos(scratchDir(), std::move(args)); }

@@ -18,9 +18,7 @@ using namespace asos::testing;
 namespace {
 
 fs::path scratchDir() {
-    const fs::path dir = fs::path(ASOS_BINARY_DIR) / "test-output" / "lights_options";
-    fs::create_directories(dir);
-    return dir;
+    return asos::test::testCaseDir("lights_options", Catch::getResultCapture().getCurrentTestName());
 }
 
 // Runs `asos render` on a small scene with an area light; returns the exit

@@ -56,6 +56,21 @@ inline ProgramResult runProgram(const char* program, const std::filesystem::path
     return r;
 }
 
+// A scratch folder of this test case's own, under test-output/<suite>/: ctest
+// runs the test cases of a file side by side, so two must never share a scene
+// file that each rewrites.
+inline std::filesystem::path testCaseDir(const std::string& suite, const std::string& testCase) {
+    std::string folder;
+    for (const char c : testCase) {
+        const bool plain = (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9');
+        if (plain) folder += c;
+        else if (!folder.empty() && folder.back() != '-') folder += '-';
+    }
+    const std::filesystem::path dir = std::filesystem::path(ASOS_BINARY_DIR) / "test-output" / suite / folder;
+    std::filesystem::create_directories(dir);
+    return dir;
+}
+
 inline ProgramResult runAsos(const std::filesystem::path& dir, std::vector<std::string> args) {
     return runProgram(ASOS_EXE, dir, std::move(args));
 }
