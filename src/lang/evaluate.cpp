@@ -55,13 +55,6 @@ std::string utf8(std::uint32_t c) {
 
 }  // namespace
 
-std::string formatNumber(double v) {
-    if (v == 0.0) return "0";
-    char buffer[32];
-    const auto r = std::to_chars(buffer, buffer + sizeof buffer, v);
-    return std::string(buffer, r.ptr);
-}
-
 std::string describe(const Num& n) {
     if (n.colour) return "a colour";
     if (n.dim == 1) return "a float";

@@ -11,6 +11,7 @@
 #include <variant>
 #include <vector>
 
+#include "asos/diag/format_number.hpp"
 #include "asos/lang/ast.hpp"
 #include "asos/lang/interpreter.hpp"
 #include "asos/util/function_ref.hpp"
@@ -76,9 +77,6 @@ struct Poison {};  // the value of a declaration whose right side failed (alread
 using Value = std::variant<Num, std::string, std::shared_ptr<const ObjectTree>,
                            std::shared_ptr<const Pigment>, std::shared_ptr<const Finish>,
                            std::shared_ptr<const Texture>, std::shared_ptr<const CameraValue>, Poison>;
-
-// The shortest text that reads back as `v` ("0.1", "1e+300"; -0 as "0").
-std::string formatNumber(double v);
 
 // 'word', for messages.
 inline std::string quote(std::string_view word) {

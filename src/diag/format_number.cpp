@@ -1,0 +1,14 @@
+#include "asos/diag/format_number.hpp"
+
+#include <charconv>
+
+namespace asos {
+
+std::string formatNumber(double v) {
+    if (v == 0.0) return "0";
+    char buffer[32];
+    const auto r = std::to_chars(buffer, buffer + sizeof buffer, v);
+    return std::string(buffer, r.ptr);
+}
+
+}  // namespace asos
