@@ -10,6 +10,7 @@
 // when the union is placed in the scene, to the members that have none.
 #include <cmath>
 
+#include "asos/shapes/shape_issue.hpp"
 #include "src/lang/interpreter_impl.hpp"
 
 namespace asos::lang {
@@ -117,90 +118,59 @@ ObjectTree Interpreter::evalObject(const Node& block) {
         bad = true;
     };
     const auto args = block.children();
+    // The shape's own checks (its validate, shape_issue.hpp), each issue
+    // reported at the argument it names.
+    auto checkShape = [&] {
+        for (const ShapeIssue& issue : shapeIssues(t.shape)) {
+            const Node& argument = args[issue.argument];
+            invalid(issue.element < 0 ? argument : argument.children()[issue.element], issue.message);
+        }
+    };
 
     switch (block.word) {
-    case Word::Sphere: {
-        SphereShape s{evalVector(args[0]), evalFloat(args[1])};
-        if (!(s.radius > 0)) invalid(args[1], "the radius of a sphere must be positive, not " + formatNumber(s.radius));
-        t.shape = s;
+    case Word::Sphere:
+        t.shape = SphereShape{evalVector(args[0]), evalFloat(args[1])};
+        checkShape();
         break;
-    }
     case Word::Box:
         t.shape = BoxShape{evalVector(args[0]), evalVector(args[1])};
+        checkShape();
         break;
-    case Word::Cone: {
-        ConeShape c{evalVector(args[0]), evalFloat(args[1]), evalVector(args[2]), evalFloat(args[3]), false};
-        if (c.baseRadius < 0) invalid(args[1], "the base radius of a cone must not be negative, not " + formatNumber(c.baseRadius));
-        if (c.capRadius < 0) invalid(args[3], "the cap radius of a cone must not be negative, not " + formatNumber(c.capRadius));
-        if (c.baseRadius == 0 && c.capRadius == 0) invalid(args[3], "a cone needs a radius that is not zero");
-        if (c.base == c.cap) invalid(args[2], "the base and cap points of a cone are the same point");
-        t.shape = c;
+    case Word::Cone:
+        t.shape = ConeShape{evalVector(args[0]), evalFloat(args[1]), evalVector(args[2]), evalFloat(args[3]), false};
+        checkShape();
         break;
-    }
-    case Word::Cylinder: {
-        CylinderShape c{evalVector(args[0]), evalVector(args[1]), evalFloat(args[2]), false};
-        if (!(c.radius > 0)) invalid(args[2], "the radius of a cylinder must be positive, not " + formatNumber(c.radius));
-        if (c.base == c.cap) invalid(args[1], "the base and cap points of a cylinder are the same point");
-        t.shape = c;
+    case Word::Cylinder:
+        t.shape = CylinderShape{evalVector(args[0]), evalVector(args[1]), evalFloat(args[2]), false};
+        checkShape();
         break;
-    }
-    case Word::Disc: {
-        DiscShape d{evalVector(args[0]), evalVector(args[1]), evalFloat(args[2]),
-                    block.flags == 4 ? evalFloat(args[3]) : 0.0};
-        if (d.normal == Vec3(0.0)) invalid(args[1], "the normal of a disc must not be zero");
-        if (!(d.radius > 0)) invalid(args[2], "the radius of a disc must be positive, not " + formatNumber(d.radius));
-        if (d.holeRadius < 0 || (d.radius > 0 && d.holeRadius >= d.radius))
-            invalid(args[3], "the hole radius of a disc must be at least 0 and less than its radius " +
-                                 formatNumber(d.radius) + ", not " + formatNumber(d.holeRadius));
-        t.shape = d;
+    case Word::Disc:
+        t.shape = DiscShape{evalVector(args[0]), evalVector(args[1]), evalFloat(args[2]),
+                            block.flags == 4 ? evalFloat(args[3]) : 0.0};
+        checkShape();
         break;
-    }
     case Word::Polygon: {
+        // The count is the statement's own: it must match the list before
+        // the points are checked.
         const double count = evalFloat(args[0]);
         PolygonShape p;
         const auto points = args[1].children();
         p.points.reserve(points.size());
         for (const Node& point : points) p.points.push_back(evalVector(point));
-        if (count != std::floor(count) || count < 3) {
-            invalid(args[0], "a polygon needs a whole number of at least 3 points, not " + formatNumber(count));
-        } else if (static_cast<double>(p.points.size()) != count) {
-            invalid(args[0], "the polygon announces " + formatNumber(count) + " points but lists " +
-                                 std::to_string(p.points.size()));
-        } else {
-            // All points in the plane of the first three that span one (as
-            // POV-Ray), and not all on one line.
-            const Vec3 origin = p.points[0];
-            double size = 0;
-            for (const Vec3& q : p.points) size = std::max(size, glm::length(q - origin));
-            std::size_t second = 1;
-            while (second < p.points.size() && p.points[second] == origin) ++second;
-            Vec3 normal(0.0);
-            for (std::size_t i = second + 1; i < p.points.size() && glm::length(normal) <= 1e-12 * size * size; ++i)
-                normal = glm::cross(p.points[second] - origin, p.points[i] - origin);
-            if (size == 0 || glm::length(normal) <= 1e-12 * size * size) {
-                invalid(args[0], "the points of the polygon are all on one line");
-            } else {
-                normal = glm::normalize(normal);
-                for (std::size_t i = 0; i < p.points.size(); ++i) {
-                    const double off = std::abs(glm::dot(p.points[i] - origin, normal));
-                    if (off > 1e-9 * size) {
-                        invalid(points[i], "the points of the polygon are not in one plane: point " +
-                                               std::to_string(i + 1) + " is " + formatNumber(off) +
-                                               " away from the plane of the first ones");
-                        break;
-                    }
-                }
-            }
-        }
         t.shape = std::move(p);
+        if (count != std::floor(count) || count < 3)
+            invalid(args[0], "a polygon needs a whole number of at least 3 points, not " + formatNumber(count));
+        else if (static_cast<double>(points.size()) != count)
+            invalid(args[0], "the polygon announces " + formatNumber(count) + " points but lists " +
+                                 std::to_string(points.size()));
+        else
+            checkShape();
         break;
     }
-    case Word::Plane: {
-        PlaneShape p{evalVector(args[0]), evalFloat(args[1])};
-        if (p.normal == Vec3(0.0)) invalid(args[0], "the normal of a plane must not be zero");
-        t.shape = p;
+    case Word::Plane:
+        t.shape = PlaneShape{evalVector(args[0]), evalFloat(args[1])};
+        checkShape();
         break;
-    }
     case Word::LightSource:
         t.kind = ObjectTree::Kind::Light;
         t.light = std::make_shared<const Light>(evalLight(block));

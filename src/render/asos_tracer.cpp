@@ -51,9 +51,10 @@ AsosTracer::AsosTracer(const RayTracer& tracer, const CameraModel& camera,
     objectSettings_.reserve(d.objects.size());
     selfShadowing_.reserve(d.objects.size());
     patterned_.reserve(d.objects.size());
-    for (const Object& o : d.objects) {
+    for (std::uint32_t i = 0; i < scene_.objectCount(); ++i) {
+        const Object& o = d.objects[i];
         objectSettings_.push_back(sceneSettings.refinedBy(o.asos));
-        selfShadowing_.push_back(canShadowItself(o.shape) ? 1 : 0);
+        selfShadowing_.push_back(scene_.primitive(i).canShadowItself() ? 1 : 0);
         patterned_.push_back(hasPattern(textureOf(o).pigment) ? 1 : 0);
     }
     for (const Light& l : d.lights) lightSettings_.push_back(sceneSettings.refinedBy(l.asos));

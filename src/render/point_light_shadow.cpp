@@ -109,12 +109,6 @@ Vec3 Footprint::at(double u, double v) const {
     return ray.at(tangentPlane_ ? planeDistance(ray) : depth_);
 }
 
-bool canShadowItself(const Shape& shape) {
-    if (const auto* c = std::get_if<CylinderShape>(&shape)) return c->open;
-    if (const auto* c = std::get_if<ConeShape>(&shape)) return c->open;
-    return false;
-}
-
 double pointLightLitFraction(const Scene& scene, const Footprint& footprint,
                              const PointShadowQuery& q, ShadowScratch& s, RenderCounters& counters) {
     const Vec3& light = q.lightPosition;

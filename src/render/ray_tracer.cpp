@@ -41,7 +41,7 @@ std::span<const LightSample> RayTracer::areaLightSamples(const ShadingPoint& poi
     q.shadedObject = static_cast<std::uint32_t>(point.hit->objectIndex);
     // As for point lights: only the inner side of an open tube (its normal
     // turned toward the viewer points inward) can be in its own shadow.
-    q.shadedCanSelfShadow = canShadowItself(scene_.object(q.shadedObject).shape) &&
+    q.shadedCanSelfShadow = scene_.primitive(q.shadedObject).canShadowItself() &&
                             glm::dot(point.normal, point.hit->normal) < 0.0;
     q.rng = context.rng;
     q.key = context.key;

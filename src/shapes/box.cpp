@@ -387,4 +387,27 @@ ConeClass Box::classifyOnSurface(const LocalCone& cone, double tol) const {
     return marginalClass(cone, cone.tMin, dFar);
 }
 
+bool Box::raysLeave(const LocalRays& rays) const {
+    const Vec3& a = rays.origin;
+    for (int i = 0; i < 3; ++i) {
+        Vec3 n(0.0);
+        n[i] = 1.0;
+        if (a[i] <= lo_[i] && rays.awayFrom(-n)) return true;
+        if (a[i] >= hi_[i] && rays.awayFrom(n)) return true;
+    }
+    return false;
+}
+
+std::vector<ShapeIssue> validate(const BoxShape& record) {
+    IssueList issues;
+    issues.finite(0, record.corner1, "the first corner of a box");
+    issues.finite(1, record.corner2, "the second corner of a box");
+    return issues.take();
+}
+
+Placed<Box> place(const BoxShape& record, const Transform& worldFromObject) {
+    return {Box(record.corner1, record.corner2), LocalFrame::make(worldFromObject, Mat3(1.0), Vec3(0.0)),
+            Box::kName};
+}
+
 }  // namespace asos

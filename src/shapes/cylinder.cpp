@@ -81,4 +81,20 @@ std::optional<LocalHit> Cylinder::intersect(const Ray& ray, double tMin, double 
     return LocalHit{t, point, Vec3(0.0, 0.0, part == 1 ? -1.0 : 1.0)};
 }
 
+std::vector<ShapeIssue> validate(const CylinderShape& record) {
+    IssueList issues;
+    const bool baseFinite = issues.finite(0, record.base, "the base point of a cylinder");
+    const bool capFinite = issues.finite(1, record.cap, "the cap point of a cylinder");
+    issues.positive(2, record.radius, "the radius of a cylinder");
+    if (baseFinite && capFinite && !frustumAxis(record.base, record.cap))
+        issues.add(1, "the base and cap points of a cylinder are the same point");
+    return issues.take();
+}
+
+Placed<Cylinder> place(const CylinderShape& record, const Transform& worldFromObject) {
+    const FrustumAxis axis = *frustumAxis(record.base, record.cap);
+    return {Cylinder(record.radius, axis.length, record.open),
+            LocalFrame::make(worldFromObject, axis.objectFromLocal, record.base), Cylinder::kName};
+}
+
 }  // namespace asos

@@ -3,7 +3,10 @@
 #include <algorithm>
 #include <cmath>
 
+#include "asos/diag/format_number.hpp"
+#include "asos/geometry/frame.hpp"
 #include "asos/shapes/cone_geometry.hpp"
+#include "asos/shapes/local_frame.hpp"
 
 namespace asos {
 
@@ -78,6 +81,42 @@ ConeClass Disc::classifyExactly(const LocalCone& cone) const {
     }
     if (cone.surelyWithin(f.tNear, f.tFar)) return fullClass(f.tNear, f.tFar);
     return marginalClass(cone, f.tNear, f.tFar);
+}
+
+std::vector<ShapeIssue> validate(const DiscShape& record) {
+    IssueList issues;
+    issues.finite(0, record.center, "the centre of a disc");
+    if (issues.finite(1, record.normal, "the normal of a disc") && !(glm::length(record.normal) > 0.0))
+        issues.add(1, "the normal of a disc must not be zero");
+    issues.positive(2, record.radius, "the radius of a disc");
+    const double hole = record.holeRadius;
+    if (hole < 0.0 || (record.radius > 0.0 && hole >= record.radius))
+        issues.add(3, "the hole radius of a disc must be at least 0 and less than its radius " +
+                          formatNumber(record.radius) + ", not " + formatNumber(hole));
+    else if (!std::isfinite(hole))
+        issues.add(3, "the hole radius of a disc must be finite, not " + formatNumber(hole));
+    return issues.take();
+}
+
+std::variant<Placed<Disc>, Placed<EllipticDisc>> place(const DiscShape& record,
+                                                       const Transform& worldFromObject) {
+    const Disc disc(record.radius, record.holeRadius);
+    const LocalFrame frame = LocalFrame::make(
+        worldFromObject, frameAroundAxis(record.normal / glm::length(record.normal)), record.center);
+    if (frame.kind != LocalFrame::Kind::General) return Placed<Disc>{disc, frame, Disc::kName};
+    // An affine image of a circle is an ellipse: the disc is laid out again
+    // in a rigid frame whose x and y run along the axes of the ellipse
+    // {A x : |x| <= radius} (A = inPlane), the eigenvectors of A A^T, its
+    // semi-axes radius times the rows' lengths there.
+    const glm::dmat2 a = frame.flattened().inPlane;
+    const glm::dmat2 p = a * glm::transpose(a);
+    const double angle = 0.5 * std::atan2(2.0 * p[1][0], p[0][0] - p[1][1]);
+    const LocalFrame::Flattened flat = frame.flattened(angle);
+    const glm::dmat2& b = flat.inPlane;
+    return Placed<EllipticDisc>{EllipticDisc(record.radius * std::hypot(b[0][0], b[1][0]),
+                                             record.radius * std::hypot(b[0][1], b[1][1]),
+                                             record.holeRadius / record.radius),
+                                flat.frame, Disc::kName};
 }
 
 }  // namespace asos

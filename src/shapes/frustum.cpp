@@ -3,7 +3,9 @@
 #include <algorithm>
 #include <cmath>
 
+#include "asos/geometry/frame.hpp"
 #include "asos/shapes/cone_geometry.hpp"
+#include "asos/shapes/local_frame.hpp"
 
 namespace asos {
 
@@ -384,6 +386,28 @@ ConeClass Frustum::classifyOff(const LocalCone& cone, double rho, double tol, do
     if (!axisHits) return missClass();
     if (cone.surelyWithin(dNear, frontFar)) return fullClass(dNear, frontFar);
     return marginalClass(cone, dNear, firstFar);
+}
+
+bool Frustum::raysLeave(const LocalRays& rays) const {
+    // n = (L cos phi, L sin phi, r0 - r1), at the origin's angle phi, has
+    // n . x <= L r0 over the solid (at both rims, L r0).
+    const Vec3& a = rays.origin;
+    const Vec3 z(0.0, 0.0, 1.0);
+    if (a.z <= 0.0 && rays.awayFrom(-z)) return true;
+    if (a.z >= length_ && rays.awayFrom(z)) return true;
+    const double rho = std::sqrt(a.x * a.x + a.y * a.y);
+    if (!(rho > 0.0)) return false;
+    const Vec3 n(length_ * a.x / rho, length_ * a.y / rho, r0_ - r1_);
+    return glm::dot(n, a) >= length_ * r0_ && rays.awayFrom(n);
+}
+
+std::optional<FrustumAxis> frustumAxis(const Vec3& base, const Vec3& cap) {
+    const Vec3 axis = cap - base;
+    const double length = glm::length(axis);
+    const double scale = std::abs(base.x) + std::abs(base.y) + std::abs(base.z) + std::abs(cap.x) +
+                         std::abs(cap.y) + std::abs(cap.z);
+    if (!(length > 1e-12 * scale) || length == 0.0) return std::nullopt;
+    return FrustumAxis{frameAroundAxis(axis / length), length};
 }
 
 }  // namespace asos

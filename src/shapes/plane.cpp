@@ -2,7 +2,9 @@
 
 #include <cmath>
 
+#include "asos/diag/format_number.hpp"
 #include "asos/shapes/cone_geometry.hpp"
+#include "asos/shapes/local_frame.hpp"
 
 namespace asos {
 
@@ -42,6 +44,20 @@ ConeClass Plane::classify(const LocalCone& cone) const {
     const bool horizonOnly =
         !crossing.all && !std::isfinite(cone.tMax) && crossing.tNear >= cone.tMinInner;
     return marginalClass(cone, crossing.tNear, crossing.tFar, horizonOnly);
+}
+
+std::vector<ShapeIssue> validate(const PlaneShape& record) {
+    IssueList issues;
+    if (issues.finite(0, record.normal, "the normal of a plane") && !(glm::length(record.normal) > 0.0))
+        issues.add(0, "the normal of a plane must not be zero");
+    if (!std::isfinite(record.distance))
+        issues.add(1, "the distance of a plane must be finite, not " + formatNumber(record.distance));
+    return issues.take();
+}
+
+Placed<Plane> place(const PlaneShape& record, const Transform& worldFromObject) {
+    return {Plane(record.normal / glm::length(record.normal), record.distance),
+            LocalFrame::make(worldFromObject, Mat3(1.0), Vec3(0.0)), Plane::kName};
 }
 
 }  // namespace asos

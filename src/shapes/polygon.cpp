@@ -3,8 +3,12 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <string>
 
+#include "asos/diag/format_number.hpp"
+#include "asos/geometry/frame.hpp"
 #include "asos/shapes/cone_geometry.hpp"
+#include "asos/shapes/local_frame.hpp"
 
 namespace asos {
 
@@ -36,6 +40,36 @@ bool convexLoop(const std::vector<Vec2>& vertices, std::uint32_t begin, std::uin
         turning += std::atan2(cross, dot);
     }
     return way != 0 && std::abs(std::abs(turning) - 2.0 * kPi) < 1e-6;
+}
+
+// The plane of a polygon's points as POV-Ray finds it: through the first
+// point, its normal from u, the first point away from the first, and the
+// first later point not in line with u; no normal when the points are all
+// on one line.
+struct PointsPlane {
+    Vec3 origin;
+    double extent = 0.0;  // the largest distance of a point from the origin
+    std::optional<Vec3> normal;  // unit
+};
+
+PointsPlane pointsPlane(const std::vector<Vec3>& points) {
+    PointsPlane out{points[0], 0.0, std::nullopt};
+    for (const Vec3& p : points) out.extent = std::max(out.extent, glm::length(p - out.origin));
+    std::size_t i = 1;
+    Vec3 u(0.0);
+    for (; i < points.size(); ++i) {
+        u = points[i] - out.origin;
+        if (glm::length(u) > 1e-12 * out.extent) break;
+    }
+    for (++i; i < points.size(); ++i) {
+        const Vec3 v = points[i] - out.origin;
+        const Vec3 w = glm::cross(u, v);
+        if (glm::length(w) > 1e-9 * glm::length(u) * glm::length(v)) {
+            out.normal = glm::normalize(w);
+            break;
+        }
+    }
+    return out;
 }
 
 }  // namespace
@@ -266,6 +300,68 @@ ConeClass Polygon::classifyExactly(const LocalCone& cone) const {
     if (cone.surelyWithin(crossing.tNear, crossing.tFar))
         return fullClass(crossing.tNear, crossing.tFar);
     return marginalClass(cone, crossing.tNear, crossing.tFar);
+}
+
+std::vector<ShapeIssue> validate(const PolygonShape& record) {
+    const std::vector<Vec3>& points = record.points;
+    IssueList issues;
+    // The point count is argument 0, the list of points argument 1.
+    if (points.size() < 3) {
+        issues.add(0, "a polygon needs at least 3 points, not " + std::to_string(points.size()));
+        return issues.take();
+    }
+    for (std::size_t i = 0; i < points.size(); ++i)
+        if (!isFinite(points[i]))
+            issues.add(1, "point " + std::to_string(i + 1) + " of the polygon must be finite, not " +
+                              formatVector(points[i]), static_cast<int>(i));
+    if (!issues.empty()) return issues.take();
+    const PointsPlane plane = pointsPlane(points);
+    if (!plane.normal) {
+        issues.add(0, "the points of the polygon are all on one line");
+        return issues.take();
+    }
+    for (std::size_t i = 0; i < points.size(); ++i) {
+        const double off = std::abs(glm::dot(points[i] - plane.origin, *plane.normal));
+        if (off > 1e-9 * plane.extent) {
+            issues.add(1, "the points of the polygon are not in one plane: point " + std::to_string(i + 1) + " is " +
+                              formatNumber(off) + " away from the plane of the first ones",
+                       static_cast<int>(i));
+            break;
+        }
+    }
+    return issues.take();
+}
+
+Placed<Polygon> place(const PolygonShape& record, const Transform& worldFromObject) {
+    const std::vector<Vec3>& points = record.points;
+    const PointsPlane plane = pointsPlane(points);  // with a normal: validate
+    const Mat3 objectFromLocal = frameAroundAxis(*plane.normal);
+    const Vec3 e1 = objectFromLocal[0], e2 = objectFromLocal[1];
+    // Sub-polygons close when their first point repeats; the last one is
+    // closed if it is not (POV-Ray warns and closes it).
+    std::vector<Vec2> vertices;
+    std::vector<std::uint32_t> loopEnds;
+    std::size_t start = 0;
+    for (std::size_t k = 0; k < points.size(); ++k) {
+        const bool closes = k > start && glm::all(glm::lessThan(glm::abs(points[k] - points[start]), Vec3(1e-10)));
+        if (closes) {
+            loopEnds.push_back(static_cast<std::uint32_t>(vertices.size()));
+            start = k + 1;
+            continue;
+        }
+        const Vec3 d = points[k] - plane.origin;
+        vertices.emplace_back(glm::dot(d, e1), glm::dot(d, e2));
+    }
+    if (start < points.size()) loopEnds.push_back(static_cast<std::uint32_t>(vertices.size()));
+    LocalFrame frame = LocalFrame::make(worldFromObject, objectFromLocal, plane.origin);
+    if (frame.kind == LocalFrame::Kind::General) {
+        // An affine image of a planar polygon is a planar polygon: in a
+        // rigid frame its cones stay circular and are classified exactly.
+        const LocalFrame::Flattened flat = frame.flattened();
+        for (Vec2& v : vertices) v = flat.inPlane * v;
+        frame = flat.frame;
+    }
+    return {Polygon(std::move(vertices), std::move(loopEnds)), frame, Polygon::kName};
 }
 
 }  // namespace asos

@@ -15,14 +15,6 @@ Bounds3 padded(Bounds3 b) {
     return {b.lo - pad, b.hi + pad};
 }
 
-// The index of T among a variant's alternatives (for a switch on index()).
-template <class T, class... Ts>
-constexpr std::size_t alternative(const std::variant<Ts...>*) {
-    std::size_t i = 0;
-    (void)((!std::is_same_v<T, Ts> && (++i, true)) && ...);
-    return i;
-}
-
 }  // namespace
 
 Primitive::Primitive(LocalShape shape, LocalFrame frame, const char* name)
@@ -94,32 +86,15 @@ ConeClass Primitive::classifyRigid(const PreparedCone& cone) const {
     local.cosHalf = cone.cosHalf;
     local.sinHalf = cone.sinHalf;
     const double absTol = 1e-11 * (l1Norm(local.apex) + sphereTolerance_);
-    local.absTol = absTol;  // the range is set below, or by the shape (classifyRanging)
+    local.absTol = absTol;  // the range is set by the shape (classifyRanging)
     const double t0 = kScaled ? cone.tMin * frame_.localPerWorld : cone.tMin;
     const double t1 = kScaled ? cone.tMax * frame_.localPerWorld : cone.tMax;
     const RigidBounds back{absTol, kScaled ? frame_.worldPerLocal : 1.0, cone.tMin, cone.tMax};
-    // One jump on the shape, the sphere (the commonest), the box and the
-    // flat shapes by name, the others through visit. The box's and the flat
-    // shapes' fast paths need no local range (they answer through `back` in
-    // world units): they set it only past those answers (classifyRanging).
-    constexpr const LocalShape* kShapes = nullptr;
-    switch (shape_.index()) {
-        case alternative<Sphere>(kShapes):
-            local.setRange(t0, t1, absTol);
-            return back(std::get_if<Sphere>(&shape_)->classify(local));
-        case alternative<Box>(kShapes):
-            return std::get_if<Box>(&shape_)->classifyRanging(local, t0, t1, back);
-        case alternative<Disc>(kShapes):
-            return std::get_if<Disc>(&shape_)->classifyRanging(local, t0, t1, back);
-        case alternative<Polygon>(kShapes):
-            return std::get_if<Polygon>(&shape_)->classifyRanging(local, t0, t1, back);
-        case alternative<EllipticDisc>(kShapes):
-            return std::get_if<EllipticDisc>(&shape_)->classifyRanging(local, t0, t1, back);
-        default:
-            break;
-    }
-    local.setRange(t0, t1, absTol);
-    return back(visit([&](const auto& s) { return s.classify(local); }));
+    // One jump on the shape. Each shape sets the local range [t0, t1]
+    // itself: a fast path that needs none (the box's, the flat shapes')
+    // answers through `back` in world units first (classifyRanging).
+    const auto ranging = [&](const auto& shape) { return shape.classifyRanging(local, t0, t1, back); };
+    return primitive_detail::jump<ConeClass>(shape_, ranging);
 }
 
 // Under a non-uniform scale or a shear the cone becomes elliptic in the local
@@ -223,67 +198,22 @@ std::optional<TranslatedSphere> Primitive::translatedSphere() const {
 }
 
 bool Primitive::convex() const {
-    return visit([](const auto& shape) {
-        using S = std::decay_t<decltype(shape)>;
-        if constexpr (std::is_same_v<S, Sphere> || std::is_same_v<S, Box>) return true;
-        else if constexpr (std::is_same_v<S, Cylinder> || std::is_same_v<S, TruncatedCone>)
-            return shape.frustum().capped();
-        else if constexpr (std::is_same_v<S, Disc> || std::is_same_v<S, EllipticDisc> ||
-                           std::is_same_v<S, Polygon>)
-            return shape.convex();
-        else return false;  // a plane: unbounded
-    });
+    return visit([](const auto& shape) { return shape.convex(); });
 }
 
 bool Primitive::raysLeave(const Vec3& worldOrigin, const Vec3* directions, int count) const {
-    if (count < 1 || count > 8) return false;
-    const Vec3 a = frame_.pointToLocal(worldOrigin);
-    Vec3 d[8];
+    if (count < 1 || count > LocalRays::kMaxDirections) return false;
+    LocalRays rays;
+    rays.origin = frame_.pointToLocal(worldOrigin);
+    rays.count = count;
     for (int i = 0; i < count; ++i)
-        d[i] = frame_.kind == LocalFrame::Kind::Translate ? directions[i] : frame_.localFromWorld * directions[i];
-    // Every direction turned away from the plane's side of the shape, by a
-    // margin far above rounding (the rays are tested from t > 0 on).
-    const auto away = [&](const Vec3& n) {
-        const double nn = glm::length(n);
-        for (int i = 0; i < count; ++i)
-            if (!(glm::dot(d[i], n) > 1e-9 * nn * glm::length(d[i]))) return false;
-        return true;
-    };
-    const Vec3 z(0.0, 0.0, 1.0);
-    return visit([&](const auto& shape) {
-        using S = std::decay_t<decltype(shape)>;
-        if constexpr (std::is_same_v<S, Sphere>) {
-            // The plane n . x = r with n = a / |a| holds the ball.
-            return glm::dot(a, a) >= shape.radius() * shape.radius() && away(a);
-        } else if constexpr (std::is_same_v<S, Box>) {
-            for (int i = 0; i < 3; ++i) {
-                Vec3 n(0.0);
-                n[i] = 1.0;
-                if (a[i] <= shape.lo()[i] && away(-n)) return true;
-                if (a[i] >= shape.hi()[i] && away(n)) return true;
-            }
-            return false;
-        } else if constexpr (std::is_same_v<S, Cylinder> || std::is_same_v<S, TruncatedCone>) {
-            // The capped solid holds an open one too. Its caps' planes, then
-            // the plane tangent to the side along the generator at the
-            // origin's angle: n = (L cos phi, L sin phi, r0 - r1) has
-            // n . x <= L r0 over the solid (at both rims, L r0).
-            const Frustum& f = shape.frustum();
-            const double length = f.length(), r0 = f.r0(), r1 = f.r1();
-            if (a.z <= 0.0 && away(-z)) return true;
-            if (a.z >= length && away(z)) return true;
-            const double rho = std::sqrt(a.x * a.x + a.y * a.y);
-            if (!(rho > 0.0)) return false;
-            const Vec3 n(length * a.x / rho, length * a.y / rho, r0 - r1);
-            return glm::dot(n, a) >= length * r0 && away(n);
-        } else if constexpr (std::is_same_v<S, Disc> || std::is_same_v<S, EllipticDisc> ||
-                             std::is_same_v<S, Polygon>) {
-            // In the plane z = 0.
-            return (a.z >= 0.0 && away(z)) || (a.z <= 0.0 && away(-z));
-        } else {
-            return false;  // a plane: unbounded
-        }
-    });
+        rays.directions[i] =
+            frame_.kind == LocalFrame::Kind::Translate ? directions[i] : frame_.localFromWorld * directions[i];
+    return visit([&](const auto& shape) { return shape.raysLeave(rays); });
+}
+
+bool Primitive::canShadowItself() const {
+    return visit([](const auto& shape) { return shape.canShadowItself(); });
 }
 
 const char* Primitive::kindName() const { return name_; }

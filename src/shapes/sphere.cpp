@@ -161,4 +161,15 @@ std::optional<ConeClass> Sphere::classifyAcrossScale(const PreparedCone& cone,
     return back(marginalClass(world, tNear, tFar));
 }
 
+std::vector<ShapeIssue> validate(const SphereShape& record) {
+    IssueList issues;
+    issues.finite(0, record.center, "the centre of a sphere");
+    issues.positive(1, record.radius, "the radius of a sphere");
+    return issues.take();
+}
+
+Placed<Sphere> place(const SphereShape& record, const Transform& worldFromObject) {
+    return {Sphere(record.radius), LocalFrame::make(worldFromObject, Mat3(1.0), record.center), Sphere::kName};
+}
+
 }  // namespace asos

@@ -93,9 +93,9 @@ struct PointShadowQuery {
     AsosSettings settings;  // the light's eps, max and jitter
     // The object the footprint lies on. Convex closed shapes (and flat ones)
     // cannot shadow themselves where they face the light, so they are left
-    // out of the occluders; `shadedCanSelfShadow` (the inner side of open
-    // cylinders and cones) keeps it in, asked only about the part of the
-    // cone before the footprint.
+    // out of the occluders; `shadedCanSelfShadow` (the inner side of a shape
+    // that can shadow itself, Primitive::canShadowItself) keeps it in, asked
+    // only about the part of the cone before the footprint.
     std::uint32_t shadedObject = 0;
     bool shadedCanSelfShadow = false;
     int level = 0;             // the eye pyray's level: the shadow pyray starts there
@@ -110,10 +110,5 @@ struct PointShadowQuery {
 double pointLightLitFraction(const Scene& scene, const Footprint& footprint,
                              const PointShadowQuery& query, ShadowScratch& scratch,
                              RenderCounters& counters);
-
-// Whether an object can cast a shadow on itself where it faces a light: only
-// the open (uncapped) cylinders and cones; every other shape asos knows is
-// convex or flat.
-bool canShadowItself(const Shape& shape);
 
 }  // namespace asos

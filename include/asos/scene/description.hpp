@@ -80,7 +80,8 @@ struct CylinderShape { Vec3 base{0.0}; Vec3 cap{0.0, 1.0, 0.0}; double radius = 
 struct DiscShape { Vec3 center{0.0}; Vec3 normal{0.0, 1.0, 0.0}; double radius = 1.0; double holeRadius = 0.0; };
 // POV-Ray's vertex-list form, points as written (2-D points have z = 0): a
 // sub-polygon is closed by repeating its first vertex; the last one may be left
-// open. The interpreter has checked: at least 3 points, all in one plane.
+// open. Its shape checks (validate, shapes/polygon.hpp): at least 3 points,
+// not all on one line, all in one plane.
 struct PolygonShape { std::vector<Vec3> points; };
 // POV-Ray normalises the normal and keeps the distance: the plane is
 // {p : dot(normalize(normal), p) = distance}, its inside on the -normal side.

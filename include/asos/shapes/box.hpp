@@ -3,12 +3,19 @@
 // its local frame, which is the object frame.
 #include <cmath>
 #include <optional>
+#include <vector>
 
 #include "asos/geometry/bounds.hpp"
 #include "asos/geometry/cone.hpp"
 #include "asos/geometry/ray.hpp"
+#include "asos/geometry/transform.hpp"
+#include "asos/scene/description.hpp"
+#include "asos/shapes/box_from_origin.hpp"
 #include "asos/shapes/local_cone.hpp"
 #include "asos/shapes/local_hit.hpp"
+#include "asos/shapes/local_rays.hpp"
+#include "asos/shapes/placed.hpp"
+#include "asos/shapes/shape_issue.hpp"
 
 namespace asos {
 
@@ -38,6 +45,17 @@ public:
     // (RigidBounds); the range [t0, t1] is set only past it.
     ConeClass classifyRanging(LocalCone& cone, double t0, double t1, const RigidBounds& back) const;
 
+    bool convex() const { return true; }
+    bool canShadowItself() const { return false; }
+    // The plane of a face the origin is on or beyond.
+    bool raysLeave(const LocalRays& rays) const;
+    // BoxFromOrigin: the slabs' offsets from the origin found once.
+    template <class User>
+    decltype(auto) withAnyTestFrom(const Vec3& origin, User&& user) const {
+        const BoxFromOrigin fast(lo_, hi_, origin);
+        return user([&fast](const Vec3& dir, double tMin, double tMax) { return fast.intersectAny(dir, tMin, tMax); });
+    }
+
 private:
     template <class SetRange, class Finish>
     ConeClass classifyWith(const LocalCone& cone, SetRange&& setRange, Finish&& finish) const;
@@ -51,5 +69,10 @@ private:
     // dependent additions per cone.
     double cornerAbsSum_;
 };
+
+// POV-Ray's box record: two finite corners.
+std::vector<ShapeIssue> validate(const BoxShape& record);
+// Its Box, in the object frame.
+Placed<Box> place(const BoxShape& record, const Transform& worldFromObject);
 
 }  // namespace asos

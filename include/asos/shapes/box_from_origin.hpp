@@ -6,18 +6,19 @@
 // Box::intersectAny's bit for bit, with no margin and no fallback.
 #include <utility>
 
-#include "asos/shapes/box.hpp"
+#include "asos/geometry/vec.hpp"
 
 namespace asos {
 
 class BoxFromOrigin {
 public:
-    // `origin` in the box's local frame.
-    BoxFromOrigin(const Box& box, const Vec3& origin) {
+    // The box's corners lo <= hi (Box::lo, Box::hi) and `origin` in its
+    // local frame.
+    BoxFromOrigin(const Vec3& lo, const Vec3& hi, const Vec3& origin) {
         for (int i = 0; i < 3; ++i) {
-            lo_[i] = box.lo()[i] - origin[i];
-            hi_[i] = box.hi()[i] - origin[i];
-            outside_[i] = origin[i] < box.lo()[i] || origin[i] > box.hi()[i];
+            lo_[i] = lo[i] - origin[i];
+            hi_[i] = hi[i] - origin[i];
+            outside_[i] = origin[i] < lo[i] || origin[i] > hi[i];
         }
     }
 

@@ -2,14 +2,25 @@
 // POV-Ray's disc { centre, normal, radius [, hole radius] }: the annulus
 // hole <= |x - centre| <= radius in the plane through the centre. The local
 // frame puts it in z = 0, centred on the origin, the normal along +z.
+// Under a non-uniform scale, a shear or a matrix the disc's record is placed
+// as an EllipticDisc instead (place, below): the disc's room is this file,
+// disc.cpp and elliptic_disc.hpp/.cpp.
 #include <optional>
+#include <variant>
+#include <vector>
 
 #include "asos/geometry/bounds.hpp"
 #include "asos/geometry/cone.hpp"
 #include "asos/geometry/ray.hpp"
+#include "asos/geometry/transform.hpp"
+#include "asos/scene/description.hpp"
 #include "asos/shapes/cone_geometry.hpp"
+#include "asos/shapes/elliptic_disc.hpp"
 #include "asos/shapes/local_cone.hpp"
 #include "asos/shapes/local_hit.hpp"
+#include "asos/shapes/local_rays.hpp"
+#include "asos/shapes/placed.hpp"
+#include "asos/shapes/shape_issue.hpp"
 
 namespace asos {
 
@@ -22,6 +33,12 @@ public:
     bool empty() const { return !(radius_ > hole_); }
     // Without a hole, a convex region.
     bool convex() const { return !(hole_ > 0.0); }
+    bool canShadowItself() const { return false; }  // flat
+    bool raysLeave(const LocalRays& rays) const { return rays.leaveZPlane(); }
+    template <class User>
+    decltype(auto) withAnyTestFrom(const Vec3& origin, User&& user) const {
+        return user(exactAnyTestFrom(*this, origin));
+    }
     BoundingSphere boundingSphere() const { return {Vec3(0.0), radius_}; }
     Bounds3 worldBounds(const Mat3& worldFromLocal, const Vec3& offset) const;
 
@@ -83,5 +100,14 @@ inline ConeClass Disc::classifyWith(const LocalCone& cone, SetRange&& setRange, 
     }
     return finish(classifyExactly(cone));
 }
+
+// POV-Ray's disc record: a finite centre, a finite normal that is not zero,
+// a positive radius and a hole radius from 0 up to it.
+std::vector<ShapeIssue> validate(const DiscShape& record);
+// Its Disc in the plane through the centre across the normal, or, where
+// worldFromObject is not a similarity, the EllipticDisc that is its image,
+// in a rigid frame.
+std::variant<Placed<Disc>, Placed<EllipticDisc>> place(const DiscShape& record,
+                                                       const Transform& worldFromObject);
 
 }  // namespace asos

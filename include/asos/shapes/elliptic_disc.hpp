@@ -1,6 +1,7 @@
 #pragma once
 // A disc under a non-uniform scale, a shear or a matrix: an elliptic annulus
-// in a world plane. Primitive::make lays it out in a rigid frame
+// in a world plane, a local form of the disc's record (part of the disc's
+// room: disc.hpp places it). It is laid out in a rigid frame
 // (LocalFrame::flattened) whose x and y run along the ellipse's axes, so
 // that it is hole <= |(x / ax, y / ay)| <= 1 in the plane z = 0 (the hole a
 // fraction of the outer ellipse). Its cones then stay circular, and are
@@ -12,6 +13,7 @@
 #include "asos/geometry/ray.hpp"
 #include "asos/shapes/local_cone.hpp"
 #include "asos/shapes/local_hit.hpp"
+#include "asos/shapes/local_rays.hpp"
 
 namespace asos {
 
@@ -24,6 +26,12 @@ public:
 
     // Without a hole, a convex region.
     bool convex() const { return !(hole_ > 0.0); }
+    bool canShadowItself() const { return false; }  // flat
+    bool raysLeave(const LocalRays& rays) const { return rays.leaveZPlane(); }
+    template <class User>
+    decltype(auto) withAnyTestFrom(const Vec3& origin, User&& user) const {
+        return user(exactAnyTestFrom(*this, origin));
+    }
     BoundingSphere boundingSphere() const { return {Vec3(0.0), reach_}; }
     Bounds3 worldBounds(const Mat3& worldFromLocal, const Vec3& offset) const;
 

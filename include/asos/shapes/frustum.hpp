@@ -2,8 +2,8 @@
 // The geometry shared by POV-Ray's cylinder and cone: in the local frame the
 // axis runs along +z from 0 to length, the radius goes linearly from r0 at
 // z = 0 to r1 at z = length, with caps (discs) at both ends unless open.
-// Cylinder and TruncatedCone own their ray tests; the cone classification,
-// the same for both, lives here.
+// Cylinder and TruncatedCone own their ray tests; the cone classification
+// and the answers about rays from one origin, the same for both, live here.
 #include <optional>
 
 #include "asos/geometry/bounds.hpp"
@@ -11,6 +11,7 @@
 #include "asos/geometry/ray.hpp"
 #include "asos/shapes/local_cone.hpp"
 #include "asos/shapes/local_hit.hpp"
+#include "asos/shapes/local_rays.hpp"
 
 namespace asos {
 
@@ -38,6 +39,10 @@ public:
     // one turned away) and its axis hits; an open surface counts both rims
     // whole. See docs/geometry.md.
     ConeClass classify(const LocalCone& cone) const;
+    // The capped solid holds the open surface too: a cap's plane the origin
+    // is beyond, or the plane tangent to the side along the generator
+    // facing the origin.
+    bool raysLeave(const LocalRays& rays) const;
 
 private:
 public:
@@ -97,5 +102,15 @@ private:
     bool capped_;
     BoundingSphere ball_;
 };
+
+// The rigid placement of a frustum's local frame on the axis from `base` to
+// `cap` (POV-Ray's cylinder and cone): local +z along it, from the base at
+// the origin to the cap at z = length; none when the points coincide (to the
+// rounding of their coordinates).
+struct FrustumAxis {
+    Mat3 objectFromLocal;
+    double length;
+};
+std::optional<FrustumAxis> frustumAxis(const Vec3& base, const Vec3& cap);
 
 }  // namespace asos

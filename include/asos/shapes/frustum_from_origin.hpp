@@ -16,6 +16,7 @@
 
 #include "asos/geometry/vec.hpp"
 #include "asos/shapes/frustum.hpp"
+#include "asos/shapes/local_rays.hpp"
 
 namespace asos {
 
@@ -104,5 +105,22 @@ private:
     double margin2_ = 0.0;        // (the margin, 1e-7 of the shape's scale)^2
     bool usable_;
 };
+
+// withAnyTestFrom of a shape whose solid is `frustum` (Cylinder,
+// TruncatedCone): user(test) with FrustumFromOrigin's test, asking the
+// shape's own ray test where it leaves a ray undecided, or with the shape's
+// own test alone where it cannot decide (an open or empty frustum).
+template <class S, class User>
+decltype(auto) frustumAnyTestFrom(const Frustum& frustum, const S& shape, const Vec3& origin, User&& user) {
+    const auto exact = exactAnyTestFrom(shape, origin);
+    const FrustumFromOrigin fast(frustum, origin);
+    if (fast.usable()) {
+        return user([&fast, &exact](const Vec3& dir, double tMin, double tMax) {
+            const int answer = fast.decide(dir, tMin, tMax);
+            return answer == FrustumFromOrigin::kUndecided ? exact(dir, tMin, tMax) : answer != 0;
+        });
+    }
+    return user(exact);
+}
 
 }  // namespace asos

@@ -143,4 +143,14 @@ struct LocalCone {
     bool rangeEmpty() const { return tMin > tMax; }
 };
 
+// classifyRanging of a shape without a fast path before the range: the
+// range set, then its classify (inline, so that a rigid frame's
+// classification keeps the cone in registers).
+template <class S>
+__attribute__((always_inline)) inline ConeClass classifyAfterRange(const S& shape, LocalCone& cone, double t0,
+                                                                  double t1, const RigidBounds& back) {
+    cone.setRange(t0, t1, cone.absTol);
+    return back(shape.classify(cone));
+}
+
 }  // namespace asos

@@ -2,12 +2,18 @@
 // POV-Ray's plane { normal, distance }: the points x with n.x = distance for
 // the unit n along the given normal. The local frame is the object frame.
 #include <optional>
+#include <vector>
 
 #include "asos/geometry/bounds.hpp"
 #include "asos/geometry/cone.hpp"
 #include "asos/geometry/ray.hpp"
+#include "asos/geometry/transform.hpp"
+#include "asos/scene/description.hpp"
 #include "asos/shapes/local_cone.hpp"
 #include "asos/shapes/local_hit.hpp"
+#include "asos/shapes/local_rays.hpp"
+#include "asos/shapes/placed.hpp"
+#include "asos/shapes/shape_issue.hpp"
 
 namespace asos {
 
@@ -30,10 +36,28 @@ public:
     }
     // Exact: from the range of n.d over the cone and the apex height.
     ConeClass classify(const LocalCone& cone) const;
+    ConeClass classifyRanging(LocalCone& cone, double t0, double t1, const RigidBounds& back) const {
+        return classifyAfterRange(*this, cone, t0, t1, back);
+    }
+
+    // Unbounded: not taken as a convex occluder, nor shown to be left by rays.
+    bool convex() const { return false; }
+    bool raysLeave(const LocalRays&) const { return false; }
+    bool canShadowItself() const { return false; }  // flat
+    template <class User>
+    decltype(auto) withAnyTestFrom(const Vec3& origin, User&& user) const {
+        return user(exactAnyTestFrom(*this, origin));
+    }
 
 private:
     Vec3 normal_;
     double distance_;
 };
+
+// POV-Ray's plane record: a finite normal that is not zero, a finite
+// distance.
+std::vector<ShapeIssue> validate(const PlaneShape& record);
+// Its Plane, in the object frame, the normal made unit.
+Placed<Plane> place(const PlaneShape& record, const Transform& worldFromObject);
 
 }  // namespace asos

@@ -11,8 +11,13 @@
 #include "asos/geometry/bounds.hpp"
 #include "asos/geometry/cone.hpp"
 #include "asos/geometry/ray.hpp"
+#include "asos/geometry/transform.hpp"
+#include "asos/scene/description.hpp"
 #include "asos/shapes/local_cone.hpp"
 #include "asos/shapes/local_hit.hpp"
+#include "asos/shapes/local_rays.hpp"
+#include "asos/shapes/placed.hpp"
+#include "asos/shapes/shape_issue.hpp"
 
 namespace asos {
 
@@ -28,6 +33,12 @@ public:
     // One loop, convex (Primitive::convex): its turns all go one way and add
     // up to one full turn (repeated and collinear points aside).
     bool convex() const { return convex_; }
+    bool canShadowItself() const { return false; }  // flat
+    bool raysLeave(const LocalRays& rays) const { return rays.leaveZPlane(); }
+    template <class User>
+    decltype(auto) withAnyTestFrom(const Vec3& origin, User&& user) const {
+        return user(exactAnyTestFrom(*this, origin));
+    }
     const std::vector<Vec2>& vertices() const { return vertices_; }
     const std::vector<std::uint32_t>& loopEnds() const { return loopEnds_; }
     BoundingSphere boundingSphere() const { return {Vec3(center_, 0.0), radius_}; }
@@ -87,5 +98,13 @@ private:
     double radius_ = 0.0;
     bool convex_ = false;
 };
+
+// POV-Ray's polygon record: at least three finite points, not all on one
+// line, all in one plane.
+std::vector<ShapeIssue> validate(const PolygonShape& record);
+// Its Polygon, in the plane of the points, its loops closed as POV-Ray
+// closes them; under a frame that is not a similarity, the image polygon
+// laid out in a rigid frame.
+Placed<Polygon> place(const PolygonShape& record, const Transform& worldFromObject);
 
 }  // namespace asos

@@ -4,10 +4,11 @@
 // cone (paper: "Detection Phase"). A Primitive is a concrete local shape in a
 // std::variant plus the frame placing it in the world, so dispatch is a jump
 // on the variant's index, without virtual calls, and rays and cones reach the
-// shape through the cheapest path its frame allows (see LocalFrame).
+// shape through the cheapest path its frame allows (see LocalFrame). Every
+// answer is the shape's own (PrimitiveShape, primitive_shape.hpp): Primitive
+// carries rays, cones and points into the local frame and dispatches once.
 #include <cstddef>
 #include <optional>
-#include <type_traits>
 #include <variant>
 
 #include "asos/geometry/bounds.hpp"
@@ -17,15 +18,15 @@
 #include "asos/geometry/transform.hpp"
 #include "asos/scene/description.hpp"
 #include "asos/shapes/box.hpp"
-#include "asos/shapes/box_from_origin.hpp"
 #include "asos/shapes/cylinder.hpp"
 #include "asos/shapes/disc.hpp"
 #include "asos/shapes/elliptic_disc.hpp"
-#include "asos/shapes/frustum_from_origin.hpp"
 #include "asos/shapes/local_cone.hpp"
 #include "asos/shapes/local_frame.hpp"
+#include "asos/shapes/placed.hpp"
 #include "asos/shapes/plane.hpp"
 #include "asos/shapes/polygon.hpp"
+#include "asos/shapes/primitive_shape.hpp"
 #include "asos/shapes/sphere.hpp"
 #include "asos/shapes/truncated_cone.hpp"
 
@@ -42,7 +43,10 @@ struct TranslatedSphere {
 
 class Primitive {
 public:
-    // Throws std::invalid_argument with a clear message for meaningless shapes.
+    // The record's shape (validate, place: beside each shape) placed by
+    // worldFromObject. Throws std::invalid_argument with the record's first
+    // issue (shape_issue.hpp) for a meaningless shape, or for a singular
+    // transform.
     static Primitive make(const Shape& shape, const Transform& worldFromObject);
 
     bool bounded() const;         // false for planes
@@ -97,14 +101,28 @@ public:
     // area_light_shadow.cpp.)
     bool raysLeave(const Vec3& worldOrigin, const Vec3* directions, int count) const;
 
+    // Whether the primitive can cast a shadow on itself where it faces a
+    // light: a surface neither convex nor flat (an open cylinder or cone).
+    // The shadow tests leave the shaded object out otherwise.
+    bool canShadowItself() const;
+
     // The POV-Ray keyword of the shape ("sphere", "cone", ...).
     const char* kindName() const;
 
 private:
+    // The local shapes, each answering PrimitiveShape. A description record
+    // (an alternative of Shape, answering ShapeRecord) becomes one of them.
     using LocalShape =
         std::variant<Sphere, Box, TruncatedCone, Cylinder, Disc, Polygon, Plane, EllipticDisc>;
+    static_assert(kEveryAlternativePrimitiveShape<LocalShape>,
+                  "every local shape answers PrimitiveShape (primitive_shape.hpp)");
 
     Primitive(LocalShape shape, LocalFrame frame, const char* name);
+    // What a record's place returns (Placed, or a variant of Placed).
+    template <class S>
+    static Primitive fromPlaced(Placed<S>&& placed);
+    template <class... S>
+    static Primitive fromPlaced(std::variant<Placed<S>...>&& placed);
     template <bool kScaled>
     ConeClass classifyRigid(const PreparedCone& cone) const;
     ConeClass classifyGeneral(const PreparedCone& cone) const;
@@ -120,8 +138,9 @@ private:
 };
 
 namespace primitive_detail {
-// A jump on the variant's index to the concrete shape: no virtual call, and
-// no valueless check (a LocalShape is never valueless).
+// A chain of tests of the variant's index, the first shapes (the commonest)
+// first, to the concrete shape: no virtual call, and no valueless check (a
+// LocalShape is never valueless).
 template <std::size_t I = 0, class Variant, class F>
 decltype(auto) dispatch(const Variant& v, F& f) {
     if constexpr (I + 1 == std::variant_size_v<Variant>) {
@@ -129,6 +148,41 @@ decltype(auto) dispatch(const Variant& v, F& f) {
     } else {
         if (v.index() == I) return f(*std::get_if<I>(&v));
         return dispatch<I + 1>(v, f);
+    }
+}
+
+// The same as one jump (a switch on the index, a jump table) for the cone
+// classification, where every shape is as likely as the next. A case per
+// alternative, up to kJumpCases of them.
+inline constexpr std::size_t kJumpCases = 16;
+
+template <std::size_t I, class R, class Variant, class F>
+__attribute__((always_inline)) inline R jumpCase(const Variant& v, F& f) {
+    if constexpr (I < std::variant_size_v<Variant>) return f(*std::get_if<I>(&v));
+    else __builtin_unreachable();
+}
+
+template <class R, class Variant, class F>
+__attribute__((always_inline)) inline R jump(const Variant& v, F& f) {
+    static_assert(std::variant_size_v<Variant> <= kJumpCases, "jump: add cases up to the alternatives");
+    switch (v.index()) {
+        case 0: return jumpCase<0, R>(v, f);
+        case 1: return jumpCase<1, R>(v, f);
+        case 2: return jumpCase<2, R>(v, f);
+        case 3: return jumpCase<3, R>(v, f);
+        case 4: return jumpCase<4, R>(v, f);
+        case 5: return jumpCase<5, R>(v, f);
+        case 6: return jumpCase<6, R>(v, f);
+        case 7: return jumpCase<7, R>(v, f);
+        case 8: return jumpCase<8, R>(v, f);
+        case 9: return jumpCase<9, R>(v, f);
+        case 10: return jumpCase<10, R>(v, f);
+        case 11: return jumpCase<11, R>(v, f);
+        case 12: return jumpCase<12, R>(v, f);
+        case 13: return jumpCase<13, R>(v, f);
+        case 14: return jumpCase<14, R>(v, f);
+        case 15: return jumpCase<15, R>(v, f);
+        default: __builtin_unreachable();
     }
 }
 }  // namespace primitive_detail
@@ -141,37 +195,19 @@ decltype(auto) Primitive::visit(F&& f) const {
 template <class F>
 decltype(auto) Primitive::withAnyTestFrom(const Vec3& worldOrigin, F&& f) const {
     const Vec3 localOrigin = originToLocal(worldOrigin);
+    const LocalFrame& frame = frame_;
+    // The direction's local image, written out (glm's product is a call).
+    const auto toLocal = [&frame](const Vec3& w) {
+        if (frame.kind == LocalFrame::Kind::Translate) return w;
+        const Mat3& m = frame.localFromWorld;
+        return Vec3(m[0][0] * w.x + m[1][0] * w.y + m[2][0] * w.z, m[0][1] * w.x + m[1][1] * w.y + m[2][1] * w.z,
+                    m[0][2] * w.x + m[1][2] * w.y + m[2][2] * w.z);
+    };
     return visit([&](const auto& shape) {
-        const LocalFrame& frame = frame_;
-        const auto exact = [&shape, &frame, localOrigin](const Vec3& localDir, double tMin, double tMax) {
-            return shape.intersectAny(Ray{localOrigin, localDir}, tMin, tMax);
-        };
-        // The direction's local image, written out (glm's product is a call).
-        const auto toLocal = [&frame](const Vec3& w) {
-            if (frame.kind == LocalFrame::Kind::Translate) return w;
-            const Mat3& m = frame.localFromWorld;
-            return Vec3(m[0][0] * w.x + m[1][0] * w.y + m[2][0] * w.z, m[0][1] * w.x + m[1][1] * w.y + m[2][1] * w.z,
-                        m[0][2] * w.x + m[1][2] * w.y + m[2][2] * w.z);
-        };
-        using S = std::decay_t<decltype(shape)>;
-        if constexpr (std::is_same_v<S, TruncatedCone> || std::is_same_v<S, Cylinder>) {
-            const FrustumFromOrigin fast(shape.frustum(), localOrigin);
-            if (fast.usable()) {
-                return f([&](const Vec3& worldDir, double tMin, double tMax) {
-                    const Vec3 d = toLocal(worldDir);
-                    const int answer = fast.decide(d, tMin, tMax);
-                    return answer == FrustumFromOrigin::kUndecided ? exact(d, tMin, tMax) : answer != 0;
-                });
-            }
-        }
-        if constexpr (std::is_same_v<S, Box>) {
-            const BoxFromOrigin fast(shape, localOrigin);
+        return shape.withAnyTestFrom(localOrigin, [&](const auto& localTest) {
             return f([&](const Vec3& worldDir, double tMin, double tMax) {
-                return fast.intersectAny(toLocal(worldDir), tMin, tMax);
+                return localTest(toLocal(worldDir), tMin, tMax);
             });
-        }
-        return f([&](const Vec3& worldDir, double tMin, double tMax) {
-            return exact(toLocal(worldDir), tMin, tMax);
         });
     });
 }

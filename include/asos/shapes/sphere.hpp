@@ -4,14 +4,20 @@
 #include <limits>
 #include <optional>
 #include <utility>
+#include <vector>
 
 #include "asos/geometry/bounds.hpp"
 #include "asos/geometry/cone.hpp"
 #include "asos/geometry/ray.hpp"
+#include "asos/geometry/transform.hpp"
+#include "asos/scene/description.hpp"
 #include "asos/shapes/cone_geometry.hpp"
 #include "asos/shapes/local_cone.hpp"
 #include "asos/shapes/local_frame.hpp"
 #include "asos/shapes/local_hit.hpp"
+#include "asos/shapes/local_rays.hpp"
+#include "asos/shapes/placed.hpp"
+#include "asos/shapes/shape_issue.hpp"
 
 namespace asos {
 
@@ -84,6 +90,9 @@ public:
                               (roots.far >= tMin && roots.far <= tMax));
     }
     ConeClass classify(const LocalCone& cone) const;  // inline, below
+    ConeClass classifyRanging(LocalCone& cone, double t0, double t1, const RigidBounds& back) const {
+        return classifyAfterRange(*this, cone, t0, t1, back);
+    }
     // Under a non-uniform scale or shear (an ellipsoid in the world), the
     // commonest answers without carrying the cone into the local frame: Miss
     // or Full for a world cone whose apex is outside, from bounds on u.d and
@@ -91,6 +100,18 @@ public:
     // cannot decide, for the bounding-cone path. See docs/geometry.md.
     std::optional<ConeClass> classifyAcrossScale(const PreparedCone& cone,
                                                  const LocalFrame& frame) const;
+
+    bool convex() const { return true; }
+    bool canShadowItself() const { return false; }
+    // The plane across the ball facing the origin: n . x = r with
+    // n = origin / |origin| holds the ball.
+    bool raysLeave(const LocalRays& rays) const {
+        return glm::dot(rays.origin, rays.origin) >= radius_ * radius_ && rays.awayFrom(rays.origin);
+    }
+    template <class User>
+    decltype(auto) withAnyTestFrom(const Vec3& origin, User&& user) const {
+        return user(exactAnyTestFrom(*this, origin));
+    }
 
 private:
     // classify's apex on or inside the sphere (to rounding), out of line;
@@ -153,5 +174,10 @@ inline ConeClass Sphere::classify(const LocalCone& cone) const {
     }
     return classifyApexNear(cone, d2, p2, sigma, band);
 }
+
+// POV-Ray's sphere record: a finite centre, a positive radius.
+std::vector<ShapeIssue> validate(const SphereShape& record);
+// Its Sphere, about the centre.
+Placed<Sphere> place(const SphereShape& record, const Transform& worldFromObject);
 
 }  // namespace asos
