@@ -29,7 +29,7 @@ TEST_CASE("BoxFromOrigin answers as Box::intersectAny", "[shapes][box]") {
     // a slab's plane.
     for (const Vec3 o : {Vec3(0.3, 4.0, -2.0), Vec3(-3.0, 0.5, 0.1), Vec3(40.0, -25.0, 17.0), Vec3(0.1, 0.6, -0.2),
                          Vec3(0.7, 0.6, 0.0), Vec3(0.7, 1.2, 3.0), Vec3(-0.7, 2.0, 0.3), Vec3(0.2, 0.0, -0.9)}) {
-        const BoxFromOrigin fast(box, o);
+        const BoxFromOrigin fast(box.lo(), box.hi(), o);
         const auto compare = [&](const Vec3& d, double tMin, double tMax) {
             const bool exact = box.intersectAny(Ray{o, d}, tMin, tMax);
             INFO("origin " << o.x << " " << o.y << " " << o.z << " dir " << d.x << " " << d.y << " " << d.z << " t "

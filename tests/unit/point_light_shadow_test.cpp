@@ -160,15 +160,3 @@ TEST_CASE("Footprints on the tangent plane, or the cross-section when grazing", 
     CHECK(grazing.at(3.0, 3.0).y == Approx(0.0).margin(1e-12));
     CHECK(grazing.at(3.0, 3.0).x == Approx(3.0));
 }
-
-TEST_CASE("Open cylinders and cones may shadow themselves, other shapes not", "[shadow]") {
-    CHECK(canShadowItself(CylinderShape{{0, 0, 0}, {0, 1, 0}, 1.0, true}));
-    CHECK_FALSE(canShadowItself(CylinderShape{{0, 0, 0}, {0, 1, 0}, 1.0, false}));
-    ConeShape cone;
-    cone.open = true;
-    CHECK(canShadowItself(cone));
-    CHECK_FALSE(canShadowItself(SphereShape{}));
-    CHECK_FALSE(canShadowItself(BoxShape{}));
-    CHECK_FALSE(canShadowItself(PlaneShape{}));
-    CHECK_FALSE(canShadowItself(DiscShape{}));
-}

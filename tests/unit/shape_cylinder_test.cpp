@@ -112,14 +112,18 @@ TEST_CASE("Cylinder cone classification: known answers", "[shapes][cylinder]") {
 }
 
 TEST_CASE("Cylinder degenerate input", "[shapes][cylinder]") {
-    CHECK_THROWS_WITH(cylinder({1, 2, 3}, {1, 2, 3}, 1.0), Catch::Contains("coincide"));
-    CHECK_THROWS_WITH(cylinder({0, 0, 0}, {0, 1, 0}, -1.0), Catch::Contains("radius"));
-    const Primitive thin = cylinder({0, 0, 0}, {0, 1, 0}, 0.0);
-    CHECK_FALSE(thin.intersect({{0, 0.5, -1}, {0, 0, 1}}, 0.0, kInfinity));
-    Cone k;
-    k.apex = {0, 0.5, -3};
-    k.halfAngle = 0.5;
-    CHECK(thin.classify(k).coverage == Coverage::Miss);
+    CHECK_THROWS_WITH(cylinder({1, 2, 3}, {1, 2, 3}, 1.0), "the base and cap points of a cylinder are the same point");
+    // Apart by less than the rounding of their coordinates: the same point.
+    CHECK_THROWS_WITH(cylinder({1e6, 0, 0}, {1e6, 1e-8, 0}, 1.0),
+                      "the base and cap points of a cylinder are the same point");
+    CHECK_THROWS_WITH(cylinder({0, 0, 0}, {0, 1, 0}, -1.0), "the radius of a cylinder must be positive, not -1");
+    CHECK_THROWS_WITH(cylinder({0, 0, 0}, {0, 1, 0}, 0.0), "the radius of a cylinder must be positive, not 0");
+    CHECK_THROWS_WITH(cylinder({0, 0, 0}, {0, kInfinity, 0}, 1.0),
+                      "the cap point of a cylinder must be finite, not <0, inf, 0>");
+    // The cylinder of no radius, which Primitive::make refuses, still answers.
+    const Cylinder thin(0.0, 1.0, false);
+    CHECK_FALSE(thin.intersect(Ray{{0, -1, 0.5}, {0, 1, 0}}, 0.0, kInfinity));
+    CHECK(thin.classify(shapetest::localCone({0, -3, 0.5}, {0, 1, 0}, 0.5)).coverage == Coverage::Miss);
 }
 
 TEST_CASE("Cylinder cone classification is conservative (property)",

@@ -71,15 +71,19 @@ TEST_CASE("Disc cone classification: known answers", "[shapes][disc]") {
 }
 
 TEST_CASE("Disc degenerate input", "[shapes][disc]") {
-    CHECK_THROWS_WITH(disc({0, 0, 0}, {0, 0, 0}, 1.0), Catch::Contains("normal vector is zero"));
-    CHECK_THROWS_WITH(disc({0, 0, 0}, {0, 0, 1}, -1.0), Catch::Contains("radius"));
-    const Primitive empty = disc({0, 0, 0}, {0, 0, 1}, 1.0, 1.0);  // hole as large as the disc
-    CHECK_FALSE(empty.intersect({{0.5, 0, -1}, {0, 0, 1}}, 0.0, kInfinity));
-    Cone c;
-    c.apex = {0, 0, -2};
-    c.halfAngle = 0.8;
+    CHECK_THROWS_WITH(disc({0, 0, 0}, {0, 0, 0}, 1.0), "the normal of a disc must not be zero");
+    CHECK_THROWS_WITH(disc({0, 0, 0}, {0, 0, 1e-200}, 1.0), "the normal of a disc must not be zero");
+    CHECK_THROWS_WITH(disc({0, 0, 0}, {0, 0, 1}, -1.0), "the radius of a disc must be positive, not -1");
+    CHECK_THROWS_WITH(disc({0, 0, 0}, {0, 0, 1}, 1.0, 1.0),
+                      "the hole radius of a disc must be at least 0 and less than its radius 1, not 1");
+    CHECK_THROWS_WITH(disc({0, 0, 0}, {0, 0, 1}, 1.0, std::nan("")),
+                      "the hole radius of a disc must be finite, not nan");
+    // The empty discs, which Primitive::make refuses, still answer.
+    const LocalCone c = shapetest::localCone({0, 0, -2}, {0, 0, 1}, 0.8);
+    const Disc empty(1.0, 1.0);  // hole as large as the disc
+    CHECK_FALSE(empty.intersect(Ray{{0.5, 0, -1}, {0, 0, 1}}, 0.0, kInfinity));
     CHECK(empty.classify(c).coverage == Coverage::Miss);
-    CHECK(disc({0, 0, 0}, {0, 0, 1}, 0.0).classify(c).coverage == Coverage::Miss);
+    CHECK(Disc(0.0, 0.0).classify(c).coverage == Coverage::Miss);
 }
 
 TEST_CASE("Disc cone classification is conservative (property)", "[shapes][disc][property]") {

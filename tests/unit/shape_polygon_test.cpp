@@ -111,17 +111,19 @@ TEST_CASE("Polygon cone classification: known answers", "[shapes][polygon]") {
 }
 
 TEST_CASE("Polygon degenerate input", "[shapes][polygon]") {
-    CHECK_THROWS_WITH(polygon({{0, 0, 0}, {1, 0, 0}}), Catch::Contains("at least three points"));
+    CHECK_THROWS_WITH(polygon({{0, 0, 0}, {1, 0, 0}}), "a polygon needs at least 3 points, not 2");
     CHECK_THROWS_WITH(polygon({{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}}),
-                      Catch::Contains("not coplanar"));
-    // Collinear and repeated points: an empty polygon.
-    const Primitive line = polygon({{0, 0, 0}, {1, 1, 1}, {1, 1, 1}, {2, 2, 2}});
-    CHECK_FALSE(line.intersect({{1, 1, 0}, {0, 0, 1}}, 0.0, kInfinity));
+                      "the points of the polygon are not in one plane: point 4 is 1 away from the plane of the first ones");
+    CHECK_THROWS_WITH(polygon({{0, 0, 0}, {1, 0, 0}, {0, kInfinity, 0}}),
+                      "point 3 of the polygon must be finite, not <0, inf, 0>");
+    // Collinear and repeated points: all on one line.
+    CHECK_THROWS_WITH(polygon({{0, 0, 0}, {1, 1, 1}, {1, 1, 1}, {2, 2, 2}}),
+                      "the points of the polygon are all on one line");
+    // A polygon of no loop, which Primitive::make never lays out, answers as empty.
+    const Polygon none({Vec2(0.0), Vec2(1.0)}, {});
+    CHECK_FALSE(none.intersect(Ray{{0.5, 0.5, -1}, {0, 0, 1}}, 0.0, kInfinity));
+    CHECK(none.classify(shapetest::localCone({0.5, 0.5, -3}, {0, 0, 1}, 0.5)).coverage == Coverage::Miss);
     Cone c;
-    c.apex = {1, 1, -3};
-    c.halfAngle = 0.5;
-    CHECK(line.classify(c).coverage == Coverage::Miss);
-    CHECK(line.worldBounds().contains({1, 1, 1}));
     // Repeated vertices inside a valid polygon are harmless.
     const Primitive rep = polygon({{0, 0, 0}, {1, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}});
     CHECK(hits(rep, 0.5, 0.5));
@@ -285,6 +287,27 @@ TEST_CASE("Which primitives are convex sets", "[shapes][polygon]") {
     CHECK_FALSE(polygon({{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}, {0, 0.5, 0}, {0, 0.75, 0}, {0, 0, 0}}).convex());
     CHECK_FALSE(polygon({{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 0, 0}, {2, 2, 0}, {3, 2, 0}, {3, 3, 0}, {2, 2, 0}})
                     .convex());
+}
+
+TEST_CASE("Open cylinders and cones may shadow themselves, other shapes not", "[shapes][shadow]") {
+    const Transform none{};
+    const Transform stretched = Transform::scale({2, 1, 0.5});
+    const auto can = [](const Shape& shape, const Transform& t) { return Primitive::make(shape, t).canShadowItself(); };
+    CHECK(can(CylinderShape{{0, 0, 0}, {0, 1, 0}, 1.0, true}, none));
+    CHECK_FALSE(can(CylinderShape{{0, 0, 0}, {0, 1, 0}, 1.0, false}, none));
+    ConeShape cone;
+    cone.open = true;
+    CHECK(can(cone, none));
+    CHECK_FALSE(can(ConeShape{}, none));
+    // A cone of equal radii is placed as a cylinder.
+    CHECK(can(ConeShape{{0, 0, 0}, 0.5, {0, 1, 0}, 0.5, true}, none));
+    CHECK_FALSE(can(ConeShape{{0, 0, 0}, 0.5, {0, 1, 0}, 0.5, false}, none));
+    CHECK_FALSE(can(SphereShape{}, none));
+    CHECK_FALSE(can(BoxShape{}, none));
+    CHECK_FALSE(can(PlaneShape{}, none));
+    CHECK_FALSE(can(DiscShape{}, none));
+    CHECK_FALSE(can(DiscShape{}, stretched));  // an elliptic disc
+    CHECK_FALSE(can(PolygonShape{{{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0.5, 0.2, 0}}}, none));
 }
 
 TEST_CASE("Polygon classifyRanging answers as classify does", "[shapes][polygon]") {

@@ -26,6 +26,18 @@ namespace shapetest {
 
 using namespace asos;
 
+// A cone in a shape's local frame over [0, inf), for tests that ask a local
+// shape directly (the degenerate shapes Primitive::make refuses).
+inline LocalCone localCone(const Vec3& apex, const Vec3& axis, double halfAngle) {
+    LocalCone cone;
+    cone.apex = apex;
+    cone.axis = glm::normalize(axis);
+    cone.cosHalf = std::cos(halfAngle);
+    cone.sinHalf = std::sin(halfAngle);
+    cone.setRange(0.0, kInfinity, 1e-11 * (std::abs(apex.x) + std::abs(apex.y) + std::abs(apex.z)));
+    return cone;
+}
+
 inline std::uint64_t splitmix(std::uint64_t x) {
     x += 0x9e3779b97f4a7c15ull;
     x = (x ^ (x >> 30)) * 0xbf58476d1ce4e5b9ull;

@@ -123,15 +123,18 @@ TEST_CASE("Sphere cone classification: known answers", "[shapes][sphere]") {
 }
 
 TEST_CASE("Sphere degenerate input has defined answers", "[shapes][sphere]") {
-    CHECK_THROWS_WITH(sphere({0, 0, 0}, -1.0), Catch::Contains("radius must not be negative"));
+    CHECK_THROWS_WITH(sphere({0, 0, 0}, -1.0), "the radius of a sphere must be positive, not -1");
+    CHECK_THROWS_WITH(sphere({0, 0, 0}, 0.0), "the radius of a sphere must be positive, not 0");
+    CHECK_THROWS_WITH(sphere({0, 0, 0}, kInfinity), "the radius of a sphere must be finite, not inf");
+    CHECK_THROWS_WITH(sphere({0, std::nan(""), 0}, 1.0), "the centre of a sphere must be finite, not <0, nan, 0>");
     CHECK_THROWS_WITH(sphere({0, 0, 0}, 1.0, Transform::scale({1, 0, 1})),
                       Catch::Contains("singular"));
-    const Primitive empty = sphere({0, 0, 0}, 0.0);
-    CHECK_FALSE(empty.intersect({{0, 0, -5}, {0, 0, 1}}, 0.0, kInfinity));
+    // The empty sphere, which Primitive::make refuses, still answers.
+    const Sphere empty(0.0);
+    CHECK_FALSE(empty.intersect(Ray{{0, 0, -5}, {0, 0, 1}}, 0.0, kInfinity));
+    CHECK(empty.classify(shapetest::localCone({0, 0, -5}, {0, 0, 1}, 0.5)).coverage == Coverage::Miss);
     Cone c;
     c.apex = {0, 0, -5};
-    c.halfAngle = 0.5;
-    CHECK(empty.classify(c).coverage == Coverage::Miss);
     const Primitive s = sphere({0, 0, 0}, 1.0);
     // A ray-thin cone along a hitting ray is Full.
     c.halfAngle = 0.0;
