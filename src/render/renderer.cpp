@@ -9,7 +9,7 @@
 
 #include <tbb/enumerable_thread_specific.h>
 
-#include "asos/render/asos_settings.hpp"
+#include "asos/scene/asos_settings.hpp"
 #include "asos/render/asos_tracer.hpp"
 #include "asos/render/camera.hpp"
 #include "asos/render/ray_tracer.hpp"

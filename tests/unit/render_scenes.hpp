@@ -5,7 +5,7 @@
 #include <cmath>
 #include <memory>
 
-#include "asos/render/asos_settings.hpp"
+#include "asos/scene/asos_settings.hpp"
 #include "asos/render/camera.hpp"
 #include "asos/render/ray_tracer.hpp"
 #include "asos/scene/description.hpp"

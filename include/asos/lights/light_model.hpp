@@ -24,7 +24,7 @@
 
 #include "asos/diag/diagnostics.hpp"
 #include "asos/lights/light_form.hpp"
-#include "asos/render/asos_settings.hpp"
+#include "asos/scene/asos_settings.hpp"
 #include "asos/scene/description.hpp"
 
 namespace asos {

@@ -15,7 +15,7 @@
 #include <vector>
 
 #include "asos/geometry/beam_eye.hpp"
-#include "asos/render/asos_settings.hpp"
+#include "asos/scene/asos_settings.hpp"
 #include "asos/render/camera.hpp"
 #include "asos/render/cone_candidates.hpp"
 #include "asos/render/pattern_edges.hpp"

@@ -19,7 +19,7 @@
 
 #include "asos/geometry/beam_eye.hpp"
 #include "asos/geometry/cone.hpp"
-#include "asos/render/asos_settings.hpp"
+#include "asos/scene/asos_settings.hpp"
 #include "asos/render/camera.hpp"
 #include "asos/render/cone_candidates.hpp"
 #include "asos/render/sampling.hpp"

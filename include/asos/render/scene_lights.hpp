@@ -9,7 +9,7 @@
 #include <vector>
 
 #include "asos/lights/light_model.hpp"
-#include "asos/render/asos_settings.hpp"
+#include "asos/scene/asos_settings.hpp"
 #include "asos/scene/description.hpp"
 
 namespace asos {

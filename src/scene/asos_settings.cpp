@@ -1,4 +1,4 @@
-#include "asos/render/asos_settings.hpp"
+#include "asos/scene/asos_settings.hpp"
 
 #include <cmath>
 #include <sstream>
