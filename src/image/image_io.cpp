@@ -18,6 +18,7 @@
 #include <OpenImageIO/imageio.h>
 
 #include "asos/image/encoding.hpp"
+#include "asos/util/function_ref.hpp"
 
 namespace asos {
 namespace {
@@ -74,35 +75,39 @@ const char* formatName(SampleFormat f) {
 
 bool isInteger(SampleFormat f) { return f == SampleFormat::UInt8 || f == SampleFormat::UInt16; }
 
+struct ResolvedFormat {
+    SampleFormat samples = SampleFormat::Auto;
+    std::string error{};  // empty when the format can hold the samples
+};
+
 // Resolves Auto and checks that the format can hold the samples.
-std::string resolveFormat(const fs::path& path, SampleFormat requested, SampleFormat& resolved) {
+ResolvedFormat resolveFormat(const fs::path& path, SampleFormat requested) {
     const std::string ext = lowerExtension(path);
     if (ext.empty())
-        return "cannot choose an image format for '" + path.string() +
-               "': the file name has no extension (use .png, .exr, .tif, ...)";
+        return {.error = "cannot choose an image format for '" + path.string() +
+                         "': the file name has no extension (use .png, .exr, .tif, ...)"};
     const FormatCaps* caps = findFormat(ext);
     if (!caps) {
         // Unknown to us: ask OpenImageIO whether it has a writer.
         auto probe = OIIO::ImageOutput::create(path.string());
         if (!probe) {
             (void)OIIO::geterror();
-            return "cannot write '" + path.string() + "': no image format for extension '" + ext +
-                   "' (use .png, .exr, .tif, .jpg, ...)";
+            return {.error = "cannot write '" + path.string() + "': no image format for extension '" + ext +
+                             "' (use .png, .exr, .tif, .jpg, ...)"};
         }
-        resolved = requested == SampleFormat::Auto ? SampleFormat::UInt8 : requested;
-        if (!isInteger(resolved))
-            return "cannot write " + std::string(formatName(resolved)) + " samples to '" + ext +
-                   "' files (use .exr or .tif)";
-        return {};
+        const SampleFormat samples = requested == SampleFormat::Auto ? SampleFormat::UInt8 : requested;
+        if (!isInteger(samples))
+            return {.error = "cannot write " + std::string(formatName(samples)) + " samples to '" + ext +
+                             "' files (use .exr or .tif)"};
+        return {.samples = samples};
     }
-    resolved = requested == SampleFormat::Auto ? caps->preferred : requested;
-    const bool supported = (resolved == SampleFormat::UInt8 && caps->uint8) ||
-                           (resolved == SampleFormat::UInt16 && caps->uint16) ||
-                           (resolved == SampleFormat::Half && caps->half) ||
-                           (resolved == SampleFormat::Float && caps->float32);
-    if (!supported)
-        return "'" + ext + "' files cannot store " + formatName(resolved) + " samples";
-    return {};
+    const SampleFormat samples = requested == SampleFormat::Auto ? caps->preferred : requested;
+    const bool supported = (samples == SampleFormat::UInt8 && caps->uint8) ||
+                           (samples == SampleFormat::UInt16 && caps->uint16) ||
+                           (samples == SampleFormat::Half && caps->half) ||
+                           (samples == SampleFormat::Float && caps->float32);
+    if (!supported) return {.error = "'" + ext + "' files cannot store " + formatName(samples) + " samples"};
+    return {.samples = samples};
 }
 
 OIIO::TypeDesc typeOf(SampleFormat f) {
@@ -141,6 +146,32 @@ fs::path createTemporaryFile(const fs::path& path, std::string& error) {
     return {};
 }
 
+// Writes `path` through `fill`, which writes the whole file at the path it is
+// given and returns why it failed (empty on success): that path is a new
+// temporary file beside `path`, renamed onto it only when `fill` succeeded and
+// removed otherwise.
+IoStatus writeThroughTemporary(const fs::path& path, FunctionRef<std::string(const fs::path&)> fill) {
+    std::string error;
+    const fs::path temporary = createTemporaryFile(path, error);
+    if (temporary.empty()) return {"cannot write '" + path.string() + "': " + error};
+    // Removes the temporary file however this returns, a throw included,
+    // unless it has taken the name.
+    struct Discard {
+        const fs::path& file;
+        bool renamed = false;
+        ~Discard() {
+            std::error_code ignored;
+            if (!renamed) fs::remove(file, ignored);
+        }
+    } discard{temporary};
+    if (std::string e = fill(temporary); !e.empty()) return {"cannot write '" + path.string() + "': " + e};
+    std::error_code ec;
+    fs::rename(temporary, path, ec);
+    if (ec) return {"cannot write '" + path.string() + "': " + ec.message()};
+    discard.renamed = true;
+    return {};
+}
+
 std::string oiioError(const OIIO::ImageOutput& out) {
     std::string e = out.geterror();
     return e.empty() ? OIIO::geterror() : e;
@@ -149,15 +180,15 @@ std::string oiioError(const OIIO::ImageOutput& out) {
 }  // namespace
 
 IoStatus checkOutputPath(const fs::path& path, SampleFormat format) {
-    SampleFormat resolved{};
-    return {resolveFormat(path, format, resolved)};
+    return {resolveFormat(path, format).error};
 }
 
 IoStatus writeImage(const Image& image, const fs::path& path, const WriteOptions& options) {
     if (image.width() <= 0 || image.height() <= 0)
         return {"cannot write an empty image to '" + path.string() + "'"};
-    SampleFormat format{};
-    if (std::string e = resolveFormat(path, options.format, format); !e.empty()) return {e};
+    const ResolvedFormat resolved = resolveFormat(path, options.format);
+    if (!resolved.error.empty()) return {resolved.error};
+    const SampleFormat format = resolved.samples;
 
     Transfer transfer = options.transfer;
     if (transfer == Transfer::Auto) transfer = isInteger(format) ? Transfer::Srgb : Transfer::Linear;
@@ -204,26 +235,16 @@ IoStatus writeImage(const Image& image, const fs::path& path, const WriteOptions
 
     auto out = OIIO::ImageOutput::create(path.string());
     if (!out) return {"cannot write '" + path.string() + "': " + OIIO::geterror()};
-
-    std::string error;
-    const fs::path temporary = createTemporaryFile(path, error);
-    if (temporary.empty()) return {"cannot write '" + path.string() + "': " + error};
-    auto discard = [&](std::string message) {
-        std::error_code ignored;
-        fs::remove(temporary, ignored);
-        return IoStatus{"cannot write '" + path.string() + "': " + message};
-    };
-    if (!out->open(temporary.string(), spec)) return discard(oiioError(*out));
-    if (!out->write_image(typeOf(format), pixels)) {
-        const std::string e = oiioError(*out);
-        out->close();
-        return discard(e);
-    }
-    if (!out->close()) return discard(oiioError(*out));
-    std::error_code ec;
-    fs::rename(temporary, path, ec);
-    if (ec) return discard(ec.message());
-    return {};
+    return writeThroughTemporary(path, [&](const fs::path& temporary) -> std::string {
+        if (!out->open(temporary.string(), spec)) return oiioError(*out);
+        if (!out->write_image(typeOf(format), pixels)) {
+            const std::string e = oiioError(*out);
+            out->close();
+            return e;
+        }
+        if (!out->close()) return oiioError(*out);
+        return {};
+    });
 }
 
 ReadResult readImage(const fs::path& path) {
