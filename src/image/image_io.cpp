@@ -12,6 +12,7 @@
 #include <cstdio>
 #include <cstring>
 #include <random>
+#include <span>
 #include <system_error>
 #include <vector>
 
@@ -19,16 +20,24 @@
 
 #include "asos/image/encoding.hpp"
 #include "asos/util/function_ref.hpp"
+#include "src/image/pfm.hpp"
 
 namespace asos {
 namespace {
 
 namespace fs = std::filesystem;
 
+// A writer of our own, for a format OpenImageIO cannot write: linear float
+// samples (its row in the table allows float only), interleaved, top row
+// first, into `file`. Returns why it failed, empty on success.
+using OwnWriter = std::string (*)(const fs::path& file, int width, int height, int channels,
+                                  std::span<const float> samples);
+
 struct FormatCaps {
     const char* extension;
     bool uint8, uint16, half, float32;
     SampleFormat preferred;
+    OwnWriter writer = nullptr;  // null: OpenImageIO writes it
 };
 
 // What each format we know can store. An extension not listed here is still
@@ -46,8 +55,13 @@ constexpr FormatCaps kFormats[] = {
     {".webp", true, false, false, false, SampleFormat::UInt8},
     {".exr", false, false, true, true, SampleFormat::Float},
     {".hdr", false, false, false, true, SampleFormat::Float},
-    {".pfm", false, false, false, true, SampleFormat::Float},
+    {".pfm", false, false, false, true, SampleFormat::Float, writePfm},
 };
+
+// writeImage hands our own writers float samples only.
+static_assert(std::ranges::all_of(kFormats, [](const FormatCaps& f) {
+    return !f.writer || (!f.uint8 && !f.uint16 && !f.half && f.float32);
+}));
 
 std::string lowerExtension(const fs::path& path) {
     std::string ext = path.extension().string();
@@ -77,7 +91,8 @@ bool isInteger(SampleFormat f) { return f == SampleFormat::UInt8 || f == SampleF
 
 struct ResolvedFormat {
     SampleFormat samples = SampleFormat::Auto;
-    std::string error{};  // empty when the format can hold the samples
+    OwnWriter writer = nullptr;  // null: OpenImageIO writes it
+    std::string error{};         // empty when the format can hold the samples
 };
 
 // Resolves Auto and checks that the format can hold the samples.
@@ -107,7 +122,7 @@ ResolvedFormat resolveFormat(const fs::path& path, SampleFormat requested) {
                            (samples == SampleFormat::Half && caps->half) ||
                            (samples == SampleFormat::Float && caps->float32);
     if (!supported) return {.error = "'" + ext + "' files cannot store " + formatName(samples) + " samples"};
-    return {.samples = samples};
+    return {.samples = samples, .writer = caps->writer};
 }
 
 OIIO::TypeDesc typeOf(SampleFormat f) {
@@ -149,7 +164,7 @@ fs::path createTemporaryFile(const fs::path& path, std::string& error) {
 // Writes `path` through `fill`, which writes the whole file at the path it is
 // given and returns why it failed (empty on success): that path is a new
 // temporary file beside `path`, renamed onto it only when `fill` succeeded and
-// removed otherwise.
+// removed otherwise. Every format, OpenImageIO's or our own, goes through here.
 IoStatus writeThroughTemporary(const fs::path& path, FunctionRef<std::string(const fs::path&)> fill) {
     std::string error;
     const fs::path temporary = createTemporaryFile(path, error);
@@ -226,6 +241,14 @@ IoStatus writeImage(const Image& image, const fs::path& path, const WriteOptions
         f32.resize(src.size());
         for (std::size_t i = 0; i < src.size(); ++i) f32[i] = static_cast<float>(value(src[i]));
         pixels = f32.data();
+    }
+
+    if (resolved.writer) {
+        // Our own writer: its format holds float only (the static_assert on
+        // kFormats), so `f32` is filled.
+        return writeThroughTemporary(path, [&](const fs::path& temporary) {
+            return resolved.writer(temporary, image.width(), image.height(), image.channels(), f32);
+        });
     }
 
     OIIO::ImageSpec spec(image.width(), image.height(), image.channels(), typeOf(format));
