@@ -12,22 +12,32 @@
 #include <cstdio>
 #include <cstring>
 #include <random>
+#include <span>
 #include <system_error>
 #include <vector>
 
 #include <OpenImageIO/imageio.h>
 
 #include "asos/image/encoding.hpp"
+#include "asos/util/function_ref.hpp"
+#include "src/image/pfm.hpp"
 
 namespace asos {
 namespace {
 
 namespace fs = std::filesystem;
 
+// A writer of our own, for a format OpenImageIO cannot write: linear float
+// samples (its row in the table allows float only), interleaved, top row
+// first, into `file`. Returns why it failed, empty on success.
+using OwnWriter = std::string (*)(const fs::path& file, int width, int height, int channels,
+                                  std::span<const float> samples);
+
 struct FormatCaps {
     const char* extension;
     bool uint8, uint16, half, float32;
     SampleFormat preferred;
+    OwnWriter writer = nullptr;  // null: OpenImageIO writes it
 };
 
 // What each format we know can store. An extension not listed here is still
@@ -45,8 +55,13 @@ constexpr FormatCaps kFormats[] = {
     {".webp", true, false, false, false, SampleFormat::UInt8},
     {".exr", false, false, true, true, SampleFormat::Float},
     {".hdr", false, false, false, true, SampleFormat::Float},
-    {".pfm", false, false, false, true, SampleFormat::Float},
+    {".pfm", false, false, false, true, SampleFormat::Float, writePfm},
 };
+
+// writeImage hands our own writers float samples only.
+static_assert(std::ranges::all_of(kFormats, [](const FormatCaps& f) {
+    return !f.writer || (!f.uint8 && !f.uint16 && !f.half && f.float32);
+}));
 
 std::string lowerExtension(const fs::path& path) {
     std::string ext = path.extension().string();
@@ -74,35 +89,40 @@ const char* formatName(SampleFormat f) {
 
 bool isInteger(SampleFormat f) { return f == SampleFormat::UInt8 || f == SampleFormat::UInt16; }
 
+struct ResolvedFormat {
+    SampleFormat samples = SampleFormat::Auto;
+    OwnWriter writer = nullptr;  // null: OpenImageIO writes it
+    std::string error{};         // empty when the format can hold the samples
+};
+
 // Resolves Auto and checks that the format can hold the samples.
-std::string resolveFormat(const fs::path& path, SampleFormat requested, SampleFormat& resolved) {
+ResolvedFormat resolveFormat(const fs::path& path, SampleFormat requested) {
     const std::string ext = lowerExtension(path);
     if (ext.empty())
-        return "cannot choose an image format for '" + path.string() +
-               "': the file name has no extension (use .png, .exr, .tif, ...)";
+        return {.error = "cannot choose an image format for '" + path.string() +
+                         "': the file name has no extension (use .png, .exr, .tif, ...)"};
     const FormatCaps* caps = findFormat(ext);
     if (!caps) {
         // Unknown to us: ask OpenImageIO whether it has a writer.
         auto probe = OIIO::ImageOutput::create(path.string());
         if (!probe) {
             (void)OIIO::geterror();
-            return "cannot write '" + path.string() + "': no image format for extension '" + ext +
-                   "' (use .png, .exr, .tif, .jpg, ...)";
+            return {.error = "cannot write '" + path.string() + "': no image format for extension '" + ext +
+                             "' (use .png, .exr, .tif, .jpg, ...)"};
         }
-        resolved = requested == SampleFormat::Auto ? SampleFormat::UInt8 : requested;
-        if (!isInteger(resolved))
-            return "cannot write " + std::string(formatName(resolved)) + " samples to '" + ext +
-                   "' files (use .exr or .tif)";
-        return {};
+        const SampleFormat samples = requested == SampleFormat::Auto ? SampleFormat::UInt8 : requested;
+        if (!isInteger(samples))
+            return {.error = "cannot write " + std::string(formatName(samples)) + " samples to '" + ext +
+                             "' files (use .exr or .tif)"};
+        return {.samples = samples};
     }
-    resolved = requested == SampleFormat::Auto ? caps->preferred : requested;
-    const bool supported = (resolved == SampleFormat::UInt8 && caps->uint8) ||
-                           (resolved == SampleFormat::UInt16 && caps->uint16) ||
-                           (resolved == SampleFormat::Half && caps->half) ||
-                           (resolved == SampleFormat::Float && caps->float32);
-    if (!supported)
-        return "'" + ext + "' files cannot store " + formatName(resolved) + " samples";
-    return {};
+    const SampleFormat samples = requested == SampleFormat::Auto ? caps->preferred : requested;
+    const bool supported = (samples == SampleFormat::UInt8 && caps->uint8) ||
+                           (samples == SampleFormat::UInt16 && caps->uint16) ||
+                           (samples == SampleFormat::Half && caps->half) ||
+                           (samples == SampleFormat::Float && caps->float32);
+    if (!supported) return {.error = "'" + ext + "' files cannot store " + formatName(samples) + " samples"};
+    return {.samples = samples, .writer = caps->writer};
 }
 
 OIIO::TypeDesc typeOf(SampleFormat f) {
@@ -141,6 +161,32 @@ fs::path createTemporaryFile(const fs::path& path, std::string& error) {
     return {};
 }
 
+// Writes `path` through `fill`, which writes the whole file at the path it is
+// given and returns why it failed (empty on success): that path is a new
+// temporary file beside `path`, renamed onto it only when `fill` succeeded and
+// removed otherwise. Every format, OpenImageIO's or our own, goes through here.
+IoStatus writeThroughTemporary(const fs::path& path, FunctionRef<std::string(const fs::path&)> fill) {
+    std::string error;
+    const fs::path temporary = createTemporaryFile(path, error);
+    if (temporary.empty()) return {"cannot write '" + path.string() + "': " + error};
+    // Removes the temporary file however this returns, a throw included,
+    // unless it has taken the name.
+    struct Discard {
+        const fs::path& file;
+        bool renamed = false;
+        ~Discard() {
+            std::error_code ignored;
+            if (!renamed) fs::remove(file, ignored);
+        }
+    } discard{temporary};
+    if (std::string e = fill(temporary); !e.empty()) return {"cannot write '" + path.string() + "': " + e};
+    std::error_code ec;
+    fs::rename(temporary, path, ec);
+    if (ec) return {"cannot write '" + path.string() + "': " + ec.message()};
+    discard.renamed = true;
+    return {};
+}
+
 std::string oiioError(const OIIO::ImageOutput& out) {
     std::string e = out.geterror();
     return e.empty() ? OIIO::geterror() : e;
@@ -149,15 +195,15 @@ std::string oiioError(const OIIO::ImageOutput& out) {
 }  // namespace
 
 IoStatus checkOutputPath(const fs::path& path, SampleFormat format) {
-    SampleFormat resolved{};
-    return {resolveFormat(path, format, resolved)};
+    return {resolveFormat(path, format).error};
 }
 
 IoStatus writeImage(const Image& image, const fs::path& path, const WriteOptions& options) {
     if (image.width() <= 0 || image.height() <= 0)
         return {"cannot write an empty image to '" + path.string() + "'"};
-    SampleFormat format{};
-    if (std::string e = resolveFormat(path, options.format, format); !e.empty()) return {e};
+    const ResolvedFormat resolved = resolveFormat(path, options.format);
+    if (!resolved.error.empty()) return {resolved.error};
+    const SampleFormat format = resolved.samples;
 
     Transfer transfer = options.transfer;
     if (transfer == Transfer::Auto) transfer = isInteger(format) ? Transfer::Srgb : Transfer::Linear;
@@ -197,6 +243,14 @@ IoStatus writeImage(const Image& image, const fs::path& path, const WriteOptions
         pixels = f32.data();
     }
 
+    if (resolved.writer) {
+        // Our own writer: its format holds float only (the static_assert on
+        // kFormats), so `f32` is filled.
+        return writeThroughTemporary(path, [&](const fs::path& temporary) {
+            return resolved.writer(temporary, image.width(), image.height(), image.channels(), f32);
+        });
+    }
+
     OIIO::ImageSpec spec(image.width(), image.height(), image.channels(), typeOf(format));
     spec.channelnames = image.channelNames();
     spec.attribute("oiio:ColorSpace", transfer == Transfer::Srgb ? "sRGB" : "Linear");
@@ -204,26 +258,16 @@ IoStatus writeImage(const Image& image, const fs::path& path, const WriteOptions
 
     auto out = OIIO::ImageOutput::create(path.string());
     if (!out) return {"cannot write '" + path.string() + "': " + OIIO::geterror()};
-
-    std::string error;
-    const fs::path temporary = createTemporaryFile(path, error);
-    if (temporary.empty()) return {"cannot write '" + path.string() + "': " + error};
-    auto discard = [&](std::string message) {
-        std::error_code ignored;
-        fs::remove(temporary, ignored);
-        return IoStatus{"cannot write '" + path.string() + "': " + message};
-    };
-    if (!out->open(temporary.string(), spec)) return discard(oiioError(*out));
-    if (!out->write_image(typeOf(format), pixels)) {
-        const std::string e = oiioError(*out);
-        out->close();
-        return discard(e);
-    }
-    if (!out->close()) return discard(oiioError(*out));
-    std::error_code ec;
-    fs::rename(temporary, path, ec);
-    if (ec) return discard(ec.message());
-    return {};
+    return writeThroughTemporary(path, [&](const fs::path& temporary) -> std::string {
+        if (!out->open(temporary.string(), spec)) return oiioError(*out);
+        if (!out->write_image(typeOf(format), pixels)) {
+            const std::string e = oiioError(*out);
+            out->close();
+            return e;
+        }
+        if (!out->close()) return oiioError(*out);
+        return {};
+    });
 }
 
 ReadResult readImage(const fs::path& path) {

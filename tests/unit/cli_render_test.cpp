@@ -89,6 +89,50 @@ TEST_CASE("asos render writes the image, statistics and the samples AOV", "[cli]
     }
 }
 
+TEST_CASE("asos render writes PFM through its own writer", "[cli]") {
+    const std::string scene = sceneFile().string();
+    const fs::path dir = scratchDir();
+    const std::vector<std::string> common{"render", scene, "-W", "32", "-H", "24", "--quiet"};
+    auto run = [&](std::vector<std::string> extra) {
+        std::vector<std::string> args = common;
+        args.insert(args.end(), extra.begin(), extra.end());
+        return runAsos(args);
+    };
+    fs::remove(dir / "out.pfm");
+    const Result r = run({"-o", "out.pfm", "--aov", "samples=out_samples.pfm"});
+    INFO(r.err);
+    REQUIRE(r.exitCode == 0);
+    CHECK(r.err.empty());
+    CHECK(slurp(dir / "out.pfm").starts_with("PF\n32 24\n-1.0\n"));
+    const ReadResult pfm = readImage(dir / "out.pfm");
+    REQUIRE(pfm.ok());
+    CHECK(readImage(dir / "out_samples.pfm").ok());  // the heat map, RGB
+
+    // The same linear floats as the EXR of the same render.
+    const Result e = run({"-o", "out.exr"});
+    INFO(e.err);
+    REQUIRE(e.exitCode == 0);
+    const ReadResult exr = readImage(dir / "out.exr");
+    REQUIRE(exr.ok());
+    REQUIRE(pfm.image.width() == 32);
+    REQUIRE(pfm.image.height() == 24);
+    REQUIRE(pfm.image.channels() == 3);
+    const int exrChannel[3] = {exr.image.channelIndex("R"), exr.image.channelIndex("G"),
+                               exr.image.channelIndex("B")};  // EXR may reorder them
+    int differ = 0;
+    for (int y = 0; y < 24; ++y)
+        for (int x = 0; x < 32; ++x)
+            for (int c = 0; c < 3; ++c) differ += pfm.image.at(x, y, c) != exr.image.at(x, y, exrChannel[c]);
+    CHECK(differ == 0);
+
+    // PFM holds float only: an error before anything is rendered.
+    fs::remove(dir / "deep.pfm");
+    const Result deep = run({"-o", "deep.pfm", "--bit-depth", "16"});
+    CHECK(deep.exitCode == 1);
+    CHECK_THAT(deep.err, Catch::Contains("cannot store 16-bit samples"));
+    CHECK_FALSE(fs::exists(dir / "deep.pfm"));
+}
+
 TEST_CASE("asos render: bad options and scenes give an error and no file", "[cli]") {
     const std::string scene = sceneFile().string();
     const fs::path dir = scratchDir();

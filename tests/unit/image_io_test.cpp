@@ -1,6 +1,11 @@
 #include <catch2/catch.hpp>
 
+#include <bit>
+#include <cstdint>
 #include <filesystem>
+#include <fstream>
+#include <iterator>
+#include <string>
 
 #include "asos/image/encoding.hpp"
 #include "asos/image/image_io.hpp"
@@ -28,6 +33,31 @@ std::size_t filesIn(const fs::path& dir) {
     std::size_t n = 0;
     for ([[maybe_unused]] const auto& e : fs::directory_iterator(dir)) ++n;
     return n;
+}
+
+std::string fileBytes(const fs::path& path) {
+    std::ifstream in(path, std::ios::binary);
+    return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+}
+
+// The float stored little-endian at `bytes[offset]`.
+float littleEndianFloat(const std::string& bytes, std::size_t offset) {
+    std::uint32_t bits = 0;
+    for (int i = 0; i < 4; ++i)
+        bits |= std::uint32_t(static_cast<unsigned char>(bytes[offset + i])) << (8 * i);
+    return std::bit_cast<float>(bits);
+}
+
+// `channels` channels of distinct values, each exact in float: negative, in
+// [0, 1] and above 1, so that any clipping, encoding, swapped channel or row
+// shows.
+Image distinctImage(int width, int height, std::vector<std::string> channels) {
+    Image img(width, height, std::move(channels));
+    for (int y = 0; y < height; ++y)
+        for (int x = 0; x < width; ++x)
+            for (int c = 0; c < img.channels(); ++c)
+                img.at(x, y, c) = float(10 * y + x) * 0.25f - 0.75f + float(c) / 16;
+    return img;
 }
 }  // namespace
 
@@ -138,6 +168,69 @@ TEST_CASE("Failed writes report an error and leave no file behind", "[image]") {
     const ReadResult missing = readImage(dir / "missing.png");
     CHECK_FALSE(missing.ok());
     CHECK_THAT(missing.error, Catch::Contains("missing.png"));
+}
+
+TEST_CASE("PFM files are written by asos and read back by OpenImageIO", "[image]") {
+    const fs::path dir = outputDir("pfm");
+
+    SECTION("RGB: the bytes the format says, rows bottom to top") {
+        const Image img = distinctImage(4, 3, {"R", "G", "B"});
+        REQUIRE(writeImage(img, dir / "rgb.pfm").ok());
+        const std::string bytes = fileBytes(dir / "rgb.pfm");
+        const std::string header = "PF\n4 3\n-1.0\n";  // -1.0: little-endian, scale 1
+        REQUIRE(bytes.size() == header.size() + 4 * 3 * 3 * 4);
+        CHECK(bytes.substr(0, header.size()) == header);
+        for (int row = 0; row < 3; ++row)  // the file's first row is the image's bottom one
+            for (int x = 0; x < 4; ++x)
+                for (int c = 0; c < 3; ++c) {
+                    INFO("file row " << row << ", x " << x << ", channel " << c);
+                    const std::size_t offset = header.size() + 4 * std::size_t((row * 4 + x) * 3 + c);
+                    CHECK(littleEndianFloat(bytes, offset) == img.at(x, 2 - row, c));
+                }
+        const ReadResult r = readImage(dir / "rgb.pfm");
+        REQUIRE(r.ok());
+        REQUIRE(r.image.width() == 4);
+        REQUIRE(r.image.height() == 3);
+        REQUIRE(r.image.channels() == 3);
+        CHECK(r.image.data() == img.data());  // linear, unclipped, exact
+        CHECK(filesIn(dir) == 1);             // no temporary file left
+    }
+    SECTION("grey: one channel") {
+        const Image img = distinctImage(3, 2, {"Y"});
+        REQUIRE(writeImage(img, dir / "grey.pfm").ok());
+        const std::string bytes = fileBytes(dir / "grey.pfm");
+        const std::string header = "Pf\n3 2\n-1.0\n";
+        REQUIRE(bytes.size() == header.size() + 3 * 2 * 4);
+        CHECK(bytes.substr(0, header.size()) == header);
+        CHECK(littleEndianFloat(bytes, header.size()) == img.at(0, 1, 0));
+        const ReadResult r = readImage(dir / "grey.pfm");
+        REQUIRE(r.ok());
+        REQUIRE(r.image.channels() == 1);
+        CHECK(r.image.data() == img.data());
+    }
+    SECTION("what PFM cannot hold is an error that leaves no file") {
+        CHECK(checkOutputPath(dir / "x.pfm").ok());
+        CHECK(checkOutputPath(dir / "X.PFM", SampleFormat::Float).ok());
+        CHECK_FALSE(checkOutputPath(dir / "x.pfm", SampleFormat::Half).ok());
+        CHECK_FALSE(checkOutputPath(dir / "x.pfm", SampleFormat::UInt16).ok());
+        const Image rgb = distinctImage(2, 2, {"R", "G", "B"});
+        CHECK_FALSE(writeImage(rgb, dir / "half.pfm", {.format = SampleFormat::Half}).ok());
+        // No alpha in PFM, and no silent drop of it.
+        const IoStatus rgba = writeImage(distinctImage(2, 2, {"R", "G", "B", "A"}), dir / "rgba.pfm");
+        CHECK_FALSE(rgba.ok());
+        CHECK_THAT(rgba.error, Catch::Contains("rgba.pfm") && Catch::Contains("not 4"));
+        CHECK_FALSE(writeImage(distinctImage(2, 2, {"rays", "level"}), dir / "two.pfm").ok());
+        const IoStatus missingDir = writeImage(rgb, dir / "no" / "such" / "dir.pfm");
+        CHECK_FALSE(missingDir.ok());
+        CHECK_THAT(missingDir.error, Catch::Contains("dir.pfm"));
+        // Complete before it takes the name: a directory in the way fails the
+        // rename, and the temporary file goes too.
+        fs::create_directory(dir / "taken.pfm");
+        fs::create_directory(dir / "taken.pfm" / "child");
+        CHECK_FALSE(writeImage(rgb, dir / "taken.pfm").ok());
+        CHECK(filesIn(dir) == 1);  // only the directory
+        CHECK_FALSE(fs::exists(dir / "no"));
+    }
 }
 
 TEST_CASE("Images crop to a rectangle", "[image]") {

@@ -1,7 +1,8 @@
 #pragma once
 // Image files through OpenImageIO (src/image/image_io.cpp is the only
-// translation unit that includes it). Nothing here prints: every failure comes
-// back as a message.
+// translation unit that includes it), and PFM, which OpenImageIO 2.4 reads
+// but cannot write, through a writer of our own (src/image/pfm.cpp). Nothing
+// here prints: every failure comes back as a message.
 #include <filesystem>
 #include <string>
 
@@ -35,12 +36,13 @@ struct IoStatus {
 // goes to a temporary file in the same directory, which is renamed to `path`
 // only when complete, so a failed or interrupted write never leaves a
 // half-written image under the requested name. Integer formats encode every
-// channel; linear float formats keep the channel names (EXR).
+// channel; linear float formats keep the channel names (EXR). PFM holds 3
+// channels (RGB) or 1 (grey): any other count, an alpha included, is an error.
 IoStatus writeImage(const Image& image, const std::filesystem::path& path,
                     const WriteOptions& options = {});
 
-// Whether `path`'s extension names a format OpenImageIO can write, and can
-// store the given sample format. Empty error when it can.
+// Whether `path`'s extension names a format asos can write (OpenImageIO's
+// or PFM), and can store the given sample format. Empty error when it can.
 IoStatus checkOutputPath(const std::filesystem::path& path, SampleFormat format = SampleFormat::Auto);
 
 struct ReadResult {
