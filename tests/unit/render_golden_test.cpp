@@ -1,8 +1,9 @@
 // Golden renders through the whole pipeline (scene file -> interpreter ->
 // renderer -> PNG):
 //  - against POV-Ray 3.7: the scenes of tests/golden/povray, rendered with
-//    one ray per pixel and with the adaptive method, must match POV-Ray's
-//    own renders of the same files (-A, and +A0.3 +AM2 +R3 -J);
+//    one ray per pixel, the adaptive method and the am1 method, must match
+//    POV-Ray's own renders of the same files (-A, +A0.3 +AM2 +R3 -J and
+//    +A0.3 +AM1 +R3 -J);
 //  - against our own references: every primitive by ASOS, and the six
 //    primitives by every method, in tests/golden/render (96 x 72).
 // Images are compared with OpenImageIO's test-suite thresholds
@@ -80,6 +81,17 @@ TEST_CASE("The adaptive method matches POV-Ray's +AM2", "[golden][povray]") {
     }
 }
 
+// POV-Ray's default method with its default threshold and depth, over its
+// default 32-pixel render blocks (+BS32), whose borders the method sees.
+TEST_CASE("The am1 method matches POV-Ray's +AM1", "[golden][povray]") {
+    for (const char* scene : {"flat_perspective", "lighting", "primitives"}) {
+        INFO(scene);
+        compareWithReference(renderSceneFile(sourceDir("povray") / (std::string(scene) + ".pov"),
+                                         settingsFor(RenderMethod::Am1, 160, 90)),
+                             povrayReference(scene, std::string(scene) + "_am1", "+A0.3 +AM1 +R3 -J"), false);
+    }
+}
+
 TEST_CASE("Golden ASOS renders of every primitive", "[golden]") {
     for (const char* name : {"sphere", "box", "cone", "cylinder", "disc", "polygon", "plane"}) {
         INFO(name);
@@ -98,7 +110,7 @@ TEST_CASE("Golden ASOS renders of every primitive", "[golden]") {
 TEST_CASE("Golden renders of the six primitives by every method", "[golden]") {
     const fs::path dir = sourceDir("render");
     for (RenderMethod m : {RenderMethod::Asos, RenderMethod::Single, RenderMethod::Grid,
-                           RenderMethod::Jitter, RenderMethod::Adaptive}) {
+                           RenderMethod::Jitter, RenderMethod::Adaptive, RenderMethod::Am1}) {
         INFO(methodName(m));
         compareWithReference(renderSceneFile(dir / "methods.pov", settingsFor(m, 96, 72)),
                              dir / ("methods_" + std::string(methodName(m)) + ".png"), true);
