@@ -26,6 +26,18 @@ PixelResult noisyPixel(int x, int y, RenderCounters& counters) {
     return {sum / double(samples), static_cast<std::uint32_t>(samples),
             static_cast<std::uint32_t>(samples % 3)};
 }
+
+// Copies the region `part` of a region render into `assembled`, checking that
+// the render left the rest of the image black.
+void keepRegion(Image& assembled, const Image& rendered, const PixelRegion& part) {
+    for (int y = 0; y < rendered.height(); ++y)
+        for (int x = 0; x < rendered.width(); ++x) {
+            if (part.contains(x, y))
+                assembled.setRgb(x, y, rendered.rgbAt(x, y));
+            else
+                CHECK(rendered.rgbAt(x, y) == Vec3(0.0));
+        }
+}
 }  // namespace
 
 TEST_CASE("Tiled rendering is identical for any thread count and tile size", "[tiles]") {
@@ -61,13 +73,7 @@ TEST_CASE("Regions render the same pixels as the whole image", "[tiles]") {
                                     PixelRegion{17, 13, 40, 30}}) {
         o.region = part;
         const TileRenderResult r = renderTiles(w, h, o, noisyPixel);
-        for (int y = 0; y < h; ++y)
-            for (int x = 0; x < w; ++x) {
-                if (part.contains(x, y))
-                    assembled.setRgb(x, y, r.color.rgbAt(x, y));
-                else
-                    CHECK(r.color.rgbAt(x, y) == Vec3(0.0));
-            }
+        keepRegion(assembled, r.color, part);
         counters += r.counters;
     }
     CHECK(assembled == whole.color);
@@ -117,13 +123,7 @@ TEST_CASE("Blocks are laid from the image corner for any thread count, tile size
         o.region = part;
         const TileRenderResult r = renderBlocks(w, h, size, o, labelledBlock);
         CHECK(r.counters.pixels == std::uint64_t(part.area()));
-        for (int y = 0; y < h; ++y)
-            for (int x = 0; x < w; ++x) {
-                if (part.contains(x, y))
-                    assembled.setRgb(x, y, r.color.rgbAt(x, y));
-                else
-                    CHECK(r.color.rgbAt(x, y) == Vec3(0.0));
-            }
+        keepRegion(assembled, r.color, part);
     }
     CHECK(assembled == whole.color);
     o.region = PixelRegion{20, 13, 21, 14};
