@@ -1,6 +1,6 @@
 // `asos-bench render [SCENE] [-W 640 -H 480] [--threads 1,2] [--repeat 3] [--samples 4]`:
 // renders a scene by every method (asos, asos with pattern edges, single,
-// grid, jitter, adaptive) with
+// grid, jitter, adaptive, am1) with
 // each thread count and prints a table of render time (best of --repeat),
 // rays (eye and reflected, shadow, all), pyrays, rays per second, and each method's rays
 // and time relative to ASOS. Without SCENE it renders examples/default.pov,
@@ -85,7 +85,8 @@ int runBench(const BenchArgs& args) {
                               {RenderMethod::Single, "single", false},
                               {RenderMethod::Grid, "grid " + samples + "x" + samples, false},
                               {RenderMethod::Jitter, "jitter " + samples + "x" + samples, false},
-                              {RenderMethod::Adaptive, "adaptive", false}};
+                              {RenderMethod::Adaptive, "adaptive", false},
+                              {RenderMethod::Am1, "am1", false}};
     for (int threads : args.threads)
         for (const auto& [method, label, patternEdges] : methods) {
             RenderSettings s;

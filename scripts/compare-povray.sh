@@ -5,8 +5,9 @@
 # two renderers can be told from differences between methods:
 #   single    asos --method single    vs  povray -A            (same rays: should match)
 #   adaptive  asos --method adaptive  vs  povray +A0.3 +AM2 +R3 -J   (same method)
-#   and asos (also with --pattern-edges on --max 3), adaptive, 4x4 jitter and
-#   single against a converged POV-Ray reference (+A0.0 +AM2 +R5: 17 x 17
+#   am1       asos --method am1       vs  povray +A0.3 +AM1 +R3 -J   (same method)
+#   and asos (also with --pattern-edges on --max 3), adaptive, am1, 4x4 jitter
+#   and single against a converged POV-Ray reference (+A0.0 +AM2 +R5: 17 x 17
 #   samples in every pixel).
 #   scripts/compare-povray.sh [-W 320 -H 240] SCENE.pov...
 # Images and logs go to ${ASOS_COMPARE_DIR:-build/compare-povray}.
@@ -40,18 +41,22 @@ for scene in "$@"; do
   povray() { command povray -D -GA +I"$scene" +W"$width" +H"$height" +FN8 "$@" >"$p.povray.log" 2>&1; }
   povray +O"$p.pov-single.png" -A
   povray +O"$p.pov-am2.png" +A0.3 +AM2 +R3 -J
+  povray +O"$p.pov-am1.png" +A0.3 +AM1 +R3 -J
   povray +O"$p.pov-reference.png" +A0.0 +AM2 +R5 -J
   render() { "$asos" render "$scene" -W "$width" -H "$height" --quiet "$@"; }
   render -o "$p.single.png" --method single
   render -o "$p.adaptive.png" --method adaptive
+  render -o "$p.am1.png" --method am1
   render -o "$p.asos.png" --method asos
   render -o "$p.asos-patterns.png" --method asos --pattern-edges on --max 3
   render -o "$p.jitter4.png" --method jitter --samples 4
   echo "== $scene ($width x $height)"
   printf '  %-34s %s\n' "single vs povray -A" "$(difference "$p.pov-single.png" "$p.single.png")"
   printf '  %-34s %s\n' "adaptive vs povray +AM2" "$(difference "$p.pov-am2.png" "$p.adaptive.png")"
-  for m in asos asos-patterns adaptive jitter4 single; do
+  printf '  %-34s %s\n' "am1 vs povray +AM1" "$(difference "$p.pov-am1.png" "$p.am1.png")"
+  for m in asos asos-patterns adaptive am1 jitter4 single; do
     printf '  %-34s %s\n' "$m vs converged povray" "$(difference "$p.pov-reference.png" "$p.$m.png")"
   done
   printf '  %-34s %s\n' "povray +AM2 vs converged povray" "$(difference "$p.pov-reference.png" "$p.pov-am2.png")"
+  printf '  %-34s %s\n' "povray +AM1 vs converged povray" "$(difference "$p.pov-reference.png" "$p.pov-am1.png")"
 done

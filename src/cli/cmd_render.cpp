@@ -1,4 +1,4 @@
-// asos render SCENE -o OUT.png|.exr|.tif|… [-W 640 -H 480] [--method asos|single|grid|jitter|adaptive]
+// asos render SCENE -o OUT.png|.exr|.tif|… [-W 640 -H 480] [--method asos|single|grid|jitter|adaptive|am1]
 //   [--eps E|A/B --max M --jitter on|off --pattern-edges on|off] [--samples N] [--threshold T --depth D]
 //   [--light-method asos|grid] [--light-samples N] [--shadow-apex surface|behind]
 //   [--bit-depth 8|16|half|float] [--threads N]
@@ -94,7 +94,7 @@ int runRender(const RenderArgs& args) {
     std::vector<std::string> problems;
     const std::optional<RenderMethod> method = parseMethod(args.method);
     if (!method)
-        problems.push_back("--method must be asos, single, grid, jitter or adaptive, not '" +
+        problems.push_back("--method must be asos, single, grid, jitter, adaptive or am1, not '" +
                            args.method + "'");
     else
         settings.method = *method;
@@ -244,16 +244,20 @@ void addRenderCommand(CLI::App& app, CommandResult& result) {
         ->required();
     cmd->add_option("-W,--width", args->width, "Image width in pixels (default 640)");
     cmd->add_option("-H,--height", args->height, "Image height in pixels (default 480)");
-    cmd->add_option("--method", args->method, "asos (default), single, grid, jitter or adaptive");
+    cmd->add_option("--method", args->method,
+                    "asos (default), single, grid, jitter, adaptive (POV-Ray's +AM2) or am1 (+AM1)");
     cmd->add_option("--eps", args->eps, "ASOS: EPS, a number or a fraction such as 1/64 (default 1/64)");
     cmd->add_option("--max", args->maxLevel, "ASOS: MAX, the deepest subdivision level (default 4)");
     cmd->add_option("--jitter", args->jitter,
-                    "on|off: ASOS jitters its MAX-rays, adaptive its sub-samples (default off)");
+                    "on|off: ASOS jitters its MAX-rays, adaptive and am1 their sub-samples (default off)");
     cmd->add_option("--pattern-edges", args->patternEdges,
                     "on|off: ASOS also subdivides where a pigment pattern's edge crosses a pixel (default off)");
     cmd->add_option("--samples", args->samples, "grid and jitter: N x N rays per pixel (default 4)");
-    cmd->add_option("--threshold", args->threshold, "adaptive: colour difference that subdivides (default 0.3)");
-    cmd->add_option("--depth", args->depth, "adaptive: subdivision levels (default 2, POV-Ray's +R3)");
+    cmd->add_option("--threshold", args->threshold,
+                    "adaptive and am1: colour difference that subdivides or supersamples (default 0.3)");
+    cmd->add_option("--depth", args->depth,
+                    "adaptive: subdivision levels; am1: (D+1) x (D+1) sub-samples "
+                    "(default 2, POV-Ray's +R3)");
     cmd->add_option("--light-method", args->lightMethod,
                     "Area lights: asos (shadow beams) or grid (point lights); default asos with "
                     "--method asos, grid with the classic methods");

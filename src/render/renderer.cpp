@@ -19,8 +19,8 @@ namespace asos {
 
 namespace {
 
-constexpr RenderMethod kMethods[] = {RenderMethod::Asos, RenderMethod::Single, RenderMethod::Grid,
-                                     RenderMethod::Jitter, RenderMethod::Adaptive};
+constexpr RenderMethod kMethods[] = {RenderMethod::Asos,   RenderMethod::Single,   RenderMethod::Grid,
+                                     RenderMethod::Jitter, RenderMethod::Adaptive, RenderMethod::Am1};
 
 // The largest image side accepted: beyond it pixel counts overflow the
 // counters' consumers and no one means it.
@@ -78,6 +78,9 @@ TileRenderResult renderClassic(const RayTracer& tracer, const CameraModel& camer
     auto eyeRadiance = [&](RenderCounters& counters) {
         return EyeRadiance{tracer, counters, scratch.local(), s.seed};
     };
+    // POV-Ray compares anti-aliasing samples in the scene's working gamma.
+    AdaptiveSettings antialias = s.adaptive;
+    antialias.assumedGamma = tracer.description().globals.assumedGamma;
     switch (s.method) {
         case RenderMethod::Single:
             return renderTiles(s.width, s.height, options, [&](int x, int y, RenderCounters& c) {
@@ -93,8 +96,6 @@ TileRenderResult renderClassic(const RayTracer& tracer, const CameraModel& camer
                                       eyeRadiance(c));
             });
         case RenderMethod::Adaptive: {
-            AdaptiveSettings adaptive = s.adaptive;
-            adaptive.assumedGamma = tracer.description().globals.assumedGamma;
             const PixelRegion region = s.region.value_or(PixelRegion::whole(s.width, s.height));
             const CornerGrid corners =
                 sampleCorners(camera, region, options,
@@ -105,13 +106,18 @@ TileRenderResult renderClassic(const RayTracer& tracer, const CameraModel& camer
                               });
             TileRenderResult r =
                 renderTiles(s.width, s.height, options, [&](int x, int y, RenderCounters& c) {
-                    return estimateAdaptive(camera, x, y, corners.ofPixel(x, y), adaptive,
+                    return estimateAdaptive(camera, x, y, corners.ofPixel(x, y), antialias,
                                             PixelRandom(s.seed, x, y), eyeRadiance(c));
                 });
             r.counters += corners.counters;
             r.seconds += corners.seconds;
             return r;
         }
+        case RenderMethod::Am1:
+            return renderBlocks(s.width, s.height, kAm1BlockSize, options,
+                                [&](const PixelRegion& block, RenderCounters& c) {
+                                    return estimateAm1Block(camera, block, antialias, s.seed, eyeRadiance(c));
+                                });
         case RenderMethod::Asos: break;
     }
     throw std::logic_error("renderClassic called for ASOS");
@@ -126,6 +132,7 @@ const char* methodName(RenderMethod method) {
         case RenderMethod::Grid: return "grid";
         case RenderMethod::Jitter: return "jitter";
         case RenderMethod::Adaptive: return "adaptive";
+        case RenderMethod::Am1: return "am1";
     }
     return "?";
 }

@@ -1,8 +1,10 @@
 #include <catch2/catch.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <span>
+#include <utility>
 #include <vector>
 
 #include "asos/render/classic_methods.hpp"
@@ -408,4 +410,207 @@ TEST_CASE("Grid and jitter give the same pixel from batches as one ray at a time
             CHECK(j.rays == n * n);
         }
     }
+}
+
+namespace {
+
+// A w x h image by am1 over POV-Ray's render blocks, each ray counted.
+template <class Radiance>
+TileRenderResult renderAm1(const CameraModel& cam, const AdaptiveSettings& s, const Radiance& f,
+                           const TileRenderOptions& options = {}) {
+    return renderBlocks(cam.width(), cam.height(), kAm1BlockSize, options,
+                        [&](const PixelRegion& block, RenderCounters& c) {
+                            return estimateAm1Block(cam, block, s, 5, [&](const Ray& r) {
+                                ++c.eyeRays;
+                                return f(r);
+                            });
+                        });
+}
+
+double aovRays(const TileRenderResult& r) {
+    double sum = 0.0;
+    for (int y = 0; y < r.samples.height(); ++y)
+        for (int x = 0; x < r.samples.width(); ++x) sum += r.samples.at(x, y, 0);
+    return sum;
+}
+
+}  // namespace
+
+TEST_CASE("Am1 never supersamples a flat colour", "[methods]") {
+    const int w = 40, h = 35;  // 2 x 2 blocks: 32 + 8 by 32 + 3
+    const CameraModel cam = imageSpaceCamera(w, h);
+    const Vec3 flat(0.25, 0.5, 0.75);
+    const TileRenderResult r = renderAm1(cam, {}, [&](const Ray&) { return flat; });
+    for (int y = 0; y < h; ++y)
+        for (int x = 0; x < w; ++x) {
+            INFO(x << ", " << y);
+            CHECK(r.color.rgbAt(x, y) == flat);
+            CHECK(r.samples.at(x, y, 1) == 0.0f);
+            // Its first ray, and the frame rays of the row above or the column
+            // left of its block that it is charged with.
+            CHECK(r.samples.at(x, y, 0) == float(1 + (x % kAm1BlockSize == 0) + (y % kAm1BlockSize == 0)));
+        }
+    // Each block row traces a frame row, each block column a frame column.
+    CHECK(r.counters.eyeRays == std::uint64_t(w * h + 2 * w + 2 * h));
+    CHECK(aovRays(r) == double(r.counters.eyeRays));
+}
+
+TEST_CASE("Am1 supersamples an edge's pixels as POV-Ray does", "[methods]") {
+    const int w = 24, h = 6;
+    const CameraModel cam = imageSpaceCamera(w, h);
+    struct Case {
+        double edge;               // 1 left of x = edge, 0 right of it
+        std::vector<int> columns;  // the columns supersampled
+        std::vector<double> values;
+    };
+    // Pixels 9 and 10 differ at 10.3 and both are supersampled; pixel 10's
+    // colour becomes (0 + 3 x 1 + 6 x 0) / 10 = 0.3, which still differs from
+    // pixel 11's first colour, so that pixel 11 is supersampled too (POV-Ray
+    // compares with a neighbour as it is by then). At 10.9 pixel 10's
+    // supersampled colour is 1, and only pixels 10 and 11 are supersampled.
+    for (const auto& [edge, columns, values] :
+         {Case{10.3, {9, 10, 11}, {1.0, 0.3, 0.0}}, Case{10.9, {10, 11}, {1.0, 0.0}}}) {
+        INFO("edge at x = " << edge);
+        const HalfPlane f{1, 0, edge, w, h};
+        const TileRenderResult r = renderAm1(cam, {}, f);
+        for (int y = 0; y < h; ++y)
+            for (int x = 0; x < w; ++x) {
+                INFO(x << ", " << y);
+                const auto it = std::find(columns.begin(), columns.end(), x);
+                const bool supersampled = it != columns.end();
+                CHECK(r.samples.at(x, y, 1) == float(supersampled));
+                const double expected = supersampled ? values[std::size_t(it - columns.begin())]
+                                                     : f(cam.ray(x + 0.5, y + 0.5)).x;
+                CHECK(r.color.rgbAt(x, y).x == Approx(expected).margin(1e-7));
+            }
+        CHECK(aovRays(r) == double(r.counters.eyeRays));
+        CHECK(r.counters.eyeRays == std::uint64_t(w * h + w + h + h * 9 * columns.size()));
+    }
+}
+
+TEST_CASE("Am1 compares pixels within a render block only, as POV-Ray", "[methods]") {
+    const int w = 64, h = 8;
+    const CameraModel cam = imageSpaceCamera(w, h);
+    auto supersampledColumns = [&](const TileRenderResult& r) {
+        std::vector<int> columns;
+        for (int x = 0; x < w; ++x) {
+            for (int y = 0; y < h; ++y) CHECK(r.samples.at(x, y, 1) == r.samples.at(x, 0, 1));
+            if (r.samples.at(x, 0, 1) == 1.0f) columns.push_back(x);
+        }
+        return columns;
+    };
+    // Inside a block both sides of an edge are supersampled.
+    CHECK(supersampledColumns(renderAm1(cam, {}, HalfPlane{1, 0, 16, w, h})) == std::vector<int>{15, 16});
+    // On the border of two blocks the right one compares its first column with
+    // the left one's last (its frame, traced again, never supersampled) and the
+    // left block never sees the edge: one side only.
+    CHECK(supersampledColumns(renderAm1(cam, {}, HalfPlane{1, 0, 32, w, h})) == std::vector<int>{32});
+    // The first row is compared with the row above the image, traced too.
+    const TileRenderResult above = renderAm1(cam, {}, HalfPlane{0, 1, 0, w, h});
+    for (int y = 0; y < h; ++y)
+        for (int x = 0; x < w; ++x) CHECK(above.samples.at(x, y, 1) == float(y == 0));
+}
+
+TEST_CASE("Am1 averages the first ray with a (depth + 1)^2 grid, jittered at +J's scale", "[methods]") {
+    const CameraModel cam = imageSpaceCamera(2, 1);
+    // Pixels 0 and 1 differ in red and are both supersampled; the faint
+    // gradients in green and blue make every sample's colour its own.
+    auto colour = [](Vec2 p) { return Vec3(p.x >= 1.0 ? 1.0 : 0.0, 0.001 * (p.x + 2), 0.001 * (p.y + 2)); };
+    for (bool jitter : {false, true})
+        for (int depth : {0, 1, 2, 3}) {
+            INFO("depth " << depth << (jitter ? ", jittered" : ""));
+            AdaptiveSettings s;
+            s.depth = depth;
+            s.jitter = jitter;
+            const int n = depth + 1;
+            std::vector<std::pair<Vec2, PrimarySample>> seen;
+            const PixelRegion block{0, 0, 2, 1};
+            const std::vector<PixelResult> r =
+                estimateAm1Block(cam, block, s, 7, [&](const Ray& ray, const PrimarySample& p) {
+                    const Vec2 at = imagePoint(ray, 2, 1);
+                    CHECK(glm::length(at - p.image) < 1e-12);
+                    seen.emplace_back(at, p);
+                    return colour(at);
+                });
+            REQUIRE(r.size() == 2);
+            // The frame (3 rays), the two first rays, then n^2 per pixel.
+            REQUIRE(seen.size() == std::size_t(5 + 2 * n * n));
+            for (int x : {0, 1}) {
+                Vec3 sum = colour(Vec2(x + 0.5, 0.5));
+                std::vector<std::uint32_t> indices;
+                bool moved = false;
+                for (const auto& [at, sample] : seen) {
+                    if (sample.pixelX != x || sample.pixelY != 0 || sample.index == 0) {
+                        if (sample.pixelX == x && sample.pixelY == 0)
+                            CHECK(glm::length(at - Vec2(x + 0.5, 0.5)) < 1e-12);
+                        continue;
+                    }
+                    indices.push_back(sample.index);
+                    const int k = int(sample.index) - 1;
+                    const Vec2 grid(x + (k % n + 0.5) / n, (k / n + 0.5) / n);
+                    CHECK(std::fabs(at.x - grid.x) <= 0.5 / n + 1e-12);
+                    CHECK(std::fabs(at.y - grid.y) <= 0.5 / n + 1e-12);
+                    if (!jitter) CHECK(glm::length(at - grid) < 1e-12);
+                    moved = moved || glm::length(at - grid) > 1e-9;
+                    sum += colour(at);
+                }
+                CHECK(moved == jitter);
+                CHECK(indices.size() == std::size_t(n * n));
+                for (std::size_t i = 0; i < indices.size(); ++i) CHECK(indices[i] == i + 1);
+                CHECK(r[std::size_t(x)].level == 1);
+                // Pixel 0 is charged with the frame rays above it and left of it.
+                CHECK(r[std::size_t(x)].rays == std::uint32_t(3 + n * n) - std::uint32_t(x));
+                CHECK(glm::length(r[std::size_t(x)].color - sum / double(n * n + 1)) < 1e-15);
+            }
+            // The same seed gives the same samples.
+            auto plain = [&](const Ray& ray) { return colour(imagePoint(ray, 2, 1)); };
+            const std::vector<PixelResult> again = estimateAm1Block(cam, block, s, 7, plain);
+            CHECK(again[0].color == r[0].color);
+            CHECK(again[1].color == r[1].color);
+        }
+}
+
+TEST_CASE("Am1 renders the same for any thread count, tile size and region", "[methods]") {
+    const int w = 45, h = 40;
+    const CameraModel cam = imageSpaceCamera(w, h);
+    const HalfPlane edge{0.8, 0.6, 27.3, w, h};
+    AdaptiveSettings s;
+    s.jitter = true;
+    TileRenderOptions o;
+    o.threads = 1;
+    const TileRenderResult reference = renderAm1(cam, s, edge, o);
+    for (int threads : {1, 2, 3})
+        for (int tile : {1, 7, 16, 64}) {
+            INFO("threads " << threads << ", tile " << tile);
+            o.threads = threads;
+            o.tileSize = tile;
+            const TileRenderResult r = renderAm1(cam, s, edge, o);
+            CHECK(r.color == reference.color);
+            CHECK(r.samples == reference.samples);
+            CHECK(r.counters == reference.counters);
+        }
+    // Regions whose borders are not the blocks' give the pixels of the whole.
+    Image assembled = Image::rgb(w, h);
+    Image samples(w, h, {"rays", "level"});
+    for (const PixelRegion& part :
+         {PixelRegion{0, 0, 45, 13}, PixelRegion{0, 13, 33, 40}, PixelRegion{33, 13, 45, 40}}) {
+        o.region = part;
+        const TileRenderResult r = renderAm1(cam, s, edge, o);
+        CHECK(r.counters.pixels == std::uint64_t(part.area()));
+        for (int y = part.y0; y < part.y1; ++y)
+            for (int x = part.x0; x < part.x1; ++x) {
+                assembled.setRgb(x, y, r.color.rgbAt(x, y));
+                for (int c : {0, 1}) samples.at(x, y, c) = r.samples.at(x, y, c);
+            }
+    }
+    CHECK(assembled == reference.color);
+    CHECK(samples == reference.samples);
+}
+
+TEST_CASE("Am1 settings outside their range are rejected", "[methods]") {
+    const CameraModel cam = imageSpaceCamera(1, 1);
+    AdaptiveSettings s;
+    s.depth = kMaxAdaptiveDepth + 1;
+    auto black = [](const Ray&) { return Vec3(0.0); };
+    CHECK_THROWS_AS(estimateAm1Block(cam, PixelRegion{0, 0, 1, 1}, s, 0, black), std::invalid_argument);
 }

@@ -80,7 +80,7 @@ TEST_CASE("asos render writes the image, statistics and the samples AOV", "[cli]
         }
     CHECK(between > 100);
 
-    for (const char* method : {"single", "grid", "jitter", "adaptive"}) {
+    for (const char* method : {"single", "grid", "jitter", "adaptive", "am1"}) {
         const Result m = runAsos({"render", scene, "-o", std::string(method) + ".exr", "-W", "32", "-H",
                                "24", "--method", method, "--samples", "2", "--quiet"});
         INFO(method << ": " << m.err);

@@ -1,8 +1,9 @@
 // Golden renders through the whole pipeline (scene file -> interpreter ->
 // renderer -> PNG):
 //  - against POV-Ray 3.7: the scenes of tests/golden/povray, rendered with
-//    one ray per pixel and with the adaptive method, must match POV-Ray's
-//    own renders of the same files (-A, and +A0.3 +AM2 +R3 -J);
+//    one ray per pixel, the adaptive method and the am1 method, must match
+//    POV-Ray's own renders of the same files (-A, +A0.3 +AM2 +R3 -J and
+//    +A0.3 +AM1 +R3 -J);
 //  - against our own references: every primitive by ASOS, and the six
 //    primitives by every method, in tests/golden/render (96 x 72).
 // Images are compared with OpenImageIO's test-suite thresholds
@@ -54,6 +55,15 @@ RenderSettings settingsFor(RenderMethod method, int width, int height) {
     return s;
 }
 
+// A scene of tests/golden/povray rendered by `method` at 160 x 90 against
+// POV-Ray's render of it with `povrayOptions`, kept as <scene><suffix>.png.
+void compareWithPovray(const std::string& scene, RenderMethod method, const std::string& suffix,
+                       const std::string& povrayOptions) {
+    INFO(scene);
+    compareWithReference(renderSceneFile(sourceDir("povray") / (scene + ".pov"), settingsFor(method, 160, 90)),
+                         povrayReference(scene, scene + suffix, povrayOptions), false);
+}
+
 }  // namespace
 
 // Every scene of tests/golden/povray against POV-Ray's own render of it:
@@ -61,23 +71,22 @@ RenderSettings settingsFor(RenderMethod method, int width, int height) {
 // background and 8-bit encoding (flat_*), the lighting model (lighting), the
 // recursion of reflection (reflection) and the six primitives (primitives).
 TEST_CASE("The renderer matches POV-Ray with one ray per pixel", "[golden][povray]") {
-    for (const char* scene : {"flat_perspective", "flat_orthographic", "lighting", "reflection", "primitives"}) {
-        INFO(scene);
-        compareWithReference(renderSceneFile(sourceDir("povray") / (std::string(scene) + ".pov"),
-                                         settingsFor(RenderMethod::Single, 160, 90)),
-                             povrayReference(scene, scene, "-A"), false);
-    }
+    for (const char* scene : {"flat_perspective", "flat_orthographic", "lighting", "reflection", "primitives"})
+        compareWithPovray(scene, RenderMethod::Single, "", "-A");
 }
 
 // POV-Ray's defaults: threshold 0.3, depth +R3 (two subdivisions); -J turns
 // its jitter off so that the sample positions coincide.
 TEST_CASE("The adaptive method matches POV-Ray's +AM2", "[golden][povray]") {
-    for (const char* scene : {"flat_perspective", "lighting", "primitives"}) {
-        INFO(scene);
-        compareWithReference(renderSceneFile(sourceDir("povray") / (std::string(scene) + ".pov"),
-                                         settingsFor(RenderMethod::Adaptive, 160, 90)),
-                             povrayReference(scene, std::string(scene) + "_am2", "+A0.3 +AM2 +R3 -J"), false);
-    }
+    for (const char* scene : {"flat_perspective", "lighting", "primitives"})
+        compareWithPovray(scene, RenderMethod::Adaptive, "_am2", "+A0.3 +AM2 +R3 -J");
+}
+
+// POV-Ray's default method with its default threshold and depth, over its
+// default 32-pixel render blocks (+BS32), whose borders the method sees.
+TEST_CASE("The am1 method matches POV-Ray's +AM1", "[golden][povray]") {
+    for (const char* scene : {"flat_perspective", "lighting", "primitives"})
+        compareWithPovray(scene, RenderMethod::Am1, "_am1", "+A0.3 +AM1 +R3 -J");
 }
 
 TEST_CASE("Golden ASOS renders of every primitive", "[golden]") {
@@ -98,7 +107,7 @@ TEST_CASE("Golden ASOS renders of every primitive", "[golden]") {
 TEST_CASE("Golden renders of the six primitives by every method", "[golden]") {
     const fs::path dir = sourceDir("render");
     for (RenderMethod m : {RenderMethod::Asos, RenderMethod::Single, RenderMethod::Grid,
-                           RenderMethod::Jitter, RenderMethod::Adaptive}) {
+                           RenderMethod::Jitter, RenderMethod::Adaptive, RenderMethod::Am1}) {
         INFO(methodName(m));
         compareWithReference(renderSceneFile(dir / "methods.pov", settingsFor(m, 96, 72)),
                              dir / ("methods_" + std::string(methodName(m)) + ".png"), true);

@@ -54,7 +54,7 @@ TEST_CASE("Every method renders the same scene alike", "[renderer]") {
     const RenderOutput reference = renderOrFail(d, s);
     CHECK(reference.stats.counters.eyeRays == 48u * 36u * 64u);
     for (RenderMethod m : {RenderMethod::Asos, RenderMethod::Single, RenderMethod::Jitter,
-                           RenderMethod::Adaptive}) {
+                           RenderMethod::Adaptive, RenderMethod::Am1}) {
         s.method = m;
         s.samples = 4;
         const RenderOutput out = renderOrFail(d, s);
@@ -67,6 +67,14 @@ TEST_CASE("Every method renders the same scene alike", "[renderer]") {
             sum += std::abs(out.color.data()[i] - reference.color.data()[i]);
         const double mean = sum / static_cast<double>(out.color.data().size());
         CHECK(mean < (m == RenderMethod::Single ? 0.03 : 0.015));
+        if (m == RenderMethod::Am1) {
+            // The samples AOV counts every eye ray, the frames' included.
+            double rays = 0.0;
+            for (int y = 0; y < 36; ++y)
+                for (int x = 0; x < 48; ++x) rays += out.samples.at(x, y, 0);
+            CHECK(rays == double(out.stats.counters.eyeRays));
+            CHECK(out.stats.counters.eyeRays > 48u * 36u + 2u * (48u + 36u));
+        }
     }
 }
 
@@ -96,7 +104,8 @@ TEST_CASE("ASOS costs fewer rays than 4 x 4 stochastic sampling", "[renderer]") 
 
 TEST_CASE("Renders are identical for any thread count and region tiling", "[renderer]") {
     const SceneDescription d = demoScene();
-    for (RenderMethod m : {RenderMethod::Asos, RenderMethod::Jitter, RenderMethod::Adaptive}) {
+    for (RenderMethod m :
+         {RenderMethod::Asos, RenderMethod::Jitter, RenderMethod::Adaptive, RenderMethod::Am1}) {
         INFO(methodName(m));
         RenderSettings s;
         s.width = 40;
@@ -155,6 +164,7 @@ TEST_CASE("Bad render settings are rejected with every problem named", "[rendere
     CHECK_THAT(checkRenderSettings(regionOutside), Catch::Contains("region"));
     CHECK(parseMethod("asos") == RenderMethod::Asos);
     CHECK(parseMethod("adaptive") == RenderMethod::Adaptive);
+    CHECK(parseMethod("am1") == RenderMethod::Am1);
     CHECK_FALSE(parseMethod("stochastic"));
 }
 

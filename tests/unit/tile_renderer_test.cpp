@@ -1,5 +1,6 @@
 #include <catch2/catch.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
 #include <vector>
@@ -24,6 +25,18 @@ PixelResult noisyPixel(int x, int y, RenderCounters& counters) {
     counters.countPyray(samples % 3);
     return {sum / double(samples), static_cast<std::uint32_t>(samples),
             static_cast<std::uint32_t>(samples % 3)};
+}
+
+// Copies the region `part` of a region render into `assembled`, checking that
+// the render left the rest of the image black.
+void keepRegion(Image& assembled, const Image& rendered, const PixelRegion& part) {
+    for (int y = 0; y < rendered.height(); ++y)
+        for (int x = 0; x < rendered.width(); ++x) {
+            if (part.contains(x, y))
+                assembled.setRgb(x, y, rendered.rgbAt(x, y));
+            else
+                CHECK(rendered.rgbAt(x, y) == Vec3(0.0));
+        }
 }
 }  // namespace
 
@@ -60,17 +73,66 @@ TEST_CASE("Regions render the same pixels as the whole image", "[tiles]") {
                                     PixelRegion{17, 13, 40, 30}}) {
         o.region = part;
         const TileRenderResult r = renderTiles(w, h, o, noisyPixel);
-        for (int y = 0; y < h; ++y)
-            for (int x = 0; x < w; ++x) {
-                if (part.contains(x, y))
-                    assembled.setRgb(x, y, r.color.rgbAt(x, y));
-                else
-                    CHECK(r.color.rgbAt(x, y) == Vec3(0.0));
-            }
+        keepRegion(assembled, r.color, part);
         counters += r.counters;
     }
     CHECK(assembled == whole.color);
     CHECK(counters == whole.counters);
+}
+
+namespace {
+// A block function whose pixels tell which block they were rendered in and
+// where in it, so that any change of the block grid changes the image.
+std::vector<PixelResult> labelledBlock(const PixelRegion& b, RenderCounters& counters) {
+    std::vector<PixelResult> out;
+    for (int y = b.y0; y < b.y1; ++y)
+        for (int x = b.x0; x < b.x1; ++x)
+            out.push_back({Vec3(b.x0, b.y0, b.x1 * 100 + b.y1), std::uint32_t(1 + (x + y) % 3), 0});
+    counters.eyeRays += std::uint64_t(b.area());
+    return out;
+}
+}  // namespace
+
+TEST_CASE("Blocks are laid from the image corner for any thread count, tile size and region", "[tiles]") {
+    const int w = 53, h = 37, size = 16;
+    TileRenderOptions o;
+    o.threads = 1;
+    const TileRenderResult whole = renderBlocks(w, h, size, o, labelledBlock);
+    for (int y = 0; y < h; ++y)
+        for (int x = 0; x < w; ++x) {
+            const int x0 = x / size * size, y0 = y / size * size;
+            CHECK(whole.color.rgbAt(x, y) ==
+                  Vec3(x0, y0, std::min(x0 + size, w) * 100 + std::min(y0 + size, h)));
+        }
+    CHECK(whole.counters.pixels == std::uint64_t(w * h));
+    CHECK(whole.counters.eyeRays == std::uint64_t(w * h));
+    for (int threads : {1, 2, 3})
+        for (int tile : {1, 7, 64}) {
+            INFO("threads " << threads << ", tile " << tile);
+            o.threads = threads;
+            o.tileSize = tile;
+            const TileRenderResult r = renderBlocks(w, h, size, o, labelledBlock);
+            CHECK(r.color == whole.color);
+            CHECK(r.samples == whole.samples);
+            CHECK(r.counters == whole.counters);
+        }
+    // A region renders the blocks it meets whole, and keeps its own pixels.
+    Image assembled = Image::rgb(w, h);
+    for (const PixelRegion& part : {PixelRegion{0, 0, 53, 13}, PixelRegion{0, 13, 20, 37},
+                                    PixelRegion{20, 13, 53, 37}}) {
+        o.region = part;
+        const TileRenderResult r = renderBlocks(w, h, size, o, labelledBlock);
+        CHECK(r.counters.pixels == std::uint64_t(part.area()));
+        keepRegion(assembled, r.color, part);
+    }
+    CHECK(assembled == whole.color);
+    o.region = PixelRegion{20, 13, 21, 14};
+    CHECK(renderBlocks(w, h, size, o, labelledBlock).counters.eyeRays == std::uint64_t(size * size));
+
+    o.region.reset();
+    CHECK_THROWS_AS(renderBlocks(w, h, 0, o, labelledBlock), std::invalid_argument);
+    auto wrongSize = [](const PixelRegion&, RenderCounters&) { return std::vector<PixelResult>(3); };
+    CHECK_THROWS_AS(renderBlocks(w, h, size, o, wrongSize), std::logic_error);
 }
 
 TEST_CASE("Progress is reported once per tile in order", "[tiles]") {

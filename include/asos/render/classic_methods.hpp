@@ -10,6 +10,12 @@
 //             subdivided into four where any two of its corner colours differ
 //             by antialias_threshold or more, down to `depth` levels; a square
 //             that is not subdivided contributes the mean of its corners.
+//   am1       POV-Ray's +AM1, its default: one ray through the pixel centre,
+//             and (depth + 1)^2 more on a grid, averaged with it, in the
+//             pixels whose first colour differs from their left or upper
+//             neighbour's by antialias_threshold or more, and in those
+//             neighbours; pixels are compared within a block of POV-Ray's
+//             render grid only.
 // See docs/rendering.md for the exact rules and their POV-Ray sources.
 //
 // The radiance function is any callable taking (const Ray&) or
@@ -78,20 +84,21 @@ concept BatchRadiance = requires(Radiance& r, std::span<const Ray> rays,
     r.batch(rays, samples, colors);
 };
 
-// The mean radiance of a pixel's samples 0 .. count - 1, sample k at image
-// point at(k); one by one, or in batches where the radiance function takes them.
+// The summed radiance of a pixel's samples first .. first + count - 1, sample
+// k at image point at(k); one by one, or in batches where the radiance
+// function takes them.
 template <class Radiance, class ImagePoint>
-PixelResult averageSamples(const CameraModel& camera, int x, int y, int count, Radiance& radiance,
-                           ImagePoint&& at) {
+Vec3 sumSamples(const CameraModel& camera, int x, int y, std::uint32_t first, int count,
+                Radiance& radiance, ImagePoint&& at) {
     Vec3 sum(0.0);
     if constexpr (BatchRadiance<Radiance>) {
         std::array<Ray, kPrimaryBatch> rays;
         std::array<PrimarySample, kPrimaryBatch> samples;
         std::array<Vec3, kPrimaryBatch> colors;
-        for (int first = 0; first < count; first += kPrimaryBatch) {
-            const int n = std::min(kPrimaryBatch, count - first);
+        for (int start = 0; start < count; start += kPrimaryBatch) {
+            const int n = std::min(kPrimaryBatch, count - start);
             for (int k = 0; k < n; ++k) {
-                const auto index = static_cast<std::uint32_t>(first + k);
+                const auto index = first + static_cast<std::uint32_t>(start + k);
                 const Vec2 p = at(index);
                 rays[k] = camera.ray(p.x, p.y);
                 samples[k] = {p, x, y, index};
@@ -104,11 +111,26 @@ PixelResult averageSamples(const CameraModel& camera, int x, int y, int count, R
         }
     } else {
         for (int k = 0; k < count; ++k) {
-            const auto index = static_cast<std::uint32_t>(k);
+            const auto index = first + static_cast<std::uint32_t>(k);
             const Vec2 p = at(index);
             sum += callRadiance(radiance, camera.ray(p.x, p.y), {p, x, y, index});
         }
     }
+    return sum;
+}
+
+// The centre of sub-pixel k (row by row) of pixel (x, y)'s n x n grid.
+inline Vec2 gridPoint(int x, int y, int n, int k) {
+    const int i = k % n, j = k / n;
+    return Vec2(x + (i + 0.5) / n, y + (j + 0.5) / n);
+}
+
+// The mean radiance of a pixel's samples 0 .. count - 1, sample k at image
+// point at(k).
+template <class Radiance, class ImagePoint>
+PixelResult averageSamples(const CameraModel& camera, int x, int y, int count, Radiance& radiance,
+                           ImagePoint&& at) {
+    const Vec3 sum = sumSamples(camera, x, y, 0, count, radiance, at);
     return {sum / double(count), static_cast<std::uint32_t>(count), 0};
 }
 }  // namespace detail
@@ -126,8 +148,7 @@ template <class Radiance>
 PixelResult estimateGrid(const CameraModel& camera, int x, int y, int n, Radiance&& radiance) {
     detail::requireSampleCount(n, "grid size");
     return detail::averageSamples(camera, x, y, n * n, radiance, [&](std::uint32_t index) {
-        const int i = static_cast<int>(index) % n, j = static_cast<int>(index) / n;
-        return Vec2(x + (i + 0.5) / n, y + (j + 0.5) / n);
+        return detail::gridPoint(x, y, n, static_cast<int>(index));
     });
 }
 
@@ -145,11 +166,13 @@ PixelResult estimateJitter(const CameraModel& camera, int x, int y, int n, const
     });
 }
 
-// The adaptive method's parameters, with POV-Ray's defaults.
+// The parameters of the adaptive and am1 methods (POV-Ray's anti-aliasing
+// options), with POV-Ray's defaults.
 struct AdaptiveSettings {
     double threshold = 0.3;     // antialias_threshold (+A0.3)
-    int depth = 2;              // subdivision levels; POV-Ray's +R n is depth n - 1 (+R3: 2)
-    bool jitter = false;        // jitter the sub-samples (never the corners), as +J does
+    int depth = 2;              // POV-Ray's +R n is depth n - 1 (+R3: 2): adaptive's
+                                // subdivision levels, am1's (depth + 1)^2 sub-samples
+    bool jitter = false;        // jitter the sub-samples (never corners or first rays), as +J does
     double jitterAmount = 1.0;  // +J amount
     double gamma = 2.5;         // antialias_gamma: colours are compared after encoding with it
     double assumedGamma = 1.0;  // the scene's working gamma, decoded first
@@ -312,6 +335,95 @@ CornerGrid sampleCorners(const CameraModel& camera, const PixelRegion& pixels,
     grid.counters = run.counters;
     grid.seconds = run.seconds;
     return grid;
+}
+
+// POV-Ray's render block size (its default +BS32). +AM1 compares pixels
+// within one block only, so the block grid is part of the method: it is laid
+// from the image's top-left corner, whatever the tiles, threads and region.
+inline constexpr int kAm1BlockSize = 32;
+
+// POV-Ray's +AM1 (TraceTask::NonAdaptiveSupersamplingM1) over one block of
+// its render grid, the block's pixels row by row: `rays` is what the pixel
+// cost (see below), `level` 1 where it was supersampled.
+//  - Each pixel's first ray passes through its centre (primary sample index
+//    0, as estimateSingle). The row above the block and the column left of it
+//    are traced again as first rays (POV-Ray's frame, charged to the block's
+//    first row and column); the block compares with them but never
+//    supersamples them.
+//  - In raster order, a pixel is compared with its left and upper neighbours
+//    as they are at that moment (supersampled already, or not): where one
+//    differs (adaptiveColorsDiffer), the pixel and that neighbour, unless
+//    supersampled already, are supersampled.
+//  - Supersampling a pixel averages its first sample with n x n more,
+//    n = depth + 1 (POV-Ray's +R n with depth = n - 1, as for adaptive), at
+//    the centres of an n x n grid (indices 1 .. n^2); with jitter each moves
+//    by up to +-jitterAmount / (2 n) pixels, POV-Ray's jitter scale, from
+//    PixelRandom(seed, x, y) (SampleStream::Am1Jitter).
+// Throws std::invalid_argument for settings checkAdaptiveSettings rejects.
+template <class Radiance>
+std::vector<PixelResult> estimateAm1Block(const CameraModel& camera, const PixelRegion& block,
+                                          const AdaptiveSettings& settings, std::uint64_t seed,
+                                          Radiance&& radiance) {
+    if (std::string error = checkAdaptiveSettings(settings); !error.empty())
+        throw std::invalid_argument(error);
+    const int n = settings.depth + 1;
+    const double jitterScale = settings.jitter ? settings.jitterAmount / n : 0.0;
+
+    // The block and its frame; `settled` marks the samples the block must not
+    // supersample: those supersampled already, and the frame.
+    struct Sample {
+        Vec3 color{0.0};
+        bool settled = false;
+        std::uint32_t rays = 0;
+    };
+    const int stride = block.width() + 1;
+    std::vector<Sample> samples(std::size_t(stride) * (block.height() + 1));
+    auto sampleAt = [&](int x, int y) -> Sample& {
+        return samples[std::size_t(y - block.y0 + 1) * stride + (x - block.x0 + 1)];
+    };
+    auto firstSample = [&](int x, int y) -> Sample {
+        const Vec2 p(x + 0.5, y + 0.5);
+        return {detail::callRadiance(radiance, camera.ray(p.x, p.y), {p, x, y, 0}), false, 1};
+    };
+    auto supersample = [&](int x, int y) {
+        const PixelRandom rng(seed, x, y);
+        const Vec3 sum = detail::sumSamples(camera, x, y, 1, n * n, radiance, [&](std::uint32_t index) {
+            const int k = static_cast<int>(index) - 1;
+            Vec2 p = detail::gridPoint(x, y, n, k);
+            if (jitterScale > 0.0)
+                p += (rng.uniform2(SampleStream::Am1Jitter, std::uint64_t(k)) - 0.5) * jitterScale;
+            return p;
+        });
+        Sample& s = sampleAt(x, y);
+        s.color = (s.color + sum) / double(n * n + 1);
+        s.settled = true;
+        s.rays += static_cast<std::uint32_t>(n * n);
+    };
+
+    auto frame = [&](int x, int y) { (sampleAt(x, y) = firstSample(x, y)).settled = true; };
+    for (int x = block.x0; x < block.x1; ++x) frame(x, block.y0 - 1);
+    for (int y = block.y0; y < block.y1; ++y) {
+        frame(block.x0 - 1, y);
+        for (int x = block.x0; x < block.x1; ++x) {
+            const Sample& current = sampleAt(x, y) = firstSample(x, y);
+            const Sample& left = sampleAt(x - 1, y);
+            const Sample& top = sampleAt(x, y - 1);
+            const bool leftDiffers = adaptiveColorsDiffer(left.color, current.color, settings);
+            const bool topDiffers = adaptiveColorsDiffer(top.color, current.color, settings);
+            if (leftDiffers && !left.settled) supersample(x - 1, y);
+            if (topDiffers && !top.settled) supersample(x, y - 1);
+            if (leftDiffers || topDiffers) supersample(x, y);
+        }
+    }
+    // The frame's rays are charged to the block's first row and column.
+    std::vector<PixelResult> results;
+    results.reserve(std::size_t(block.area()));
+    for (int y = block.y0; y < block.y1; ++y)
+        for (int x = block.x0; x < block.x1; ++x) {
+            const Sample& s = sampleAt(x, y);
+            results.push_back({s.color, s.rays + (x == block.x0) + (y == block.y0), s.rays > 1 ? 1u : 0u});
+        }
+    return results;
 }
 
 }  // namespace asos

@@ -22,9 +22,10 @@
 
 namespace asos {
 
-enum class RenderMethod { Asos, Single, Grid, Jitter, Adaptive };
+// Adaptive is POV-Ray's +AM2, Am1 its +AM1 (classic_methods.hpp).
+enum class RenderMethod { Asos, Single, Grid, Jitter, Adaptive, Am1 };
 
-// "asos", "single", "grid", "jitter", "adaptive".
+// "asos", "single", "grid", "jitter", "adaptive", "am1".
 const char* methodName(RenderMethod method);
 std::optional<RenderMethod> parseMethod(std::string_view name);
 
@@ -38,7 +39,7 @@ struct RenderSettings {
     // (docs/algorithm.md, "Pattern edges"); off: the paper's method alone.
     bool patternEdges = false;
     int samples = 4;            // grid and jitter: samples x samples rays per pixel
-    AdaptiveSettings adaptive;  // adaptive: threshold, depth, jitter (gamma from the scene)
+    AdaptiveSettings adaptive;  // adaptive and am1: threshold, depth, jitter (gamma from the scene)
     // Area lights (docs/lights.md): ASOS shadow beams or the classic grid of
     // point lights, with any eye method; by default ASOS beams under the ASOS
     // eye method and the grid under the classic ones.

@@ -20,6 +20,7 @@ enum class SampleStream : std::uint32_t {
     AsosJitter = 3,      // ASOS MAX-pyray jitter
     LightJitter = 4,     // area light sample positions
     ShadowJitter = 5,    // ASOS shadow MAX-pyray jitter
+    Am1Jitter = 6,       // jitter of the am1 method's sub-samples
     Test = 1000,         // reserved for tests
 };
 

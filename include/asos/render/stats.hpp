@@ -45,7 +45,7 @@ struct RenderTimes {
 };
 
 struct RenderStats {
-    std::string method;  // "asos", "single", "grid", "jitter", "adaptive"
+    std::string method;  // "asos", "single", "grid", "jitter", "adaptive", "am1"
     int width = 0, height = 0;
     int threads = 0;
     RenderCounters counters;

@@ -5,7 +5,8 @@
 // tests/unit/render_golden_test.cpp; POV-Ray's reference by
 // scripts/update-goldens.sh as
 //   povray -D +I<this> +O<this>.png +W160 +H90 -A +FN8
-// (and, for the adaptive cross-check, with +A0.3 +AM2 +R3 -J into <this>_am2.png)
+// (and, for the adaptive and am1 cross-checks, with +A0.3 +AM2 +R3 -J into
+// <this>_am2.png and +A0.3 +AM1 +R3 -J into <this>_am1.png)
 #version 3.7;
 global_settings { assumed_gamma 1.0 }
 #declare Loc = <1.5, 2.2, -6>;

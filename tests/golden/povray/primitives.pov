@@ -1,8 +1,8 @@
 // Cross-check with POV-Ray 3.7 (tests/unit/render_golden_test.cpp): the six
 // primitives asos renders -- sphere, box, cone, cylinder, disc, polygon -- on
 // a plane, lit by one point light with shadows, phong highlights and one
-// mirror. References: povray -A (one ray per pixel) and +A0.3 +AM2 +R3 -J,
-// rendered by scripts/update-goldens.sh.
+// mirror. References: povray -A (one ray per pixel), +A0.3 +AM2 +R3 -J and
+// +A0.3 +AM1 +R3 -J, rendered by scripts/update-goldens.sh.
 #version 3.7;
 global_settings { assumed_gamma 1.0 }
 background { color rgb <0.55, 0.7, 0.9> }

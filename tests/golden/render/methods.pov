@@ -1,6 +1,6 @@
 // Golden render of asos (tests/unit/render_golden_test.cpp): the six
 // primitives on a checkered plane under a point light, one of them a mirror,
-// rendered by every method (asos, single, grid, jitter, adaptive).
+// rendered by every method (asos, single, grid, jitter, adaptive, am1).
 // The reference PNGs beside it are rewritten only by scripts/update-goldens.sh.
 #version 3.7;
 global_settings { assumed_gamma 1.0 }
