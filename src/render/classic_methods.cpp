@@ -19,15 +19,15 @@ double encodeForComparison(double c, const AdaptiveSettings& s) {
 
 std::string checkAdaptiveSettings(const AdaptiveSettings& s) {
     if (s.depth < 0 || s.depth > kMaxAdaptiveDepth)
-        return "adaptive depth must be between 0 and " + std::to_string(kMaxAdaptiveDepth) +
-               ", not " + std::to_string(s.depth);
+        return "the antialiasing depth (adaptive, am1) must be between 0 and " +
+               std::to_string(kMaxAdaptiveDepth) + ", not " + std::to_string(s.depth);
     if (!(s.threshold >= 0.0) || !std::isfinite(s.threshold))
-        return "adaptive threshold must be a non-negative number";
+        return "the antialiasing threshold (adaptive, am1) must be a non-negative number";
     if (!(s.jitterAmount >= 0.0) || !std::isfinite(s.jitterAmount))
-        return "adaptive jitter amount must be a non-negative number";
+        return "the antialiasing jitter amount (adaptive, am1) must be a non-negative number";
     if (!(s.gamma >= 0.0) || !std::isfinite(s.gamma) || !(s.assumedGamma > 0.0) ||
         !std::isfinite(s.assumedGamma))
-        return "adaptive gamma and assumed_gamma must be positive numbers";
+        return "the antialiasing gamma and assumed_gamma (adaptive, am1) must be positive numbers";
     return {};
 }
 
