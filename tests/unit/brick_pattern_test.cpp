@@ -7,6 +7,8 @@
 #include <random>
 
 #include "asos/render/brick_pattern.hpp"
+#include "asos/render/pattern_edges.hpp"
+#include "asos/render/shading.hpp"
 
 using namespace asos;
 
@@ -81,6 +83,21 @@ TEST_CASE("Brick's joints end where POV-Ray's do", "[shading][brick]") {
     // No mortar at all: POV-Ray's 0 - 2e-10 is below every fraction.
     const BrickPattern none({1.0, 1.0, 1.0}, 0.0);
     for (double t = -2.0; t < 2.0; t += 0.125) CHECK(none.value({t, t, t}) == 1);
+}
+
+TEST_CASE("A brick pigment is its second colour in the bricks, its first in the mortar", "[shading][brick]") {
+    Pigment p;
+    p.kind = Pigment::Kind::Brick;
+    p.color1.rgb = {0.5, 0.5, 0.5};
+    p.color2.rgb = {0.6, 0.15, 0.15};
+    p.worldFromPattern = Transform::scale(Vec3(0.1));
+    CHECK(evaluatePigment(p, {0.4, 0.1, 0.0}).rgb == p.color2.rgb);   // pattern point (4, 1, 0)
+    CHECK(evaluatePigment(p, {0.4, -0.025, 0.0}).rgb == p.color1.rgb); // (4, -0.25, 0)
+    CHECK(pigmentIndex(p, {0.4, 0.1, 0.0}) == 1);
+    CHECK(pigmentIndex(p, {0.4, -0.025, 0.0}) == 0);
+    CHECK(hasPattern(p));
+    p.color2 = p.color1;
+    CHECK_FALSE(hasPattern(p));
 }
 
 TEST_CASE("Brick counts the joint faces a box straddles", "[shading][brick]") {
