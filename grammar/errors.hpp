@@ -86,8 +86,9 @@ template <> inline constexpr auto error_message<matrix_components> = "expected a
 template <> inline constexpr auto error_message<matrix_value> = "expected a number of the matrix";
 template <> inline constexpr auto error_message<matrix_close> = "expected ',' or '>' after the numbers of the matrix";
 template <> inline constexpr auto error_message<asos_end> = "expected eps, max, jitter or '}' in the asos block";
-template <> inline constexpr auto error_message<checker_second> = "expected the second colour of checker";
-template <> inline constexpr auto error_message<pigment_end> = "expected a colour, checker, a transform or '}' in the pigment";
+template <> inline constexpr auto error_message<pattern_second_colour<kw_checker>> = "expected the second colour of checker";
+template <> inline constexpr auto error_message<pattern_second_colour<kw_brick>> = "expected the second colour of brick";
+template <> inline constexpr auto error_message<pigment_end> = "expected a colour, checker, brick, a transform, brick_size, mortar or '}' in the pigment";
 template <> inline constexpr auto error_message<reflection_value> = "expected a colour or a float after reflection";
 template <> inline constexpr auto error_message<finish_end> = "expected a finish item (ambient, diffuse, brilliance, phong, phong_size, specular, roughness, reflection) or '}'";
 template <> inline constexpr auto error_message<texture_end> = "expected pigment, finish, a transform or '}' in the texture";
@@ -131,9 +132,10 @@ template <> inline constexpr auto rejection_message<unsupported_directive> = "'#
 template <> inline constexpr auto rejection_message<unknown_directive> = "unknown directive '#{}'";
 template <> inline constexpr auto rejection_message<cylinder_light> = "'cylinder' lights are not supported by asos";
 template <> inline constexpr auto rejection_message<cylinder_camera> = "the 'cylinder' camera is not supported by asos";
-template <> inline constexpr auto rejection_message<texture_pattern> = "texture patterns ('checker' of textures) are not supported by asos; use checker in the pigment";
+template <> inline constexpr auto rejection_message<texture_pattern> = "texture patterns ('{}' of textures) are not supported by asos; use {} in the pigment";
 template <> inline constexpr auto rejection_message<reflection_block> = "'reflection { … }' is not supported by asos; write reflection followed by a colour or a float";
-template <> inline constexpr auto rejection_message<checker_of_blocks> = "'checker' of pigments or textures is not supported by asos; give checker two colours";
+template <> inline constexpr auto rejection_message<pattern_of_blocks<kw_checker>> = "'checker' of pigments or textures is not supported by asos; give checker two colours";
+template <> inline constexpr auto rejection_message<pattern_of_blocks<kw_brick>> = "'brick' of pigments or textures is not supported by asos; give brick two colours";
 // clang-format on
 
 struct errors {

@@ -34,17 +34,25 @@ struct asos_entry : sor<eps_item, max_item, asos_jitter_item> {};
 struct asos_end : rbrace {};
 struct asos_block : if_must<kw_asos, block_open, entries<asos_entry>, asos_end> {};
 
-// --- pigment { colour | checker c1, c2 | Name  transforms } ----------------------
-struct checker_start : success {};
-// `checker pigment {…} pigment {…}` (pigments rather than colours) is not ours.
-struct checker_of_blocks : seq<at<sor<kw_pigment, kw_texture>>> {};
-struct checker_second : seq<colour_in_place> {};
-struct checker_colours
-    : seq<checker_start, opt<checker_of_blocks>,
-          opt<colour_in_place, sor<seq<comma, checker_second>, opt<colour_in_place>>>> {};
-struct checker_item : if_must<kw_checker, checker_colours> {};
+// --- pigment { colour | checker c1, c2 | brick c1, c2 | Name  modifiers } --------
+// A pattern's two colours, either or both left out (POV-Ray's colour list);
+// `checker pigment {…} pigment {…}` (pigments rather than colours) is not
+// ours. Each pattern keyword gets its own rules, for its own messages.
+template <typename Keyword> struct pattern_colours_start : success {};
+template <typename Keyword> struct pattern_of_blocks : seq<at<sor<kw_pigment, kw_texture>>> {};
+template <typename Keyword> struct pattern_second_colour : seq<colour_in_place> {};
+template <typename Keyword>
+struct pattern_colours
+    : seq<pattern_colours_start<Keyword>, opt<pattern_of_blocks<Keyword>>,
+          opt<colour_in_place, sor<seq<comma, pattern_second_colour<Keyword>>, opt<colour_in_place>>>> {};
+struct checker_item : if_must<kw_checker, pattern_colours<kw_checker>> {};
+struct brick_item : if_must<kw_brick, pattern_colours<kw_brick>> {};
+// brick's own modifiers; the interpreter checks that the pattern is brick.
+struct brick_size_item : if_must<kw_brick_size, vector_value> {};
+struct mortar_item : if_must<kw_mortar, float_value> {};
 struct pigment_colour : seq<colour_in_place> {};  // a colour, or a declared pigment
-struct pigment_entry : sor<checker_item, transform_item, pigment_colour, unsupported_item> {};
+struct pigment_entry : sor<checker_item, brick_item, transform_item, brick_size_item, mortar_item, pigment_colour,
+                           unsupported_item> {};
 struct pigment_end : rbrace {};
 struct pigment_block : if_must<kw_pigment, block_open, entries<pigment_entry>, pigment_end> {};
 
@@ -69,7 +77,7 @@ struct finish_block : if_must<kw_finish, block_open, entries<finish_entry>, fini
 
 // --- texture { Name  pigment {…}  finish {…}  transforms } ------------------------
 // A pattern of textures (`texture { checker texture {…} … }`) is not ours.
-struct texture_pattern : kw_checker {};
+struct texture_pattern : sor<kw_checker, kw_brick> {};
 struct texture_name : name {};
 struct texture_entry
     : sor<pigment_block, finish_block, transform_item, texture_pattern, texture_name, unsupported_item> {};

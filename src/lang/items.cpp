@@ -44,6 +44,8 @@ AsosOptions inherit(const AsosOptions& own, const AsosOptions& outer) {
 
 constexpr Color kCheckerBlue{Vec3(0.0, 0.0, 1.0), 0.0, 0.0};  // POV-Ray's checker defaults
 constexpr Color kCheckerGreen{Vec3(0.0, 1.0, 0.0), 0.0, 0.0};
+constexpr Color kBrickMortar{Vec3(0.5, 0.5, 0.5), 0.0, 0.0};  // POV-Ray's brick defaults
+constexpr Color kBrickRed{Vec3(0.6, 0.15, 0.15), 0.0, 0.0};
 
 }  // namespace
 
@@ -339,6 +341,33 @@ std::shared_ptr<const Pigment> Interpreter::evalPigment(const Node& block, const
             p->kind = Pigment::Kind::Checker;
             p->color1 = n.count > 0 ? evalColour(n[0]) : kCheckerBlue;
             p->color2 = n.count > 1 ? evalColour(n[1]) : kCheckerGreen;
+        } else if (n.kind == NodeKind::Item && n.word == Word::Brick) {
+            pattern(n);
+            // As POV-Ray: a brick pigment given brick again keeps its size and
+            // mortar; any other starts from the defaults.
+            if (p->kind != Pigment::Kind::Brick) {
+                const Pigment fresh;
+                p->brickSize = fresh.brickSize;
+                p->mortar = fresh.mortar;
+            }
+            p->kind = Pigment::Kind::Brick;
+            p->color1 = n.count > 0 ? evalColour(n[0]) : kBrickMortar;
+            p->color2 = n.count > 1 ? evalColour(n[1]) : kBrickRed;
+        } else if (n.kind == NodeKind::Item && (n.word == Word::BrickSize || n.word == Word::Mortar)) {
+            // Pattern modifiers, like the transforms (POV-Ray reads them in the
+            // same loop), of a brick pigment only.
+            if (p->kind != Pigment::Kind::Brick)
+                fail(n, "'" + std::string(wordText(n.word)) + "' applies only to the brick pattern");
+            if (n.word == Word::Mortar) {
+                p->mortar = evalFloat(n[0]);
+            } else {
+                const Vec3 size = evalVector(n[0]);
+                if (size.x == 0.0 || size.y == 0.0 || size.z == 0.0)
+                    fail(n[0], "brick_size <" + formatNumber(size.x) + ", " + formatNumber(size.y) + ", " +
+                                   formatNumber(size.z) + "> has a zero component (the pattern divides by it)");
+                p->brickSize = size;
+            }
+            stage = Stage::Modifiers;
         } else {
             const Value v = eval(n);
             if (const auto* declared = std::get_if<std::shared_ptr<const Pigment>>(&v)) {

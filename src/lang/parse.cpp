@@ -70,7 +70,8 @@ template <typename Input>
 
 std::string fillWord(std::string_view pattern, std::string_view word) {
     std::string out(pattern);
-    if (auto at = out.find("{}"); at != std::string::npos) out.replace(at, 2, word);
+    for (auto at = out.find("{}"); at != std::string::npos; at = out.find("{}", at + word.size()))
+        out.replace(at, 2, word);
     return out;
 }
 
@@ -291,7 +292,8 @@ template <> struct action<g::cylinder_light> : Reject<g::cylinder_light> {};
 template <> struct action<g::cylinder_camera> : Reject<g::cylinder_camera> {};
 template <> struct action<g::texture_pattern> : Reject<g::texture_pattern> {};
 template <> struct action<g::reflection_block> : Reject<g::reflection_block> {};
-template <> struct action<g::checker_of_blocks> : Reject<g::checker_of_blocks> {};
+template <typename Keyword>
+struct action<g::pattern_of_blocks<Keyword>> : Reject<g::pattern_of_blocks<Keyword>> {};
 template <> struct action<g::unsupported_directive> : RejectDirective<g::unsupported_directive> {};
 template <> struct action<g::unknown_directive> : RejectDirective<g::unknown_directive> {};
 
@@ -543,6 +545,8 @@ template <> struct action<g::phong_size_item> : ItemAction<Word::PhongSize, 1> {
 template <> struct action<g::specular_item> : ItemAction<Word::Specular, 1> {};
 template <> struct action<g::roughness_item> : ItemAction<Word::Roughness, 1> {};
 template <> struct action<g::reflection_item> : ItemAction<Word::Reflection, 1> {};
+template <> struct action<g::brick_size_item> : ItemAction<Word::BrickSize, 1> {};
+template <> struct action<g::mortar_item> : ItemAction<Word::Mortar, 1> {};
 template <> struct action<g::open_item> : ItemAction<Word::Open, 0> {};
 template <> struct action<g::no_shadow_item> : ItemAction<Word::NoShadow, 0> {};
 template <> struct action<g::area_light_item> : ItemAction<Word::AreaLight, 4> {};
@@ -567,17 +571,19 @@ template <> struct action<g::max_trace_level_item> : ItemAction<Word::MaxTraceLe
 template <> struct action<g::ambient_light_item> : ItemAction<Word::AmbientLight, 1> {};
 
 // Items with a variable number of arguments.
-template <>
-struct action<g::checker_start> {
+template <typename Keyword>
+struct action<g::pattern_colours_start<Keyword>> {
     static void apply0(Builder& b) { b.open(); }
 };
-template <>
-struct action<g::checker_item> {
+template <Word W>
+struct ClosePattern {
     template <typename Input>
     static void apply(const Input& in, Builder& b) {
-        b.close(NodeKind::Item, Word::Checker, posOf(in));
+        b.close(NodeKind::Item, W, posOf(in));
     }
 };
+template <> struct action<g::checker_item> : ClosePattern<Word::Checker> {};
+template <> struct action<g::brick_item> : ClosePattern<Word::Brick> {};
 template <>
 struct action<g::matrix_item> {
     template <typename Input>

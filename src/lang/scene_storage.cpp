@@ -93,12 +93,9 @@ std::uint64_t hashOf(const Texture& t) {
 }
 
 bool sameTexture(const Texture& a, const Texture& b) {
-    const Pigment& p = a.pigment;
-    const Pigment& q = b.pigment;
     const Finish& f = a.finish;
     const Finish& g = b.finish;
-    return p.kind == q.kind && p.color1 == q.color1 && p.color2 == q.color2 &&
-           p.worldFromPattern == q.worldFromPattern && f.ambient == g.ambient && f.diffuse == g.diffuse &&
+    return a.pigment == b.pigment && f.ambient == g.ambient && f.diffuse == g.diffuse &&
            f.brilliance == g.brilliance && f.phong == g.phong && f.phongSize == g.phongSize &&
            f.specular == g.specular && f.roughness == g.roughness && f.reflection == g.reflection;
 }

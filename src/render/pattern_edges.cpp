@@ -2,6 +2,7 @@
 
 #include <cmath>
 
+#include "asos/render/brick_pattern.hpp"
 #include "asos/render/shading.hpp"
 
 namespace asos {
@@ -10,15 +11,41 @@ namespace {
 Vec3 patternPoint(const Pigment& pigment, const Vec3& worldPoint) {
     return Vec3(pigment.worldFromPattern.inverseMatrix() * Vec4(worldPoint, 1.0));
 }
+
+// How many of the pattern's edge planes the pattern-space box [lo, hi]
+// straddles (0: none, the pattern is the same all over it).
+double edgesCrossed(const Pigment& pigment, const Vec3& lo, const Vec3& hi) {
+    switch (pigment.kind) {
+        case Pigment::Kind::Solid: return 0.0;
+        case Pigment::Kind::Checker: {
+            // The checker's cells as checkerValue floors them (x + 1e-10).
+            double crossings = 0.0;
+            for (int axis = 0; axis < 3; ++axis)
+                crossings += std::floor(hi[axis] + kPovEpsilon) - std::floor(lo[axis] + kPovEpsilon);
+            return crossings;
+        }
+        case Pigment::Kind::Brick:
+            // The mortar's faces: planes of constant y at the foot and top of
+            // each bed joint, and within a course planes of constant x and z at
+            // the sides of its head joints.
+            return BrickPattern(pigment.brickSize, pigment.mortar).edgesCrossed(lo, hi);
+    }
+    return 0.0;
+}
 }  // namespace
 
 bool hasPattern(const Pigment& pigment) {
-    return pigment.kind == Pigment::Kind::Checker && !(pigment.color1 == pigment.color2);
+    return pigment.kind != Pigment::Kind::Solid && !(pigment.color1 == pigment.color2);
 }
 
 int pigmentIndex(const Pigment& pigment, const Vec3& worldPoint) {
-    if (pigment.kind != Pigment::Kind::Checker) return 0;
-    return checkerValue(patternPoint(pigment, worldPoint));
+    switch (pigment.kind) {
+        case Pigment::Kind::Solid: return 0;
+        case Pigment::Kind::Checker: return checkerValue(patternPoint(pigment, worldPoint));
+        case Pigment::Kind::Brick:
+            return BrickPattern(pigment.brickSize, pigment.mortar).value(patternPoint(pigment, worldPoint));
+    }
+    return 0;
 }
 
 PatternChange pigmentMayChange(const Pigment& pigment, const Footprint& footprint) {
@@ -30,10 +57,7 @@ PatternChange pigmentMayChange(const Pigment& pigment, const Footprint& footprin
         lo = glm::min(lo, p);
         hi = glm::max(hi, p);
     }
-    // The checker's cells as checkerValue floors them (x + 1e-10).
-    double crossings = 0.0;
-    for (int axis = 0; axis < 3; ++axis)
-        crossings += std::floor(hi[axis] + kPovEpsilon) - std::floor(lo[axis] + kPovEpsilon);
+    const double crossings = edgesCrossed(pigment, lo, hi);
     return {crossings > 0.0, crossings == 1.0};
 }
 

@@ -2,6 +2,8 @@
 
 #include <cmath>
 
+#include "asos/render/brick_pattern.hpp"
+
 namespace asos {
 
 int checkerValue(const Vec3& p) {
@@ -22,6 +24,10 @@ Color evaluatePigment(const Pigment& pigment, const Vec3& worldPoint) {
         case Pigment::Kind::Checker: {
             const Vec3 p(pigment.worldFromPattern.inverseMatrix() * Vec4(worldPoint, 1.0));
             return checkerValue(p) ? pigment.color2 : pigment.color1;
+        }
+        case Pigment::Kind::Brick: {
+            const Vec3 p(pigment.worldFromPattern.inverseMatrix() * Vec4(worldPoint, 1.0));
+            return BrickPattern(pigment.brickSize, pigment.mortar).value(p) ? pigment.color2 : pigment.color1;
         }
     }
     return pigment.color1;

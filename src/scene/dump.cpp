@@ -144,12 +144,22 @@ void writeShape(Writer& w, const Shape& shape) {
 void writeTexture(Writer& w, const Texture& t) {
     const Pigment& p = t.pigment;
     w << "  texture {\n    pigment { ";
-    if (p.kind == Pigment::Kind::Checker) {
-        w << "checker ";
-        w.colour(p.color1) << ", ";
-        w.colour(p.color2);
-    } else {
-        w.colour(p.color1);
+    switch (p.kind) {
+        case Pigment::Kind::Solid:
+            w.colour(p.color1);
+            break;
+        case Pigment::Kind::Checker:
+            w << "checker ";
+            w.colour(p.color1) << ", ";
+            w.colour(p.color2);
+            break;
+        case Pigment::Kind::Brick:
+            w << "brick ";
+            w.colour(p.color1) << ", ";
+            w.colour(p.color2) << " brick_size ";
+            w.vec(p.brickSize) << " mortar ";
+            w.num(p.mortar);
+            break;
     }
     if (!p.worldFromPattern.isIdentity()) {
         w << ' ';

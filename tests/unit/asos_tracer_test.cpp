@@ -6,6 +6,7 @@
 
 #include <cmath>
 #include <random>
+#include <vector>
 
 #include "asos/render/asos_tracer.hpp"
 #include "render_scenes.hpp"
@@ -60,6 +61,43 @@ Object halfPlane(double degrees, const Vec2& through) {
     const Transform t = Transform::translate({through.x, through.y, 0.0}) *
                         Transform::rotateDegrees({0.0, 0.0, degrees}) * tilt;
     return makeObject(BoxShape{{-1000.0, -1000.0, -1.0}, {0.0, 1000.0, 1.0}}, coverageTexture(), t);
+}
+
+struct PatternPixel {
+    double exact = 0.0;  // the share of the pixel in the pattern's second colour
+    std::uint32_t rays = 0;
+};
+
+// A plane facing the camera with `pigment` (its first colour black, its
+// second white), traced with pattern edges: at every third pixel across and
+// every `rowStep` down a 16 x 16 image, the pixel's value is within EPS of
+// the share of the pixel in the second colour, and a pixel the pattern
+// crosses is subdivided. `label` names the case in a failure.
+std::vector<PatternPixel> measurePattern(Pigment pigment, const AsosSettings& settings, int rowStep, int label) {
+    Texture texture = coverageTexture(0.0);
+    pigment.color1 = texture.pigment.color1;
+    pigment.color2.rgb = Vec3(1.0);
+    texture.pigment = pigment;
+    SceneDescription d;
+    d.objects.push_back(makeObject(PlaneShape{{0, 0, -1}, 0.0}, texture));
+    Setup s(d, 16, 16, settings, 0, true);
+    std::vector<PatternPixel> pixels;
+    for (int y = 0; y < 16; y += rowStep)
+        for (int x = 0; x < 16; x += 3) {
+            // Against a 128 x 128 point count of the pattern, itself within
+            // about 1/128 of the area.
+            int ones = 0;
+            for (int j = 0; j < 128; ++j)
+                for (int k = 0; k < 128; ++k)
+                    ones += pigmentIndex(pigment, {x + (k + 0.5) / 128, -(y + (j + 0.5) / 128), 0.0});
+            const double exact = ones / 16384.0;
+            const AsosPixelReport r = s.pixel(x, y);
+            INFO("case " << label << ", pixel " << x << ", " << y << ": exact " << exact);
+            CHECK(std::abs(r.result.color.x - exact) <= settings.eps + 0.008);
+            if (exact > 0.02 && exact < 0.98) CHECK(r.result.level >= 1);
+            pixels.push_back({exact, r.result.rays});
+        }
+    return pixels;
 }
 
 }  // namespace
@@ -297,37 +335,50 @@ TEST_CASE("With pattern edges, ASOS measures a checker edge within EPS", "[asos]
     for (int i = 0; i < 24; ++i) {
         const double degrees = angle(rng);
         const Vec2 shift{offset(rng), offset(rng)};
-        Texture checker = coverageTexture(0.0);
-        checker.pigment.kind = Pigment::Kind::Checker;
-        checker.pigment.color2.rgb = Vec3(1.0);
+        Pigment checker;
+        checker.kind = Pigment::Kind::Checker;
         // Cells 5 pixels wide, so that a pixel meets at most one edge.
-        checker.pigment.worldFromPattern = Transform::translate({shift.x, shift.y, 0.0}) *
-                                           Transform::rotateDegrees({0.0, 0.0, degrees}) *
-                                           Transform::scale(Vec3(5.0));
-        SceneDescription d;
-        d.objects.push_back(makeObject(PlaneShape{{0, 0, -1}, 0.0}, checker));
-        Setup s(d, 16, 16, settings, 0, true);
-        // Pixel values against a 128 x 128 point count of the pattern.
-        const Pigment& pigment = d.objects[0].texture->pigment;
-        for (int y = 0; y < 16; y += 5)
-            for (int x = 0; x < 16; x += 3) {
-                int ones = 0;
-                for (int j = 0; j < 128; ++j)
-                    for (int k = 0; k < 128; ++k)
-                        ones += pigmentIndex(pigment, {x + (k + 0.5) / 128, -(y + (j + 0.5) / 128), 0.0});
-                const double exact = ones / 16384.0;
-                const AsosPixelReport r = s.pixel(x, y);
-                INFO("case " << i << ", pixel " << x << ", " << y << ": exact " << exact);
-                // The point count is itself within about 1/128 of the area.
-                CHECK(std::abs(r.result.color.x - exact) <= settings.eps + 0.008);
-                if (exact > 0.02 && exact < 0.98) CHECK(r.result.level >= 1);
-                ++pixels;
-                if (exact == 0.0 || exact == 1.0) onePixelRays += r.result.rays == 1;
-            }
+        checker.worldFromPattern = Transform::translate({shift.x, shift.y, 0.0}) *
+                                   Transform::rotateDegrees({0.0, 0.0, degrees}) * Transform::scale(Vec3(5.0));
+        for (const PatternPixel& p : measurePattern(checker, settings, 5, i)) {
+            ++pixels;
+            if (p.exact == 0.0 || p.exact == 1.0) onePixelRays += p.rays == 1;
+        }
     }
     // Pixels inside one cell cost one ray, but for the few an edge barely
     // touches (too little for the point count to see).
     CHECK(onePixelRays > pixels / 2);
+}
+
+TEST_CASE("With pattern edges, ASOS measures brick's mortar within EPS", "[asos][brick]") {
+    // The same with brick, the mortar's faces (BrickPattern::edgesCrossed)
+    // crossing the pixels at an angle.
+    std::mt19937 rng(23);
+    std::uniform_real_distribution<double> angle(5.0, 40.0), offset(0.0, 8.0);
+    const AsosSettings settings{1.0 / 64.0, 8, false};
+    int pixels = 0, onePixelRays = 0, insideBrick = 0;
+    for (int i = 0; i < 12; ++i) {
+        const double degrees = angle(rng);
+        const Vec2 shift{offset(rng), offset(rng)};
+        Pigment brick;
+        brick.kind = Pigment::Kind::Brick;
+        // Bricks 12 x 6 pixels, joints 1.5 pixels thick.
+        brick.brickSize = {4.0, 2.0, 4.0};
+        brick.mortar = 0.5;
+        brick.worldFromPattern = Transform::translate({shift.x, shift.y, 0.0}) *
+                                 Transform::rotateDegrees({0.0, 0.0, degrees}) * Transform::scale(Vec3(3.0));
+        for (const PatternPixel& p : measurePattern(brick, settings, 3, i)) {
+            ++pixels;
+            if (p.exact == 1.0) {
+                ++insideBrick;
+                onePixelRays += p.rays == 1;
+            }
+        }
+    }
+    // A pixel inside a brick costs one ray but where a joint barely misses
+    // it (the footprint's bounds, a box, may reach the joint).
+    CHECK(insideBrick > pixels / 5);
+    CHECK(onePixelRays > insideBrick / 2);
 }
 
 TEST_CASE("Without pattern edges a pixel on one object costs one ray, as in the paper", "[asos]") {

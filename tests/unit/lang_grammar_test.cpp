@@ -121,7 +121,10 @@ TEST_CASE("modifiers", "[lang][grammar]") {
         {"sphere { 0, 1 pigment { rgb <1,0,0> } }", "sphere { 0, 1 pigment { Red } }",
          "sphere { 0, 1 pigment { checker Red, White scale 2 } }",
          "sphere { 0, 1 pigment { checker color Red color White } }",
-         "sphere { 0, 1 pigment { checker } }",
+         "sphere { 0, 1 pigment { checker } }", "sphere { 0, 1 pigment { brick } }",
+         "sphere { 0, 1 pigment { brick Red, White brick_size <8, 3, 4.5> mortar 0.5 } }",
+         "sphere { 0, 1 pigment { brick color Red color White scale 2 mortar 0.2 brick_size 1 } }",
+         "sphere { 0, 1 pigment { checker mortar 0.2 } }",  // grammatical; the interpreter refuses it
          "sphere { 0, 1 finish { ambient 0.2 diffuse 0.8 phong 1 phong_size 60 } }",
          "sphere { 0, 1 finish { F specular 0.5 roughness 0.01 reflection 0.3 brilliance 2 } }",
          "sphere { 0, 1 finish { ambient rgb <0.1,0.2,0.3> reflection rgb <0.5,0.5,0.5> } }",
@@ -130,5 +133,9 @@ TEST_CASE("modifiers", "[lang][grammar]") {
          "sphere { 0, 1 matrix <1,0,0, 0,1,0, 0,0,1, 0,0,0> }",
          "sphere { 0, 1 rotate <0,45,0> scale <1,2,1> translate -x }"},
         {"sphere { 0, 1 pigment { rgb } }", "sphere { 0, 1 pigment { checker Red, } }",
+         "sphere { 0, 1 pigment { brick Red, } }", "sphere { 0, 1 pigment { brick mortar } }",
+         "sphere { 0, 1 pigment { brick brick_size } }",
+         "sphere { 0, 1 pigment { brick pigment { Red } pigment { White } } }",
+         "sphere { 0, 1 texture { brick texture { T } texture { U } } }",
          "sphere { 0, 1 finish { phong } }",         "sphere { 0, 1 translate }", "sphere { 0, 1 asos { eps } }", "sphere { 0, 1 asos { foo 1 } }"});
 }

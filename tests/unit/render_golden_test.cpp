@@ -69,23 +69,25 @@ void compareWithPovray(const std::string& scene, RenderMethod method, const std:
 // Every scene of tests/golden/povray against POV-Ray's own render of it:
 // camera mappings (tilted perspective, orthographic), the checker pattern, the
 // background and 8-bit encoding (flat_*), the lighting model (lighting), the
-// recursion of reflection (reflection) and the six primitives (primitives).
+// recursion of reflection (reflection), the six primitives (primitives) and
+// the brick pattern (brick).
 TEST_CASE("The renderer matches POV-Ray with one ray per pixel", "[golden][povray]") {
-    for (const char* scene : {"flat_perspective", "flat_orthographic", "lighting", "reflection", "primitives"})
+    for (const char* scene :
+         {"flat_perspective", "flat_orthographic", "lighting", "reflection", "primitives", "brick"})
         compareWithPovray(scene, RenderMethod::Single, "", "-A");
 }
 
 // POV-Ray's defaults: threshold 0.3, depth +R3 (two subdivisions); -J turns
 // its jitter off so that the sample positions coincide.
 TEST_CASE("The adaptive method matches POV-Ray's +AM2", "[golden][povray]") {
-    for (const char* scene : {"flat_perspective", "lighting", "primitives"})
+    for (const char* scene : {"flat_perspective", "lighting", "primitives", "brick"})
         compareWithPovray(scene, RenderMethod::Adaptive, "_am2", "+A0.3 +AM2 +R3 -J");
 }
 
 // POV-Ray's default method with its default threshold and depth, over its
 // default 32-pixel render blocks (+BS32), whose borders the method sees.
 TEST_CASE("The am1 method matches POV-Ray's +AM1", "[golden][povray]") {
-    for (const char* scene : {"flat_perspective", "lighting", "primitives"})
+    for (const char* scene : {"flat_perspective", "lighting", "primitives", "brick"})
         compareWithPovray(scene, RenderMethod::Am1, "_am1", "+A0.3 +AM1 +R3 -J");
 }
 

@@ -19,10 +19,12 @@ bool hasPattern(const Pigment& pigment);
 // (color2); 0 for a solid pigment. Agrees with evaluatePigment.
 int pigmentIndex(const Pigment& pigment, const Vec3& worldPoint);
 
-// Whether the pattern may change inside the footprint: for a checker, when
-// the pattern-space bounds of the footprint's corners straddle a cell
-// boundary on some axis (the footprint is a planar quadrilateral, so its
-// pattern-space image, an affine image, lies within those bounds). Always
+// Whether the pattern may change inside the footprint: when the
+// pattern-space bounds of the footprint's corners straddle one of the
+// pattern's edge planes (the footprint is a planar quadrilateral, so its
+// pattern-space image, an affine image, lies within those bounds): for a
+// checker a cell boundary on some axis, for brick a face of the mortar
+// (BrickPattern::edgesCrossed). Always
 // so for a footprint that is not on the tangent plane (a grazing view,
 // where the pixel covers an unknown stretch of the surface). `singleEdge`:
 // only one boundary plane is straddled, which meets the footprint's plane in

@@ -1,6 +1,6 @@
 #pragma once
 // POV-Ray 3.7's local lighting model for what the scene language accepts:
-// pigment (solid, checker), ambient x ambient_light, diffuse with brilliance,
+// pigment (solid, checker, brick), ambient x ambient_light, diffuse with brilliance,
 // phong + phong_size, specular + roughness, reflection traced recursively up
 // to max_trace_level (with POV-Ray's adc_bailout), light fade, shadowless
 // lights. The formulas and their sources are in docs/rendering.md; each was
@@ -84,7 +84,7 @@ struct ShadeRequest {
 
 // The pigment's colour at a world point. Checker: POV-Ray 3.7's rule in
 // pattern space, the parity of floor(x + e) + floor(y + e) + floor(z + e) with
-// e = 1e-10 (odd: color2).
+// e = 1e-10 (odd: color2). Brick: BrickPattern (brick: color2).
 Color evaluatePigment(const Pigment& pigment, const Vec3& worldPoint);
 // 0 or 1 at a pattern-space point, as POV-Ray's checker pattern.
 int checkerValue(const Vec3& patternPoint);

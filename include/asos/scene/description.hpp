@@ -91,11 +91,14 @@ using Shape = std::variant<SphereShape, BoxShape, ConeShape, CylinderShape, Disc
                            PolygonShape, PlaneShape>;
 
 struct Pigment {
-    enum class Kind { Solid, Checker };
+    enum class Kind { Solid, Checker, Brick };
     Kind kind = Kind::Solid;
-    Color color1{};                       // the solid colour, or checker's first
-    Color color2{};                       // checker's second
+    Color color1{};                       // the solid colour, or the pattern's first (brick: the mortar)
+    Color color2{};                       // the pattern's second (brick: the brick)
+    Vec3 brickSize{8.0, 3.0, 4.5};        // brick's brick_size and mortar, as written
+    double mortar = 0.5;
     Transform worldFromPattern;           // full transform of the pattern space
+    bool operator==(const Pigment&) const = default;
 };
 
 struct Finish {
