@@ -30,7 +30,7 @@ PatternChange pigmentMayChange(const Pigment& pigment, const Footprint& footprin
         lo = glm::min(lo, p);
         hi = glm::max(hi, p);
     }
-    // The checker's cells as checkerValue floors them (x + 1e-10).
+    // The checker's cells as checkerValue floors them (x + kPovEpsilon).
     double crossings = 0.0;
     for (int axis = 0; axis < 3; ++axis)
         crossings += std::floor(hi[axis] + kPovEpsilon) - std::floor(lo[axis] + kPovEpsilon);
