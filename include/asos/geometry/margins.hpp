@@ -32,7 +32,7 @@ inline constexpr double kFewUlps = 1e-15;
 // a quadratic form, a bound summed from a dozen rounded terms).
 inline constexpr double kTensOfUlps = 1e-14;
 // Hundreds of ulps (1e-13): up to nine hundred (a discriminant from rounded
-// coefficients, an angle computed through atan and a division).
+// coefficients, a quadratic's coefficients summed over a box's corners).
 inline constexpr double kHundredsOfUlps = 1e-13;
 // Thousands of ulps (1e-12): the general pad of a computed bound. Any closed
 // form here is a few dozen operations (roundingGamma(50) = 5.6e-15), so
