@@ -11,6 +11,7 @@
 #include <tbb/parallel_invoke.h>
 
 #include "asos/accel/bvh.hpp"
+#include "asos/geometry/margins.hpp"
 
 namespace asos {
 
@@ -121,7 +122,7 @@ private:
             const Split split = findSplit(begin, count, centres);
             const double leafCost = static_cast<double>(count);
             const double splitCost =
-                options_.traversalCost + split.cost / std::max(box.area(), 1e-300);
+                options_.traversalCost + split.cost / std::max(box.area(), kPositiveFloor);
             if (count <= maxLeaf && (!split.found || leafCost <= splitCost)) {
                 return makeLeaf(first, count, box);
             }
@@ -184,6 +185,8 @@ private:
     int binsFor(std::uint32_t count) const {
         return static_cast<int>(std::min<std::uint32_t>(options_.binCount, std::max(4u, count)));
     }
+    // Shrunk by a millionth so that the highest centre maps inside the last
+    // bin (binOf clamps as well).
     static float binScale(const FloatBox& centres, int axis, int bins) {
         const float extent = centres.hi[axis] - centres.lo[axis];
         return extent > 0.0f ? static_cast<float>(bins) * (1.0f - 1e-6f) / extent : 0.0f;

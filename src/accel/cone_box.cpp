@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "asos/geometry/margins.hpp"
+
 // Why this test never rejects a box that the cone touches.
 //
 // Let K be the cone's solid: {a + t u : |u| = 1, angle(u, w) <= θ, tMin <= t <= tMax},
@@ -43,10 +45,10 @@ constexpr double kSlackRelative = 1e-9;
 // Angles that decide a sign of an infinite extent (a ray direction whose
 // component is +1e-17 still reaches +inf) are widened by this much, far above
 // the rounding of atan2 and cos.
-constexpr double kAngleSlack = 1e-12;
+constexpr double kAngleSlack = kThousandsOfUlps;
 // The cosines of widened angles, computed by angle-sum formulas, are moved
 // outward by this much, far above their rounding (a few 1e-16).
-constexpr double kValueSlack = 1e-15;
+constexpr double kValueSlack = kFewUlps;
 
 // t * u over the cone's distances, where t may be infinite and u zero.
 double extremeProduct(double t, double u) { return u == 0.0 ? 0.0 : t * u; }
@@ -155,7 +157,7 @@ double ConeBoxTest::entryDistance(const Bounds3& box) const {
     const double tScale = std::isfinite(cone_.tMax) ? cone_.tMax : cone_.tMin;
     const double slack =
         kSlackRelative * (apexScale_ + std::max(maxNorm(box.lo), maxNorm(box.hi)) + tScale) +
-        1e-300;
+        kPositiveFloor;
 
     // 1. The cone's axis-aligned bounds.
     for (int i = 0; i < 3; ++i) {

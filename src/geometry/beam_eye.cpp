@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "asos/geometry/margins.hpp"
+
 namespace asos {
 
 namespace {
@@ -60,12 +62,12 @@ EyePyray::EyePyray(const ImageSquare& square, int level, const Ray& central,
     // apex lies in [A, A / cos(halfAngle)], which the t-range covers.
     const double depth = (tMax - tMin) + (sMax - sMin);
     double standoff = std::isfinite(depth) ? kStandoffPerDepth * depth : kUnboundedStandoffPerRadius * rho;
-    standoff = std::max({standoff, kUnboundedStandoffPerRadius * rho, 1e-300});
+    standoff = std::max({standoff, kUnboundedStandoffPerRadius * rho, kPositiveFloor});
     const double halfAngle = std::atan2(rho, standoff) + kConeAnglePad;
     const Vec3 apex = central.origin + (sMin + tMin - standoff) * axis;
     const double farAxial = standoff + (sMax - sMin) + (tMax - tMin);
-    const double far = std::isfinite(farAxial) ? farAxial / std::cos(halfAngle) * (1.0 + 1e-12) : kInfinity;
-    cone_ = {apex, axis, halfAngle, standoff * (1.0 - 1e-12), far};
+    const double far = std::isfinite(farAxial) ? padUp(farAxial / std::cos(halfAngle)) : kInfinity;
+    cone_ = {apex, axis, halfAngle, padDown(standoff), far};
 }
 
 }  // namespace asos

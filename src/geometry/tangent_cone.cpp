@@ -1,5 +1,7 @@
 #include "asos/geometry/tangent_cone.hpp"
 
+#include "asos/geometry/margins.hpp"
+
 namespace asos {
 
 TangentCone TangentCone::make(const Vec3& point, const Vec3& centre, double radius) {
@@ -19,7 +21,7 @@ double TangentCone::distanceAtRadius(double r, double widen) const {
     const double cosPsi = 1.0 / std::sqrt(1.0 + tanPsi * tanPsi);
     const double sinPsi = tanPsi * cosPsi;
     const double inside =
-        radius * radius - distance * distance * sinPsi * sinPsi - widen * 1e-14 * distance * distance;
+        radius * radius - distance * distance * sinPsi * sinPsi - widen * kTensOfUlps * distance * distance;
     return distance * cosPsi - std::sqrt(std::max(0.0, inside));
 }
 

@@ -106,7 +106,7 @@ int Interpreter::evalInt(const Node& n, int min) {
     return static_cast<int>(v);  // POV-Ray truncates
 }
 
-bool Interpreter::evalBool(const Node& n) { return std::abs(evalFloat(n)) > kEpsilon; }
+bool Interpreter::evalBool(const Node& n) { return std::abs(evalFloat(n)) > kPovEpsilon; }
 
 Vec3 Interpreter::evalVector(const Node& n) {
     const Num v = evalNum(n);
@@ -207,10 +207,10 @@ Value Interpreter::eval(const Node& n) {
             bool r = false;
             switch (op) {
             case Word::OpLess: r = a < b; break;
-            case Word::OpLessEqual: r = a < b || std::abs(a - b) < kEpsilon; break;
-            case Word::OpEqual: r = std::abs(a - b) < kEpsilon; break;
-            case Word::OpNotEqual: r = !(std::abs(a - b) < kEpsilon); break;
-            case Word::OpGreaterEqual: r = a > b || std::abs(a - b) < kEpsilon; break;
+            case Word::OpLessEqual: r = a < b || std::abs(a - b) < kPovEpsilon; break;
+            case Word::OpEqual: r = std::abs(a - b) < kPovEpsilon; break;
+            case Word::OpNotEqual: r = !(std::abs(a - b) < kPovEpsilon); break;
+            case Word::OpGreaterEqual: r = a > b || std::abs(a - b) < kPovEpsilon; break;
             default: r = a > b; break;
             }
             return Num::scalar(r ? 1.0 : 0.0);

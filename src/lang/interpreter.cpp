@@ -173,7 +173,7 @@ void Interpreter::runSequence(const Node& seq, EntryHandler handle) {
 }
 
 bool Interpreter::truth(const Node& condition) {
-    return std::abs(evalFloat(condition)) > kEpsilon;
+    return std::abs(evalFloat(condition)) > kPovEpsilon;
 }
 
 void Interpreter::countIteration(const Node& at) {
@@ -256,7 +256,7 @@ void Interpreter::runDirective(const Node& n, EntryHandler handle) {
         return;
     case NodeKind::Version: {
         const double v = evalFloat(n[0]);
-        if (v > 3.7 + kEpsilon)
+        if (v > 3.7 + kPovEpsilon)
             fail(n[0], "#version " + formatNumber(v) + " is newer than POV-Ray 3.7, which asos follows");
         if (v < 1.0) fail(n[0], "#version " + formatNumber(v) + " is not a POV-Ray version");
         version_ = v;

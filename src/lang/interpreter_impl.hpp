@@ -14,13 +14,10 @@
 #include "asos/diag/format_number.hpp"
 #include "asos/lang/ast.hpp"
 #include "asos/lang/interpreter.hpp"
+#include "asos/scene/pov_tolerances.hpp"  // kPovEpsilon: how the language compares
 #include "asos/util/function_ref.hpp"
 
 namespace asos::lang {
-
-// POV-Ray's EPSILON: = != <= >= compare within it, and a condition is true
-// when its absolute value exceeds it.
-inline constexpr double kEpsilon = 1e-10;
 
 // A float (dim 1), a 2- to 5-component vector, or a colour (always five
 // components: red, green, blue, filter, transmit).

@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <limits>
 
+#include "asos/geometry/margins.hpp"
+
 namespace asos {
 
 PieceCone BeamApex::coneAbout(const Vec3& axis, const Vec3* directions, int count, double farthest) const {
@@ -25,7 +27,7 @@ PieceCone BeamApex::coneAbout(const Vec3& axis, const Vec3* directions, int coun
     // about it: the cone of all directions holds it.
     const double widest = std::sqrt(widest2);
     const double halfAngle = hemisphere ? std::atan(widest) + kConeAnglePad : kPi;
-    return {{point, axis, halfAngle, tMin, farthest * (1.0 + 1e-12)},
+    return {{point, axis, halfAngle, tMin, padUp(farthest)},
             hemisphere ? widest : std::numeric_limits<double>::quiet_NaN()};
 }
 

@@ -2,12 +2,11 @@
 
 #include <cmath>
 
+#include "asos/scene/pov_tolerances.hpp"
+
 namespace asos {
 
 namespace {
-
-// POV-Ray's EPSILON, used by its parser to call two axis lengths equal.
-constexpr double kAxisLengthTolerance = 1e-10;
 
 bool active(const Vec3& axis, int count) { return count > 1 && glm::length(axis) > 0.0; }
 
@@ -74,7 +73,7 @@ bool checkLight(const Light& light, Diagnostics& diagnostics) {
                                 "orient is used with circular area lights only (as in POV-Ray): this "
                                 "area light is circular, a spherical light");
         const double l1 = glm::length(a.axis1), l2 = glm::length(a.axis2);
-        if (std::abs(l1 - l2) > kAxisLengthTolerance)
+        if (std::abs(l1 - l2) > kPovEpsilon)  // as POV-Ray's parser calls them equal
             diagnostics.warning(light.loc,
                                 "with orient the two axes of an area light should be of equal "
                                 "length: the first axis's length is the sphere's diameter");

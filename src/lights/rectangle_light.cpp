@@ -28,8 +28,10 @@ std::optional<RectangleLight::Beam> RectangleLight::beamFrom(const Vec3& apex, d
     b.height_ = std::abs(glm::dot(rel, b.normal_));
     // Below rounding, the apex is in the plane (as RectShadowPyray decides).
     const double scale = glm::length(edgeA) + glm::length(edgeB) + glm::length(rel);
-    if (!(b.height_ > 1e-12 * scale)) return std::nullopt;
-    b.rectangular_ = std::abs(glm::dot(edgeA, edgeB)) <= 1e-12 * glm::length(edgeA) * glm::length(edgeB);
+    if (!(b.height_ > kThousandsOfUlps * scale)) return std::nullopt;
+    // Rectangular to rounding.
+    b.rectangular_ =
+        std::abs(glm::dot(edgeA, edgeB)) <= kThousandsOfUlps * glm::length(edgeA) * glm::length(edgeB);
     b.footS_ = glm::dot(rel, edgeA) / glm::dot(edgeA, edgeA);
     b.footT_ = glm::dot(rel, edgeB) / glm::dot(edgeB, edgeB);
     return b;
@@ -88,7 +90,7 @@ BeamRay RectangleLight::Beam::sample(const LightPiece& p, const Vec2& xi) const 
 double RectangleLight::Beam::nearestLightDistance(const LightPiece& p) const {
     if (!rectangular_) return height_;
     const Vec3 nearest = point(std::clamp(footS_, p.a0, p.a1), std::clamp(footT_, p.b0, p.b1));
-    return std::max(height_, glm::length(nearest - apex_.point) * (1.0 - 1e-12));
+    return std::max(height_, padDown(glm::length(nearest - apex_.point)));
 }
 
 int RectangleLight::Beam::probeRays(const LightPiece& p, BeamRay* out) const {

@@ -23,7 +23,8 @@ std::optional<SegmentLight::Beam> SegmentLight::beamFrom(const Vec3& apex, doubl
     if (!(edge > 0.0)) return std::nullopt;
     const double f = std::clamp(glm::dot(apex - start, b.edgeA_) / (edge * edge), 0.0, 1.0);
     const double offLine = glm::length(apex - (start + f * b.edgeA_));
-    if (!(offLine > 1e-12 * (edge + glm::length(apex - start)))) return std::nullopt;
+    // On the line to rounding: no beam.
+    if (!(offLine > kThousandsOfUlps * (edge + glm::length(apex - start)))) return std::nullopt;
     b.footS_ = glm::dot(apex - start, b.edgeA_) / (edge * edge);
     return b;
 }
@@ -43,7 +44,7 @@ LightPiece SegmentLight::Beam::make(double a0, double a1, int level, std::uint64
     const double sumLength = glm::length(sum);
     p.tanHalf = glm::length(u - v) / sumLength;
     p.cone = {apex_.point, sum / sumLength, std::atan(p.tanHalf) + kConeAnglePad, apex_.tMin,
-              std::max(l0, l1) * (1.0 + 1e-12)};
+              padUp(std::max(l0, l1))};
     return p;
 }
 

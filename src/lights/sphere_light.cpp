@@ -7,7 +7,7 @@ namespace {
 // Whether `point` lies outside the sphere, past rounding: only then does it
 // see a tangent cone.
 bool outside(const SphereLight& light, const Vec3& point) {
-    return light.radius > 0.0 && glm::length(light.centre - point) > light.radius * (1.0 + 1e-12);
+    return light.radius > 0.0 && glm::length(light.centre - point) > padUp(light.radius);
 }
 
 }  // namespace
@@ -38,7 +38,7 @@ LightPiece SphereLight::Beam::root() const {
     LightPiece p{0.0, 0.0, 1.0, 1.0, 0, 0, {}, {}};
     p.central = tangent_.ray(apex_.point, 0.0, 0.0, 0.0, 1.0);
     p.cone = {apex_.point, tangent_.frame.w, alpha_ + kConeAnglePad, apex_.tMin,
-              tangent_.distanceAtRadius(1.0, 1.0) * (1.0 + 1e-12)};
+              padUp(tangent_.distanceAtRadius(1.0, 1.0))};
     return p;
 }
 

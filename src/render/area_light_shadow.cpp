@@ -6,6 +6,7 @@
 
 #include "asos/geometry/beam.hpp"
 #include "asos/geometry/frame.hpp"
+#include "asos/geometry/margins.hpp"
 #include "asos/render/convex_lattice.hpp"
 #include "asos/shapes/local_cone.hpp"
 
@@ -35,13 +36,13 @@ struct Origin {
     double nearestSurface(const Cone& cone) const {
         if (!behind) return 0.0;
         const double psi = angleBetween(normal, cone.axis);
-        return depth / std::cos(std::max(0.0, psi - cone.halfAngle)) * (1.0 - 1e-12);
+        return padDown(depth / std::cos(std::max(0.0, psi - cone.halfAngle)));
     }
     double farthestSurface(const Cone& cone) const {
         if (!behind) return 0.0;
         const double widest = angleBetween(normal, cone.axis) + cone.halfAngle;
         if (!(widest < 0.5 * kPi)) return kInfinity;
-        return depth / std::cos(widest) * (1.0 + 1e-12);
+        return padUp(depth / std::cos(widest));
     }
     // The first distance at which a ray may meet an occluder.
     double rayStart(const Vec3& dir) const {
@@ -53,9 +54,10 @@ struct Origin {
 // nothing through it can light the point.
 bool belowHorizon(const Vec3& normal, const LightPiece& piece) {
     if (piece.tanHalf >= 0.0) {
-        // angle(normal, axis) >= pi/2 + halfAngle, i.e. cos <= -sin(halfAngle).
+        // angle(normal, axis) >= pi/2 + halfAngle, i.e. cos <= -sin(halfAngle),
+        // past the rounding of both (thousands of ulps of 1).
         const double t = piece.tanHalf;
-        return glm::dot(normal, piece.cone.axis) < -t / std::sqrt(1.0 + t * t) - 1e-12;
+        return glm::dot(normal, piece.cone.axis) < -t / std::sqrt(1.0 + t * t) - kThousandsOfUlps;
     }
     return angleBetween(normal, piece.cone.axis) - piece.cone.halfAngle >= 0.5 * kPi;
 }
@@ -67,6 +69,7 @@ bool belowHorizon(const Vec3& normal, const LightPiece& piece) {
 int pyramidAbout(const Cone& cone, Vec3* out) {
     if (!(cone.halfAngle < 0.45 * kPi)) return 0;
     const Mat3 frame = frameAroundAxis(cone.axis);
+    // Widened by 1e-9 of itself, far above the rounding of tan and the frame.
     const double t = std::tan(cone.halfAngle) * (1.0 + 1e-9);
     for (int k = 0; k < 4; ++k)
         out[k] = cone.axis + t * ((k & 1 ? 1.0 : -1.0) * frame[0] + (k & 2 ? 1.0 : -1.0) * frame[1]);

@@ -4,6 +4,8 @@
 #include <stdexcept>
 #include <string>
 
+#include "asos/geometry/margins.hpp"
+
 namespace asos {
 
 CameraModel::CameraModel(const Camera& camera, int width, int height)
@@ -22,7 +24,7 @@ CameraModel::CameraModel(const Camera& camera, int width, int height)
     // lengths is the sine-like volume of the three unit vectors.
     const double lengths = glm::length(right_) * glm::length(up_) * glm::length(direction_);
     const double det = glm::determinant(basis);
-    if (!(lengths > 0.0) || !std::isfinite(det) || std::abs(det) <= 1e-12 * lengths)
+    if (!(lengths > 0.0) || !std::isfinite(det) || std::abs(det) <= kThousandsOfUlps * lengths)
         throw std::invalid_argument(
             "camera direction, right and up vectors do not span space (one is zero or "
             "they are coplanar)");

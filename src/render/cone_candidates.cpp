@@ -3,6 +3,7 @@
 #include <cmath>
 
 #include "asos/geometry/beam.hpp"
+#include "asos/geometry/margins.hpp"
 
 namespace asos {
 
@@ -10,6 +11,10 @@ namespace {
 // Wider cones than this are not remembered: their lists would be long and
 // their containment tests loose.
 constexpr double kWidestRemembered = 0.25 * kPi;
+
+// An angle widened as PreparedCone widens every half-angle (kConeAngleMargin
+// radians plus that fraction of the angle), written a (1 + m) + m.
+double widened(double angle) { return angle * (1.0 + kConeAngleMargin) + kConeAngleMargin; }
 }  // namespace
 
 bool ConeCandidateCache::holds(const Cone& cone) const {
@@ -19,11 +24,12 @@ bool ConeCandidateCache::holds(const Cone& cone) const {
     // axis; the margin covers rounding here and the classifiers' own
     // widening of cones (kConeAngleMargin).
     const double reach = angleBetween(cone.axis, wide_.axis) + cone.halfAngle;
-    return reach * (1.0 + 1e-9) + 1e-9 <= wide_.halfAngle;
+    return widened(reach) <= wide_.halfAngle;
 }
 
 void ConeCandidateCache::remember(const Scene& scene, const Cone& cone) {
     valid_ = false;
+    // Plus more than `widened` adds, so that a ray's cone is held by its own.
     const double halfAngle = cone.halfAngle * widen_ + 1e-8;
     if (!(halfAngle < kWidestRemembered) || !std::isfinite(cone.tMin)) return;
     wide_ = cone;
@@ -39,11 +45,13 @@ bool BeamCandidateCache::sphereMayMeet(const PreparedCone& cone, const Vec3& cen
     // In the plane of the axis and the centre, the cone's lateral boundary is
     // the ray at the half-angle; the centre's distance from the solid is its
     // distance from that ray (or from the apex, behind it). A margin covers
-    // rounding, relative to the distances involved.
+    // rounding, relative to the distances involved (as the classifiers'
+    // distance tolerance is).
     const Vec3 v = center - cone.apex;
     const double d2 = glm::dot(v, v);
     const double d = std::sqrt(d2);
-    const double margin = radius * (1.0 + 1e-9) + 1e-9 * (d + l1Norm(cone.apex) + radius);
+    const double margin =
+        radius * (1.0 + kConeDistanceTolerance) + kConeDistanceTolerance * (d + l1Norm(cone.apex) + radius);
     if (d - margin > cone.tMax) return false;
     if (d + margin < cone.tMin) return false;
     if (!(cone.cosHalf > 0.0)) return true;  // a half-angle of a right angle or more
@@ -88,7 +96,7 @@ void BeamCandidateCache::remember(const Scene& scene, const Cone& cone) {
     cos_ = std::cos(halfAngle);
     sin_ = std::sin(halfAngle);
     // The BVH is asked for a slightly larger cone than the one `holds` tests.
-    const Cone wide{apex_, axis_, halfAngle * (1.0 + 1e-9) + 1e-9, 0.0, reach_ * (1.0 + 1e-9)};
+    const Cone wide{apex_, axis_, widened(halfAngle), 0.0, reach_ * (1.0 + kConeDistanceTolerance)};
     entries_.clear();
     bool tooMany = false;
     scene.coneCandidates(wide, [&](std::uint32_t object) {

@@ -18,7 +18,7 @@ double edgesCrossed(const Pigment& pigment, const Vec3& lo, const Vec3& hi) {
     switch (pigment.kind) {
         case Pigment::Kind::Solid: return 0.0;
         case Pigment::Kind::Checker: {
-            // The checker's cells as checkerValue floors them (x + 1e-10).
+            // The checker's cells as checkerValue floors them (x + kPovEpsilon).
             double crossings = 0.0;
             for (int axis = 0; axis < 3; ++axis)
                 crossings += std::floor(hi[axis] + kPovEpsilon) - std::floor(lo[axis] + kPovEpsilon);

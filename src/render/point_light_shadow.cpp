@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "asos/geometry/beam.hpp"
+#include "asos/geometry/margins.hpp"
 #include "asos/render/shading.hpp"
 #include "asos/shapes/local_cone.hpp"
 
@@ -63,7 +64,7 @@ ShadowPyray makeShadowPyray(const Vec3& light, const Footprint& footprint,
     }
     if (!(halfAngle < kWidestShadowCone) || !(p.nearestFootprint > 2.0 * kPovShadowTolerance))
         return p;
-    p.cone = {light, axis, halfAngle + kConeAnglePad, kPovShadowTolerance, farthest * (1.0 + 1e-12)};
+    p.cone = {light, axis, halfAngle + kConeAnglePad, kPovShadowTolerance, padUp(farthest)};
     p.valid = true;
     return p;
 }

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "asos/geometry/margins.hpp"
 #include "asos/shapes/cone_geometry.hpp"
 
 namespace asos {
@@ -137,7 +138,7 @@ ConeClass Box::classifyWith(const LocalCone& cone, SetRange&& setRange, Finish&&
     const double c = cone.cosHalf, s = cone.sinHalf;
     // Positional tolerance: within it the apex counts as on the surface.
     const double tol =
-        1e-14 * ((std::abs(p.x) + std::abs(p.y) + std::abs(p.z)) + cornerAbsSum_) + cone.absTol;
+        kTensOfUlps * ((std::abs(p.x) + std::abs(p.y) + std::abs(p.z)) + cornerAbsSum_) + cone.absTol;
     bool outside = false, inside = true;
     double far2 = 0.0;
     for (int i = 0; i < 3; ++i) {
@@ -196,7 +197,7 @@ ConeClass Box::classifyWith(const LocalCone& cone, SetRange&& setRange, Finish&&
             const double kk = c * c - g2;
             const bool above = pa[e] > hia[e];
             const double face = (above ? hia : loa)[e];
-            if ((kk > 1e-6) & (above | (pa[e] < loa[e]))) {
+            if ((kk > kFootprintMinK) & (above | (pa[e] < loa[e]))) {
                 // The footprint ellipse lies within `radius` of the axis'
                 // entry point (see Polygon::classify).
                 const double depth = std::abs(face - pa[e]);
@@ -204,7 +205,7 @@ ConeClass Box::classifyWith(const LocalCone& cone, SetRange&& setRange, Finish&&
                 const auto [tNear, tFar] = planeDepthsWithG(depth, an, g2, g, c, s);
                 // Both sides times kk an > 0: no division.
                 const double scale = kk * an;
-                const double reach = depth * s * (c * an + g * s) * (1.0 + 1e-12) + tol * scale;
+                const double reach = padUp(depth * s * (c * an + g * s)) + tol * scale;
                 const double qj = pa[j] + enter * aa[j], qk = pa[k] + enter * aa[k];
                 if (((qj - loa[j]) * scale > reach) & ((hia[j] - qj) * scale > reach) &
                     ((qk - loa[k]) * scale > reach) & ((hia[k] - qk) * scale > reach)) {
@@ -268,7 +269,7 @@ ConeClass Box::classifyOutside(const LocalCone& cone) const {
     // within `reach` of its axis line: an edge farther from that line is
     // out of it, which is cheaper to see than the exact test.
     const Vec3& a = cone.axis;
-    const double reach = dFar * cone.sinHalf * (1.0 + 1e-12) + 2.0 * cone.absTol + 1e-12 * dFar;
+    const double reach = padUp(dFar * cone.sinHalf) + 2.0 * cone.absTol + kThousandsOfUlps * dFar;
     // The edges are along the box's axes, so their squared distance to the
     // axis line is a quadratic in the place along the edge, with
     // coefficients from per-axis sums: each corner's depth along the axis
@@ -293,7 +294,7 @@ ConeClass Box::classifyOutside(const LocalCone& cone) const {
         lead[i] = len[i] * len[i] * std::max(0.0, 1.0 - aa[i] * aa[i]);
         len2Sum += len[i] * len[i];
     }
-    const double slack = 1e-13 * (dFar * dFar + len2Sum);
+    const double slack = kHundredsOfUlps * (dFar * dFar + len2Sum);
     const double reach2 = cone.cosHalf > 0.0 ? reach * reach + slack : kInfinity;
     auto farFromAxis = [&](int c0, int c1) {
         // c1 is c0 with bit k set: the edge runs from c0 along +k.

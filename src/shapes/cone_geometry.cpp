@@ -2,6 +2,8 @@
 
 #include <algorithm>
 
+#include "asos/geometry/margins.hpp"
+
 namespace asos::conegeom {
 
 namespace {
@@ -22,7 +24,8 @@ EllipseRoot newtonEllipse(double a, double b, double y0, double y1, double t) {
         const double df = -2.0 * (u * u / (t + a2) + v * v / (t + b2));
         if (f == 0.0 || df == 0.0) return {t, true};
         const double next = t - f / df;
-        if (!(std::abs(next - t) > 1e-15 * (std::abs(t) + b2))) return {next, true};
+        // Converged once a step is lost in the rounding of t + b^2.
+        if (!(std::abs(next - t) > kFewUlps * (std::abs(t) + b2))) return {next, true};
         t = next;
     }
     return {t, false};
@@ -64,7 +67,7 @@ DiscRelation footprintVsDisc(const Footprint& f, const Vec2& center, double rho,
     const double q1 = std::abs(glm::dot(d, f.major));
     const double q2 = std::abs(d.y * f.major.x - d.x * f.major.y);
     const double qq = q1 * q1 + q2 * q2;
-    const double tol = 1e-12 * (std::sqrt(qq) + a + rho) + absTol;
+    const double tol = kThousandsOfUlps * (std::sqrt(qq) + a + rho) + absTol;
     const double support = std::sqrt(a * a * q1 * q1 + b * b * q2 * q2);
     // |y - q|^2 <= |q|^2 + 2 S + a^2 over the ellipse (S its support along q).
     const double maxBound = std::sqrt(qq + 2.0 * support + a * a);
@@ -109,7 +112,7 @@ bool circleMayMeetCone(const LocalCone& cone, double zc, double rho, const Arc& 
     if (std::isfinite(arc.kappa)) {
         // The ellipse lies wholly on the side of the line away from the arc.
         const double low = glm::dot(arc.nu, f.center) - footprintSupport(f, arc.nu);
-        if (low > arc.kappa + 1e-12 * (std::abs(arc.kappa) + rho + f.a) + cone.absTol) return false;
+        if (low > arc.kappa + kThousandsOfUlps * (std::abs(arc.kappa) + rho + f.a) + cone.absTol) return false;
     }
     return true;
 }

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "asos/geometry/margins.hpp"
 #include "asos/shapes/cone_geometry.hpp"
 
 namespace asos {
@@ -42,7 +43,7 @@ Stretched stretch(const Footprint& f, double dx, double dy) {
     out.f.major = len > 0.0 ? major / len : Vec2(1.0, 0.0);
     out.f.a = std::sqrt(l1);
     out.f.b = std::sqrt(l2);
-    out.pad = 1e-7 * out.f.a;
+    out.pad = 1e-7 * out.f.a;  // the root of a few ulps (sqrt(kFewUlps) = 3.2e-8), tripled
     return out;
 }
 
@@ -50,8 +51,9 @@ Stretched stretch(const Footprint& f, double dx, double dy) {
 
 EllipticDisc::EllipticDisc(double ax, double ay, double holeRatio)
     : ax_(ax), ay_(ay), dx_(1.0 / ax), dy_(1.0 / ay), hole_(holeRatio), reach_(std::max(ax, ay)) {
-    dMax_ = std::max(dx_, dy_) * (1.0 + 1e-15);
-    dMin_ = std::min(dx_, dy_) * (1.0 - 1e-15);
+    // Bounds on the stretch, past the rounding of its one division.
+    dMax_ = std::max(dx_, dy_) * (1.0 + kFewUlps);
+    dMin_ = std::min(dx_, dy_) * (1.0 - kFewUlps);
 }
 
 Bounds3 EllipticDisc::worldBounds(const Mat3& m, const Vec3& offset) const {
@@ -112,7 +114,8 @@ std::optional<ConeClass> EllipticDisc::bandClass(const LocalCone& cone, double d
     const double acrossD = std::sqrt(std::max(0.0, glm::dot(across, apply(across))));  // S' d
     const double support = sd / d, side = acrossD / d;
     const Vec2 nearPoint = m - mm / support / d;
-    // Rounding: the centre's and the supports' few ulps, generously.
+    // Rounding: the centre's and the supports' few ulps, generously (1e-10,
+    // 10^5 times kFewUlps).
     const double tol = cone.absTol * dMax_ + 1e-10 * (d + support + side);
     const double low = d - support, high = d + support;
     const double reach2 = high * high + side * side;

@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "asos/geometry/frame.hpp"
+#include "asos/geometry/margins.hpp"
 #include "asos/shapes/cone_geometry.hpp"
 #include "asos/shapes/local_frame.hpp"
 
@@ -225,7 +226,7 @@ ConeClass Frustum::classify(const LocalCone& cone) const {
     // Every point of the object is within dFar: the farthest point is on a rim.
     const double far2 = std::max(sq(rho + r0_) + sq(p.z), sq(rho + r1_) + sq(p.z - length_));
     const double tol =
-        1e-14 * (std::abs(p.x) + std::abs(p.y) + std::abs(p.z) + ball_.radius + ball_.center.z) +
+        kTensOfUlps * (std::abs(p.x) + std::abs(p.y) + std::abs(p.z) + ball_.radius + ball_.center.z) +
         cone.absTol;
     const double rp = radiusAt(p.z);
     const double sideGap = (rho - rp) * invSlant_;
@@ -406,7 +407,7 @@ std::optional<FrustumAxis> frustumAxis(const Vec3& base, const Vec3& cap) {
     const double length = glm::length(axis);
     const double scale = std::abs(base.x) + std::abs(base.y) + std::abs(base.z) + std::abs(cap.x) +
                          std::abs(cap.y) + std::abs(cap.z);
-    if (!(length > 1e-12 * scale) || length == 0.0) return std::nullopt;
+    if (!(length > kThousandsOfUlps * scale) || length == 0.0) return std::nullopt;  // zero to rounding
     return FrustumAxis{frameAroundAxis(axis / length), length};
 }
 

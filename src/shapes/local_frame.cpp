@@ -5,6 +5,7 @@
 #include <stdexcept>
 
 #include "asos/geometry/frame.hpp"
+#include "asos/geometry/margins.hpp"
 
 namespace asos {
 
@@ -22,7 +23,8 @@ Vec3 symmetricEigenvalues(Mat3 a) {
     for (int sweep = 0; sweep < 50; ++sweep) {
         const double off = a[0][1] * a[0][1] + a[0][2] * a[0][2] + a[1][2] * a[1][2];
         const double diag = a[0][0] * a[0][0] + a[1][1] * a[1][1] + a[2][2] * a[2][2];
-        if (off <= 1e-30 * diag) break;
+        // Converged once the off-diagonal is a few ulps of the diagonal (squared).
+        if (off <= kFewUlps * kFewUlps * diag) break;
         for (int p = 0; p < 2; ++p) {
             for (int q = p + 1; q < 3; ++q) {
                 if (a[p][q] == 0.0) continue;
@@ -62,7 +64,7 @@ LocalFrame LocalFrame::make(const Transform& worldFromObject, const Mat3& object
     if (!finite(w) || !std::isfinite(f.worldOffset.x + f.worldOffset.y + f.worldOffset.z))
         throw std::invalid_argument("the object's transform is not finite");
     const double colNorms = glm::length(w[0]) * glm::length(w[1]) * glm::length(w[2]);
-    if (!(std::abs(glm::determinant(w)) > 1e-12 * colNorms))
+    if (!(std::abs(glm::determinant(w)) > kThousandsOfUlps * colNorms))  // zero to rounding
         throw std::invalid_argument(
             "the object's transform is singular (a zero scale flattens the object)");
     if (!finite(f.localFromWorld) ||
@@ -78,10 +80,11 @@ LocalFrame LocalFrame::make(const Transform& worldFromObject, const Mat3& object
     }
     const Mat3 gram = glm::transpose(w) * w;
     const double s2 = (gram[0][0] + gram[1][1] + gram[2][2]) / 3.0;
+    // A similarity to rounding: a rotation and a uniform scale, composed.
     bool similar = true;
     for (int c = 0; c < 3; ++c)
         for (int r = 0; r < 3; ++r)
-            if (std::abs(gram[c][r] - (c == r ? s2 : 0.0)) > 1e-12 * s2) similar = false;
+            if (std::abs(gram[c][r] - (c == r ? s2 : 0.0)) > kThousandsOfUlps * s2) similar = false;
     if (similar) {
         f.kind = Kind::Similarity;
         f.worldPerLocal = std::sqrt(s2);
@@ -99,8 +102,8 @@ LocalFrame LocalFrame::make(const Transform& worldFromObject, const Mat3& object
     const Vec3 ev = symmetricEigenvalues(localGram);
     const double hi = std::max({ev.x, ev.y, ev.z}), low = std::min({ev.x, ev.y, ev.z});
     // Singular values, rounded outward.
-    f.sigmaMax = std::sqrt(hi) * (1.0 + 1e-12);
-    f.sigmaMin = std::sqrt(std::max(low, 0.0)) * (1.0 - 1e-12);
+    f.sigmaMax = padUp(std::sqrt(hi));
+    f.sigmaMin = padDown(std::sqrt(std::max(low, 0.0)));
     return f;
 }
 

@@ -3,6 +3,7 @@
 #include <cmath>
 
 #include "asos/diag/format_number.hpp"
+#include "asos/geometry/margins.hpp"
 #include "asos/shapes/cone_geometry.hpp"
 #include "asos/shapes/local_frame.hpp"
 
@@ -22,7 +23,7 @@ ConeClass Plane::classify(const LocalCone& cone) const {
     // The plane lies at signed distance h along n from the apex; a ray
     // crosses it at t = h / (n.d) when that is positive.
     const double h = distance_ - glm::dot(normal_, cone.apex);
-    const double hTol = 1e-15 * (std::abs(distance_) + glm::length(cone.apex)) + cone.absTol;
+    const double hTol = kFewUlps * (std::abs(distance_) + glm::length(cone.apex)) + cone.absTol;
     const DotRange range = dotRange(cone, normal_);
     if (std::abs(h) <= hTol) {
         // Apex on the plane (to rounding): rays cross at |t| <= hTol / |n.d|.

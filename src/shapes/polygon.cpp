@@ -7,7 +7,9 @@
 
 #include "asos/diag/format_number.hpp"
 #include "asos/geometry/frame.hpp"
+#include "asos/geometry/margins.hpp"
 #include "asos/shapes/cone_geometry.hpp"
+#include "asos/scene/pov_tolerances.hpp"
 #include "asos/shapes/local_frame.hpp"
 
 namespace asos {
@@ -15,6 +17,13 @@ namespace asos {
 using namespace conegeom;
 
 namespace {
+
+// How far a point may lie off the plane of the first ones (relative to the
+// polygon's size), or the point that fixes that plane off the line of the
+// first two (relative to its distance), and still count as in it: a modelling
+// choice, far above the rounding of the scene's numbers, far below any
+// visible tilt.
+constexpr double kFlatness = 1e-9;
 
 // Whether the closed loop of vertices [begin, end) bounds a convex region:
 // its turns (repeated points left out) all go one way, none turns back on
@@ -39,6 +48,7 @@ bool convexLoop(const std::vector<Vec2>& vertices, std::uint32_t begin, std::uin
         }
         turning += std::atan2(cross, dot);
     }
+    // One full turn to rounding (the atan2s' few ulps each); a star's is two or more.
     return way != 0 && std::abs(std::abs(turning) - 2.0 * kPi) < 1e-6;
 }
 
@@ -59,12 +69,12 @@ PointsPlane pointsPlane(const std::vector<Vec3>& points) {
     Vec3 u(0.0);
     for (; i < points.size(); ++i) {
         u = points[i] - out.origin;
-        if (glm::length(u) > 1e-12 * out.extent) break;
+        if (glm::length(u) > kThousandsOfUlps * out.extent) break;  // not the origin to rounding
     }
     for (++i; i < points.size(); ++i) {
         const Vec3 v = points[i] - out.origin;
         const Vec3 w = glm::cross(u, v);
-        if (glm::length(w) > 1e-9 * glm::length(u) * glm::length(v)) {
+        if (glm::length(w) > kFlatness * glm::length(u) * glm::length(v)) {
             out.normal = glm::normalize(w);
             break;
         }
@@ -322,7 +332,7 @@ std::vector<ShapeIssue> validate(const PolygonShape& record) {
     }
     for (std::size_t i = 0; i < points.size(); ++i) {
         const double off = std::abs(glm::dot(points[i] - plane.origin, *plane.normal));
-        if (off > 1e-9 * plane.extent) {
+        if (off > kFlatness * plane.extent) {
             issues.add(1, "the points of the polygon are not in one plane: point " + std::to_string(i + 1) + " is " +
                               formatNumber(off) + " away from the plane of the first ones",
                        static_cast<int>(i));
@@ -337,13 +347,15 @@ Placed<Polygon> place(const PolygonShape& record, const Transform& worldFromObje
     const PointsPlane plane = pointsPlane(points);  // with a normal: validate
     const Mat3 objectFromLocal = frameAroundAxis(*plane.normal);
     const Vec3 e1 = objectFromLocal[0], e2 = objectFromLocal[1];
-    // Sub-polygons close when their first point repeats; the last one is
-    // closed if it is not (POV-Ray warns and closes it).
+    // Sub-polygons close when their first point repeats (within kPovEpsilon
+    // in each coordinate, as the language's `=` compares numbers); the last
+    // one is closed if it is not (POV-Ray warns and closes it).
     std::vector<Vec2> vertices;
     std::vector<std::uint32_t> loopEnds;
     std::size_t start = 0;
     for (std::size_t k = 0; k < points.size(); ++k) {
-        const bool closes = k > start && glm::all(glm::lessThan(glm::abs(points[k] - points[start]), Vec3(1e-10)));
+        const Vec3 gap = glm::abs(points[k] - points[start]);
+        const bool closes = k > start && glm::all(glm::lessThan(gap, Vec3(kPovEpsilon)));
         if (closes) {
             loopEnds.push_back(static_cast<std::uint32_t>(vertices.size()));
             start = k + 1;

@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "asos/geometry/margins.hpp"
+
 namespace asos {
 
 namespace {
@@ -11,7 +13,7 @@ namespace {
 // conservative for the BVH.
 Bounds3 padded(Bounds3 b) {
     if (b.empty()) return b;
-    const Vec3 pad = 1e-12 * (glm::abs(b.lo) + glm::abs(b.hi) + (b.hi - b.lo));
+    const Vec3 pad = kThousandsOfUlps * (glm::abs(b.lo) + glm::abs(b.hi) + (b.hi - b.lo));
     return {b.lo - pad, b.hi + pad};
 }
 
@@ -85,7 +87,7 @@ ConeClass Primitive::classifyRigid(const PreparedCone& cone) const {
     }
     local.cosHalf = cone.cosHalf;
     local.sinHalf = cone.sinHalf;
-    const double absTol = 1e-11 * (l1Norm(local.apex) + sphereTolerance_);
+    const double absTol = kPositionTolerance * (l1Norm(local.apex) + sphereTolerance_);
     local.absTol = absTol;  // the range is set by the shape (classifyRanging)
     const double t0 = kScaled ? cone.tMin * frame_.localPerWorld : cone.tMin;
     const double t1 = kScaled ? cone.tMax * frame_.localPerWorld : cone.tMax;
@@ -129,9 +131,9 @@ ConeClass Primitive::classifyGeneral(const PreparedCone& cone) const {
     const double trace = frame_.gramTrace;
     // Rounding: the trace's difference is off by a few ulps of trace la^2,
     // the discriminant by a few ulps of trace la^2 sum; both are padded upward.
-    const double sum = std::max(0.0, (trace - la2) * la2 - back2) + 1e-14 * trace * la2;  // la^2 (...)
-    const double product = frame_.gramDeterminant * la2;                                   // la^4 (...)
-    const double spread = std::max(0.0, sum * sum - 4.0 * product) + 1e-13 * trace * la2 * sum;
+    const double sum = std::max(0.0, (trace - la2) * la2 - back2) + kTensOfUlps * trace * la2;  // la^2 (...)
+    const double product = frame_.gramDeterminant * la2;                                          // la^4 (...)
+    const double spread = std::max(0.0, sum * sum - 4.0 * product) + kHundredsOfUlps * trace * la2 * sum;
     const double sigmaPerp2 = 0.5 * (sum + std::sqrt(spread));  // la^2 sigmaPerp^2
     const double c = cone.cosHalf, s = cone.sinHalf;
 
@@ -147,8 +149,8 @@ ConeClass Primitive::classifyGeneral(const PreparedCone& cone) const {
     local.cosHalf = -1.0;
     local.sinHalf = 0.0;
     if (c > 0.0 && den > 0.0) {
-        const double pad = 1.0 + 1e-12;
-        const double lift = s * std::sqrt(sigmaPerp2) * pad + 1e-300 * den;
+        const double pad = 1.0 + kThousandsOfUlps;  // as padUp, squared below
+        const double lift = s * std::sqrt(sigmaPerp2) * pad + kPositiveFloor * den;
         const double norm = std::sqrt(den * den + (s * s) * sigmaPerp2 * (pad * pad));
         local.cosHalf = den / norm;
         local.sinHalf = lift / norm;
@@ -156,7 +158,7 @@ ConeClass Primitive::classifyGeneral(const PreparedCone& cone) const {
     // Bounds on L = |A d| over the cone: |A(d - axis)| <= 2 sin(theta/2) sigmaMax,
     // and 2 sin(theta/2) = s / sqrt((1 + c) / 2) <= s (1 + (sqrt(2) - 1)(1 - c))
     // for c >= 0 (the reciprocal root is convex).
-    const double chord = c >= 0.0 ? s * (1.0 + 0.41421356237309515 * (1.0 - c)) * (1.0 + 1e-15)
+    const double chord = c >= 0.0 ? s * (1.0 + 0.41421356237309515 * (1.0 - c)) * (1.0 + kFewUlps)
                          : c > -1.0 ? s / std::sqrt(0.5 * (1.0 + c))
                                     : 2.0;
     double lMin = std::max(frame_.sigmaMin, la - chord * frame_.sigmaMax);
@@ -164,7 +166,7 @@ ConeClass Primitive::classifyGeneral(const PreparedCone& cone) const {
     const double lMax = std::min(frame_.sigmaMax, la + chord * frame_.sigmaMax);
     // Divided by below; the reciprocals are ready while the shape works.
     const double invLMin = 1.0 / lMin, invLMax = 1.0 / lMax;
-    const double absTol = 1e-11 * (l1Norm(local.apex) + sphereTolerance_);
+    const double absTol = kPositionTolerance * (l1Norm(local.apex) + sphereTolerance_);
     local.setRange(cone.tMin * lMin, cone.tMax * lMax, absTol);
 
     ConeClass out = visit([&](const auto& shape) { return shape.classify(local); });

@@ -2,6 +2,7 @@
 
 #include <cmath>
 
+#include "asos/geometry/margins.hpp"
 #include "asos/shapes/cone_geometry.hpp"
 
 namespace asos {
@@ -102,15 +103,15 @@ std::optional<ConeClass> Sphere::classifyAcrossScale(const PreparedCone& cone,
     // coordinates' rounding, and the frame's offsets', far below it); so u to
     // ue, h to `band`, f(a) to fTol and |Q a| to qTol, rounding included.
     const double sigma2 = frame.sigmaMax * frame.sigmaMax;
-    const double tolW = 1e-11 * (std::abs(w.x) + std::abs(w.y) + std::abs(w.z) + std::abs(centre.x) +
-                                 std::abs(centre.y) + std::abs(centre.z));
+    const double tolW = kPositionTolerance * (std::abs(w.x) + std::abs(w.y) + std::abs(w.z) +
+                                              std::abs(centre.x) + std::abs(centre.y) + std::abs(centre.z));
     const double l1u = std::abs(u.x) + std::abs(u.y) + std::abs(u.z);
     const double ue = 1.001 * sigma2 * tolW;
-    const double band = 1e-15 * (uw + r2) + tolW * (2.0 * l1u + sigma2 * tolW);
+    const double band = kFewUlps * (uw + r2) + tolW * (2.0 * l1u + sigma2 * tolW);
     const double hLo = h - band, hHi = h + band;
     if (!(hLo > 0.0)) return std::nullopt;  // apex inside or on the sphere: the local path
-    const double fTol = (2.0 * l1u + ue) * ue + band * la2 + 1e-15 * (u2 + h * la2);
-    const double qTol = (2.0 * l1u + ue) * ue + band * sigma2 + 1e-15 * (u2 + h * sigma2);
+    const double fTol = (2.0 * l1u + ue) * ue + band * la2 + kFewUlps * (u2 + h * la2);
+    const double qTol = (2.0 * l1u + ue) * ue + band * sigma2 + kFewUlps * (u2 + h * sigma2);
     // For d = a + e in the cone: e.a in [c - 1, 0] and |e across a| <= s, so
     // f(d) = f(a) + 2 Q a.e + e^T Q e lies within `lin` of f(a) and, Q being
     // u u^T - h G, e^T Q e between -h e^T G e and (u.e)^2. With (x + y)^2 <=
@@ -120,30 +121,30 @@ std::optional<ConeClass> Sphere::classifyAcrossScale(const PreparedCone& cone,
     // trace there, tr G - a.Ga, and at most sigmaMax^2) and a.Ga. And
     // (1 - c) / s <= s for c >= 0: no division.
     const double along = (1.0 - c) * ((1.0 - c) + s), across = (1.0 + s) * s * s;
-    const double gAcross = std::min(sigma2, frame.gramTrace - la2 + 1e-14 * frame.gramTrace);
+    const double gAcross = std::min(sigma2, frame.gramTrace - la2 + kTensOfUlps * frame.gramTrace);
     const double uTol = (2.0 * l1u + ue) * ue;
     const double qPerpLen = std::sqrt(qPerp2) + qTol;
     const double lin = 2.0 * (qPerpLen * s + (std::abs(fa) + fTol) * (1.0 - c)) + fTol;
-    const double fHi = (fa + lin + (uPerp2 + uTol) * across + (ua * ua + uTol) * along) * (1.0 + 1e-14);
-    const double fLo = fa - lin - hHi * (gAcross * across + la2 * along) * (1.0 + 1e-13);
+    const double fHi = (fa + lin + (uPerp2 + uTol) * across + (ua * ua + uTol) * along) * (1.0 + kTensOfUlps);
+    const double fLo = fa - lin - hHi * (gAcross * across + la2 * along) * (1.0 + kHundredsOfUlps);
     // Miss: no ray's line meets the sphere, or every ray leaves the apex away
     // from it (x < 0 over the cone: both roots negative).
     const double away = -ua * c - ue;
-    if (fHi < 0.0 || (away > 0.0 && away * away > uPerp2 * (s * s) * (1.0 + 1e-14))) return missClass();
+    if (fHi < 0.0 || (away > 0.0 && away * away > uPerp2 * (s * s) * (1.0 + kTensOfUlps))) return missClass();
     // Every ray ahead of the apex (x > 0 over the cone): its front hit
     // h / (x + sqrt(f)) against the bounds on x, f and h.
     const double uPerp = std::sqrt(uPerp2), uLen = std::sqrt(u2);
     const double xMin = ua * c - uPerp * s - ue;
     if (!(xMin > 0.0)) return std::nullopt;
     const double xMax = (s * ua >= c * uPerp ? uLen : ua * c + uPerp * s) + ue;
-    const double tNear = hLo / (xMax + std::sqrt(fHi)) * (1.0 - 1e-12);
+    const double tNear = padDown(hLo / (xMax + std::sqrt(fHi)));
     LocalCone world;
     world.setRange(cone.tMin, cone.tMax, tolW);
     if (world.surelyAfter(tNear)) return missClass();
     const RigidBounds back{tolW, 1.0, cone.tMin, cone.tMax};
     if (fLo >= 0.0) {
         // Full: every ray's line meets the sphere, and every front hit is in range.
-        const double tFar = hHi / (xMin + std::sqrt(fLo)) * (1.0 + 1e-12);
+        const double tFar = padUp(hHi / (xMin + std::sqrt(fLo)));
         if (!world.surelyWithin(tNear, tFar)) return std::nullopt;
         return back(fullClass(tNear, tFar));
     }
@@ -154,9 +155,9 @@ std::optional<ConeClass> Sphere::classifyAcrossScale(const PreparedCone& cone,
     // every front hit (at most h / x, where a ray grazes) is in range, so
     // that it is each ray's first.
     const double ballSpan = s * frame.sigmaMin;
-    const bool wider = ballSpan * ballSpan * glm::dot(w, w) > r2 * (1.0 + 1e-12);
+    const bool wider = ballSpan * ballSpan * glm::dot(w, w) > padUp(r2);
     if (!(s < kAcrossScaleMarginalSin || (fa > fTol && wider))) return std::nullopt;
-    const double tFar = hHi / xMin * (1.0 + 1e-12);
+    const double tFar = padUp(hHi / xMin);
     if (!world.surelyWithin(tNear, tFar)) return std::nullopt;
     return back(marginalClass(world, tNear, tFar));
 }

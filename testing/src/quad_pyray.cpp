@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "asos/geometry/margins.hpp"
 #include "asos/testing/direction_cone.hpp"
 
 namespace asos {
@@ -25,7 +26,7 @@ QuadPyray::QuadPyray(const Vec3& apex, const std::array<Vec3, 4>& corners, int l
     }
     const DirectionCone bound = count > 0 ? smallestEnclosingCone(std::span(directions.data(), count))
                                           : DirectionCone{Vec3(0, 0, 1), kPi};
-    cone_ = {apex_, bound.axis, bound.halfAngle, tMin_, farthest * (1.0 + 1e-12)};
+    cone_ = {apex_, bound.axis, bound.halfAngle, tMin_, padUp(farthest)};
 }
 
 Vec3 QuadPyray::bilinear(double s, double t) const {

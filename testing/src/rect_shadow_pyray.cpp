@@ -4,6 +4,7 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "asos/geometry/margins.hpp"
 #include "asos/testing/direction_cone.hpp"
 #include "asos/testing/solid_angle.hpp"
 
@@ -19,7 +20,7 @@ std::optional<RectShadowPyray> RectShadowPyray::make(const Vec3& point, const Re
     const double height = std::abs(glm::dot(point - light.corner, normal)) / area;
     const double scale = glm::length(light.edgeA) + glm::length(light.edgeB) +
                          glm::length(point - light.corner);
-    if (!(height > 1e-12 * scale)) return std::nullopt;
+    if (!(height > kThousandsOfUlps * scale)) return std::nullopt;
     return RectShadowPyray(point, light, RectRegion{}, 0, tMin);
 }
 
@@ -38,7 +39,7 @@ RectShadowPyray::RectShadowPyray(const Vec3& point, const RectangleLight& light,
     // The point is off the light's plane, so the corner directions lie in an
     // open hemisphere and the cone holds the pyramid they span.
     const DirectionCone bound = smallestEnclosingCone(directions);
-    cone_ = {point_, bound.axis, bound.halfAngle, tMin_, farthest * (1.0 + 1e-12)};
+    cone_ = {point_, bound.axis, bound.halfAngle, tMin_, padUp(farthest)};
 }
 
 std::array<RectShadowPyray, 4> RectShadowPyray::split() const {

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "asos/geometry/margins.hpp"
 #include "asos/testing/direction_cone.hpp"
 
 namespace asos {
@@ -18,7 +19,7 @@ std::optional<SegmentShadowPyray> SegmentShadowPyray::make(const Vec3& point, co
     const double f = std::clamp(glm::dot(point - a, ab) / (length * length), 0.0, 1.0);
     const double offLine = glm::length(point - (a + f * ab));
     const double scale = length + glm::length(point - a);
-    if (!(offLine > 1e-12 * scale)) return std::nullopt;
+    if (!(offLine > kThousandsOfUlps * scale)) return std::nullopt;
     return SegmentShadowPyray(point, a, b, 0.0, 1.0, 0, tMin);
 }
 
@@ -31,8 +32,7 @@ SegmentShadowPyray::SegmentShadowPyray(const Vec3& point, const Vec3& a, const V
     // Two directions that are not opposite: the cone about their bisector
     // holds the arc between them, i.e. every ray of the triangle.
     const DirectionCone bound = smallestEnclosingCone(directions);
-    cone_ = {point_, bound.axis, bound.halfAngle, tMin_,
-             std::max(startDistance, endDistance) * (1.0 + 1e-12)};
+    cone_ = {point_, bound.axis, bound.halfAngle, tMin_, padUp(std::max(startDistance, endDistance))};
 }
 
 std::array<SegmentShadowPyray, 2> SegmentShadowPyray::split() const {

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "asos/geometry/margins.hpp"
 #include "asos/testing/direction_cone.hpp"
 
 namespace asos {
@@ -48,7 +49,7 @@ std::optional<SphereShadowCone> SphereShadowCone::make(const Vec3& point, const 
                                                        double radius, double tMin) {
     if (!(radius > 0.0)) throw std::invalid_argument("spherical light of radius <= 0");
     const double distance = glm::length(centre - point);
-    if (!(distance > radius * (1.0 + 1e-12))) return std::nullopt;
+    if (!(distance > padUp(radius))) return std::nullopt;
     return SphereShadowCone(point, centre, radius, DiscCell{}, 0, tMin);
 }
 
@@ -58,7 +59,7 @@ SphereShadowCone::SphereShadowCone(const Vec3& point, const Vec3& centre, double
     tangent_ = TangentCone::make(point_, centre_, radius_);
     alpha_ = std::asin(tangent_.sinAlpha);
     if (level_ > 0) bounds_ = polarBounds(region_);
-    const double far = tangent_.distanceAtRadius(bounds_.r1, 1.0) * (1.0 + 1e-12);
+    const double far = padUp(tangent_.distanceAtRadius(bounds_.r1, 1.0));
     if (level_ == 0) {
         cone_ = {point_, tangent_.frame.w, alpha_ + kConeAnglePad, tMin_, far};
         return;
@@ -123,7 +124,7 @@ double SphereShadowCone::solidAngle() const {
 }
 
 double SphereShadowCone::nearestLightDistance() const {
-    return tangent_.distanceAtRadius(bounds_.r0, -1.0) * (1.0 - 1e-12);
+    return padDown(tangent_.distanceAtRadius(bounds_.r0, -1.0));
 }
 
 }  // namespace asos

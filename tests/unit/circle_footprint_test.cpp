@@ -6,6 +6,7 @@
 #include <cmath>
 #include <random>
 
+#include "asos/geometry/margins.hpp"
 #include "asos/shapes/cone_geometry.hpp"
 
 using namespace asos;
@@ -46,7 +47,7 @@ LocalCone makeCone(const Vec3& apex, const Vec3& axis, double halfAngle) {
     cone.axis = glm::normalize(axis);
     cone.cosHalf = std::cos(halfAngle);
     cone.sinHalf = std::sin(halfAngle);
-    cone.setRange(0.0, kInfinity, 1e-11 * (std::abs(apex.x) + std::abs(apex.y) + apex.z + 1.0));
+    cone.setRange(0.0, kInfinity, kPositionTolerance * (std::abs(apex.x) + std::abs(apex.y) + apex.z + 1.0));
     return cone;
 }
 

@@ -18,6 +18,7 @@
 #include <string>
 
 #include "asos/geometry/frame.hpp"
+#include "asos/geometry/margins.hpp"
 #include "asos/shapes/primitive.hpp"
 #include "asos/testing/cone_probe.hpp"
 #include "asos/testing/rng.hpp"
@@ -34,7 +35,7 @@ inline LocalCone localCone(const Vec3& apex, const Vec3& axis, double halfAngle)
     cone.axis = glm::normalize(axis);
     cone.cosHalf = std::cos(halfAngle);
     cone.sinHalf = std::sin(halfAngle);
-    cone.setRange(0.0, kInfinity, 1e-11 * (std::abs(apex.x) + std::abs(apex.y) + std::abs(apex.z)));
+    cone.setRange(0.0, kInfinity, kPositionTolerance * (std::abs(apex.x) + std::abs(apex.y) + std::abs(apex.z)));
     return cone;
 }
 
@@ -354,8 +355,8 @@ void checkRangingAsClassify(std::uint64_t seed, Shape (*make)(Rng&, double)) {
         cone.sinHalf = std::sin(half);
         const double t0 = rng.chance(0.5) ? 0.0 : rng.uniform(0.0, 4.0);
         const double t1 = rng.chance(0.5) ? kInfinity : t0 + rng.uniform(0.0, 6.0);
-        const double absTol = 1e-11 * (std::abs(cone.apex.x) + std::abs(cone.apex.y) +
-                                       std::abs(cone.apex.z) + size);
+        const double absTol = kPositionTolerance * (std::abs(cone.apex.x) + std::abs(cone.apex.y) +
+                                                    std::abs(cone.apex.z) + size);
         const double worldPerLocal = rng.uniform(0.5, 2.0);
         const RigidBounds back{absTol, worldPerLocal, t0 * worldPerLocal, t1 * worldPerLocal};
         LocalCone ranged = cone;

@@ -88,6 +88,13 @@ inline float roundUpToFloatNonNegative(double x) {
 // distances are scaled up by kFarScale (folded into invFar), which exceeds the
 // worst relative error of the float roundings in (plane - origin) * inverse.
 inline constexpr double kFarScale = 1.0 + 0x1p-20;
+// The least shift of a ray's origin (an origin coordinate of 0 still moves):
+// a float far above the smallest normal one, far below any scene's sizes.
+inline constexpr double kOriginShiftFloor = 1e-30;
+// A direction component below this in magnitude drops its axis's constraint
+// (RayPrep) or sends its ray through the single-ray loop (traversePacket):
+// its inverse is out of the float test's range.
+inline constexpr double kParallelComponent = 1e-30;
 
 struct RayPrep {
     Float4 oNear[3];
@@ -104,11 +111,11 @@ struct RayPrep {
             const double d = ray.dir[i];
             const double o = ray.origin[i];
             // Strictly beyond o on either side, after rounding to float.
-            const double shift = std::abs(o) * 0x1p-22 + 1e-30;
+            const double shift = std::abs(o) * 0x1p-22 + kOriginShiftFloor;
             const auto above = static_cast<float>(o + shift), below = static_cast<float>(o - shift);
             float nearInv, farInv, oN, oF;
             int side = std::signbit(d) ? 1 : 0;
-            if (std::abs(d) >= 1e-30) [[likely]] {
+            if (std::abs(d) >= kParallelComponent) [[likely]] {
                 // One division: kFarScale * (1 / d) in double is within
                 // 2^-52 of kFarScale / d, far below the margin kFarScale leaves.
                 const double inv = 1.0 / d;
@@ -393,8 +400,8 @@ public:
     // nearest-hit search whose answer does not depend on the order of its
     // item tests gives each ray the answer of traverse<true>. Rays are taken
     // kPacketSize at a time and grouped by direction octant; a ray with a
-    // direction component below 1e-30 in magnitude, or a far-off origin, is
-    // traversed alone.
+    // direction component below kParallelComponent in magnitude, or a
+    // far-off origin, is traversed alone.
     template <class Leaf>
     void traversePacket(std::span<const Ray> rays, double tMin, std::span<const double> tMax,
                         Leaf&& leaf) const;
@@ -553,16 +560,16 @@ void Bvh::traversePacket(std::span<const Ray> rays, double tMin, std::span<const
         unsigned present = 0;
         bool anyAlone = false;
         for (int i = 0; i < n; ++i) {
-            // RayPrep's values for a component of at least 1e-30, written
-            // straight into the lanes (a returned struct would be assembled
-            // and reloaded through memory).
+            // RayPrep's values for a component of at least
+            // kParallelComponent, written straight into the lanes (a returned
+            // struct would be assembled and reloaded through memory).
             const Ray& ray = rays[start + i];
             const int g = i / 4, l = i % 4;
             bool alone = false;
             int oct = 0;
             for (int a = 0; a < 3; ++a) {
                 const double d = ray.dir[a], o = ray.origin[a];
-                const double shift = std::abs(o) * 0x1p-22 + 1e-30;
+                const double shift = std::abs(o) * 0x1p-22 + kOriginShiftFloor;
                 const auto above = static_cast<float>(o + shift), below = static_cast<float>(o - shift);
                 const bool negative = std::signbit(d);
                 const double inv = 1.0 / d;
@@ -573,9 +580,9 @@ void Bvh::traversePacket(std::span<const Ray> rays, double tMin, std::span<const
                 all.invFar[a][g][l] = farInv;
                 // The interval bounds need finite origins and finite,
                 // non-zero inverses; RayPrep's special cases go alone.
-                alone = alone || !(std::abs(d) >= 1e-30) || !(std::abs(above) <= kMaxFloat) ||
-                        !(std::abs(below) <= kMaxFloat) || nearInv == 0.0f || farInv == 0.0f ||
-                        !(std::abs(farInv) <= kMaxFloat);
+                alone = alone || !(std::abs(d) >= kParallelComponent) ||
+                        !(std::abs(above) <= kMaxFloat) || !(std::abs(below) <= kMaxFloat) ||
+                        nearInv == 0.0f || farInv == 0.0f || !(std::abs(farInv) <= kMaxFloat);
                 oct |= static_cast<int>(negative) << a;
             }
             const auto index = static_cast<std::uint32_t>(start + i);
@@ -841,6 +848,7 @@ void Bvh::cone(const Cone& cone, Visit&& f) const {
                     if (limit < far) {
                         far = limit;
                         test.setTMax(far);
+                        // Past the float rounding of the prefilter's limit (2^-24).
                         prefilter.setTMax(far * (1.0 + 1e-6));
                     }
                 }

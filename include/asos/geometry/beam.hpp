@@ -7,6 +7,7 @@
 // Supersampling in Object-Space" and "Distributed Light Sources" sections are
 // what they serve.
 #include "asos/geometry/cone.hpp"
+#include "asos/geometry/margins.hpp"  // kConeAnglePad, with which beams widen their cones
 #include "asos/geometry/ray.hpp"
 #include "asos/geometry/vec.hpp"
 
@@ -22,10 +23,5 @@ struct BeamRay {
 // The angle between two nonzero vectors, accurate at 0 and pi (atan2 of the
 // cross and dot products, not acos).
 double angleBetween(const Vec3& a, const Vec3& b);
-
-// Cones of beams are widened by this many radians beyond the largest angle
-// computed for a ray of the beam, so that rounding in those angles (~1e-16)
-// never leaves a ray of the beam outside its cone.
-inline constexpr double kConeAnglePad = 1e-13;
 
 }  // namespace asos

@@ -19,6 +19,7 @@
 #include <utility>
 
 #include "asos/geometry/bounds.hpp"
+#include "asos/geometry/margins.hpp"
 #include "asos/lights/beam_apex.hpp"
 #include "asos/lights/light_lattice.hpp"
 #include "asos/lights/light_piece.hpp"
@@ -89,7 +90,7 @@ public:
         const double hB = glm::dot(normal, light_.edgeB);
         const double lo = h0 + std::min(piece.a0 * hA, piece.a1 * hA) + std::min(piece.b0 * hB, piece.b1 * hB);
         const double hi = h0 + std::max(piece.a0 * hA, piece.a1 * hA) + std::max(piece.b0 * hB, piece.b1 * hB);
-        const double margin = 1e-12 * (std::abs(h0) + std::abs(hA) + std::abs(hB));
+        const double margin = kThousandsOfUlps * (std::abs(h0) + std::abs(hA) + std::abs(hB));
         if (lo > margin) return HorizonSide::Above;
         if (hi < -margin) return HorizonSide::Below;
         return HorizonSide::Across;

@@ -15,6 +15,7 @@
 #include <utility>
 
 #include "asos/geometry/bounds.hpp"
+#include "asos/geometry/margins.hpp"
 #include "asos/lights/beam_apex.hpp"
 #include "asos/lights/light_lattice.hpp"
 #include "asos/lights/light_piece.hpp"
@@ -78,7 +79,7 @@ public:
     double share(int level) const { return exactShare(level); }  // 2^-level
     double nearestLightDistance(const LightPiece& piece) const {
         const Vec3 nearest = corner_ + std::clamp(footS_, piece.a0, piece.a1) * edgeA_;
-        return glm::length(nearest - apex_.point) * (1.0 - 1e-12);
+        return padDown(glm::length(nearest - apex_.point));
     }
     // Toward the piece's two ends: 2.
     int probeRays(const LightPiece& piece, BeamRay* out) const {
@@ -94,7 +95,7 @@ public:
         const double h0 = glm::dot(normal, corner_ - apex_.point), hA = glm::dot(normal, edgeA_);
         const double lo = h0 + std::min(piece.a0 * hA, piece.a1 * hA);
         const double hi = h0 + std::max(piece.a0 * hA, piece.a1 * hA);
-        const double margin = 1e-12 * (std::abs(h0) + std::abs(hA));
+        const double margin = kThousandsOfUlps * (std::abs(h0) + std::abs(hA));
         if (lo > margin) return HorizonSide::Above;
         if (hi < -margin) return HorizonSide::Below;
         return HorizonSide::Across;

@@ -21,6 +21,7 @@
 
 #include "asos/geometry/bounds.hpp"
 #include "asos/geometry/concentric_disc.hpp"
+#include "asos/geometry/margins.hpp"
 #include "asos/geometry/tangent_cone.hpp"
 #include "asos/lights/beam_apex.hpp"
 #include "asos/lights/disc_piece_table.hpp"
@@ -90,8 +91,8 @@ public:
     }
     double share(int level) const { return exactShare(2 * level); }  // 4^-level
     double nearestLightDistance(const LightPiece& piece) const {
-        return tangent_.distanceAtRadius(innerRadius(DiscCell{piece.a0, piece.a1, piece.b0, piece.b1}), -1.0) *
-               (1.0 - 1e-12);
+        const double r = innerRadius(DiscCell{piece.a0, piece.a1, piece.b0, piece.b1});
+        return padDown(tangent_.distanceAtRadius(r, -1.0));
     }
     // Toward the images of its cell's edges' midpoints (for the whole disc,
     // opposite points of its rim): 4.

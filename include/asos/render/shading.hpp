@@ -20,18 +20,12 @@
 #include "asos/geometry/ray.hpp"
 #include "asos/geometry/vec.hpp"
 #include "asos/scene/description.hpp"
+#include "asos/scene/pov_tolerances.hpp"
 
 namespace asos {
 
-// POV-Ray's EPSILON (a light with cos(angle) below it lights nothing).
-inline constexpr double kPovEpsilon = 1e-10;
 // POV-Ray's default adc_bailout: rays whose weight falls below it are not traced.
 inline constexpr double kDefaultAdcBailout = 1.0 / 255.0;
-// POV-Ray's intersection tolerances, which a tracer matching its images uses:
-// hits nearer than MIN_ISECT_DEPTH along any ray are ignored, and shadow rays
-// ignore hits within SHADOW_TOLERANCE of the shaded point or the light.
-inline constexpr double kPovMinIsectDepth = 1e-4;
-inline constexpr double kPovShadowTolerance = 1e-3;
 
 // Light reaching the shaded point from (part of) one light source.
 struct LightSample {
@@ -84,7 +78,7 @@ struct ShadeRequest {
 
 // The pigment's colour at a world point. Checker: POV-Ray 3.7's rule in
 // pattern space, the parity of floor(x + e) + floor(y + e) + floor(z + e) with
-// e = 1e-10 (odd: color2). Brick: BrickPattern (brick: color2).
+// e = kPovEpsilon (odd: color2). Brick: BrickPattern (brick: color2).
 Color evaluatePigment(const Pigment& pigment, const Vec3& worldPoint);
 // 0 or 1 at a pattern-space point, as POV-Ray's checker pattern.
 int checkerValue(const Vec3& patternPoint);

@@ -13,6 +13,7 @@
 #include <cstdint>
 #include <optional>
 
+#include "asos/geometry/margins.hpp"
 #include "asos/geometry/vec.hpp"
 #include "asos/shapes/local_cone.hpp"
 
@@ -209,16 +210,20 @@ inline bool segmentMeetsCone(const LocalCone& cone, const ConePoint& a, const Co
     return coneDistance(cone, m) <= tol;
 }
 
-// True when no point of the ball (centre m, radius r) lies in the infinite
-// cone (angular test only). Exact: the distance from m to the cone exceeds r
-// (the ball grown by the cone's distance tolerance, for an apex on it).
+// The least k = cos^2(theta) - sin^2(gamma) (gamma the axis' angle from a
+// plane's normal) at which the footprints and the fast paths take every ray
+// of a cone as crossing the plane: below it the footprint is too elongated
+// (its semi-major axis grows as 1 / k) and the cone goes to the exact tests.
+// A modelling choice; FootprintQuadric's rounding bound follows from it.
+inline constexpr double kFootprintMinK = 1e-6;
+
 // The quick footprint bound on the plane z = zc (the circle tests of
 // cylinder and cone): when the cone is narrower than a hemisphere, its axis
 // heads for the plane and no ray of the cone is nearly parallel to it (k =
-// c^2 - sin^2(gamma) > 1e-6, gamma the axis' angle from the normal), every
-// ray crosses the plane (planeDepths gives the depths), and the footprint
-// (an ellipse of semi-major depth s c / k about a centre depth g s^2 / (an
-// k) from q) lies within `radius` of the axis' crossing q.
+// c^2 - sin^2(gamma) > kFootprintMinK, gamma the axis' angle from the
+// normal), every ray crosses the plane (planeDepths gives the depths), and
+// the footprint (an ellipse of semi-major depth s c / k about a centre depth
+// g s^2 / (an k) from q) lies within `radius` of the axis' crossing q.
 struct FootprintReach {
     bool valid = false;
     Vec2 q{0.0};
@@ -235,7 +240,7 @@ inline FootprintReach footprintReach(const LocalCone& cone, double zc) {
     const double an = std::abs(axis.z);
     const double g2 = axis.x * axis.x + axis.y * axis.y;
     const double k = c * c - g2;
-    if (!(k > 1e-6)) return f;
+    if (!(k > kFootprintMinK)) return f;
     f.valid = true;
     // sin(gamma) = sqrt(g2) <= (1 + g2) / 2: the radius needs no root (it
     // grows by a fraction of order sin^2(theta)); the depths do.
@@ -244,7 +249,7 @@ inline FootprintReach footprintReach(const LocalCone& cone, double zc) {
     const double invAn = 1.0 / an;
     const double tAxis = depth * invAn;
     f.q = Vec2(p.x + tAxis * axis.x, p.y + tAxis * axis.y);
-    f.radius = depth * s / k * (c + gBound * s * invAn) * (1.0 + 1e-12) + cone.absTol;
+    f.radius = padUp(depth * s / k * (c + gBound * s * invAn)) + cone.absTol;
     return f;
 }
 
@@ -253,7 +258,7 @@ inline FootprintReach footprintReach(const LocalCone& cone, double zc) {
 // by absTol: every point of the footprint lies within it of an k q.
 inline double scaledReach(double depth, double an, double g2, double c, double s, double absTol,
                           double ank) {
-    return depth * s * (c * an + 0.5 * (1.0 + g2) * s) * (1.0 + 1e-12) + absTol * ank;
+    return padUp(depth * s * (c * an + 0.5 * (1.0 + g2) * s)) + absTol * ank;
 }
 
 // What the fast paths on the plane z = 0 (Disc, EllipticDisc, Polygon)
@@ -272,7 +277,7 @@ inline ZPlaneApproach zPlaneApproach(const LocalCone& cone) {
     z.h = -cone.apex.z;
     z.g2 = axis.x * axis.x + axis.y * axis.y;
     z.k = c * c - z.g2;
-    z.crosses = (c > 0.0) & (z.h * axis.z > 0.0) & (z.k > 1e-6);
+    z.crosses = (c > 0.0) & (z.h * axis.z > 0.0) & (z.k > kFootprintMinK);
     z.an = std::abs(axis.z);
     z.depth = std::abs(z.h);
     z.ank = z.an * z.k;
@@ -321,8 +326,9 @@ public:
         m_ = Vec2(p.x + t * a_.x, p.y + t * a_.y);
         const double e = depth * cone.sinHalf * invK;
         const double minor = e * std::sqrt(k);
-        const double tol = cone.absTol + 1e-12 * (std::abs(m_.x) + std::abs(m_.y) + e * c);
-        // The form's relative rounding is at most a few ulps of c^2 / k <= 1e6.
+        const double tol = cone.absTol + kThousandsOfUlps * (std::abs(m_.x) + std::abs(m_.y) + e * c);
+        // The form's relative rounding is at most a few ulps of
+        // c^2 / k <= 1 / kFootprintMinK = 1e6: under 1e-9.
         limit_ = (minor + tol) * (minor + tol) * (1.0 + 1e-9);
         minor2_ = minor * minor;
     }
@@ -401,7 +407,7 @@ public:
         nearLimit_ = sd2;  // near2_ < inner^2 sd2 puts the point inside
         // The origin is in the ellipse: m^T M^-1 m <= 1, M^-1 = (I - a a^T / c^2) / (e^2 k).
         originIn_ = across2_ <= e2 * e2 * k * c * c;
-        tolBase_ = cone.absTol * k + 1e-12 * (d_ + e * c);
+        tolBase_ = cone.absTol * k + kThousandsOfUlps * (d_ + e * c);
         mu_ = mu;
         g2_ = glm::dot(a, a);
         ec_ = e * c;
@@ -409,7 +415,7 @@ public:
 
     CircleRelation relation(double rho) const {
         const double kRho = k_ * rho;
-        const double tol = tolBase_ + 1e-12 * kRho;
+        const double tol = tolBase_ + kThousandsOfUlps * kRho;
         const double outer = kRho + tol, inner = kRho - tol;
         // Multiplied by d: d - S > outer, and so on.
         const double lowD = d2_ - sd_, highD = d2_ + sd_;
@@ -472,7 +478,7 @@ inline ConeClass apexInPlaneClass(const LocalCone& cone, DotRange range, double 
 // The tolerance within which an apex counts as lying in the plane z = 0.
 inline double apexInPlaneTolerance(const LocalCone& cone) {
     const Vec3& p = cone.apex;
-    return 1e-15 * (std::abs(p.x) + std::abs(p.y) + std::abs(p.z)) + cone.absTol;
+    return kFewUlps * (std::abs(p.x) + std::abs(p.y) + std::abs(p.z)) + cone.absTol;
 }
 
 // Off the fast path: the axis turned away from the plane z = 0 (or along
@@ -482,7 +488,7 @@ inline double apexInPlaneTolerance(const LocalCone& cone) {
 // ball and its dot range.
 inline bool turnedAwayFromPlane(const LocalCone& cone, double h, double g2) {
     const double az = cone.axis.z, c = cone.cosHalf, s = cone.sinHalf;
-    return (c > 0.0) & (h * az <= 0.0) & (g2 * s * s * (1.0 + 1e-12) < az * az * c * c) &
+    return (c > 0.0) & (h * az <= 0.0) & (padUp(g2 * s * s) < az * az * c * c) &
            (std::abs(h) > apexInPlaneTolerance(cone));
 }
 
@@ -526,7 +532,7 @@ inline AnnulusFastPath annulusFastPath(const LocalCone& cone, const ZPlaneApproa
     const double qx = (an * p.x + depth * axis.x) * d.dx, qy = (an * p.y + depth * axis.y) * d.dy;
     const double q = std::sqrt(qx * qx + qy * qy) * k;
     const double reach = scaledReach(depth, an, g2, c, s, cone.absTol, ank) * d.dMax;
-    const double inner = depth * k * s * (1.0 - s) * (1.0 - 1e-12) * d.dMin - cone.absTol * ank * d.dMax;
+    const double inner = padDown(depth * k * s * (1.0 - s)) * d.dMin - cone.absTol * ank * d.dMax;
     const double outerK = ank * outer;
     bool miss = q > outerK + reach;
     bool full = q < outerK - reach;
@@ -547,8 +553,11 @@ inline AnnulusFastPath annulusFastPath(const LocalCone& cone, const ZPlaneApproa
     return f;
 }
 
+// True when no point of the ball (centre m, radius r) lies in the infinite
+// cone (angular test only). Exact: the distance from m to the cone exceeds r
+// (the ball grown by the cone's distance tolerance, for an apex on it).
 inline bool ballOutsideAngular(const LocalCone& cone, const Vec3& m, double r) {
-    r = r * (1.0 + 1e-12) + cone.absTol;
+    r = padUp(r) + cone.absTol;
     const Vec3 w = m - cone.apex;
     const double d2 = glm::dot(w, w);
     if (d2 <= r * r) return false;
@@ -571,7 +580,7 @@ inline bool ballOutsideAngular(const LocalCone& cone, const Vec3& m, double r) {
 
 // True when the ball lies wholly nearer than the range or wholly beyond it.
 inline bool ballOutsideRange(const LocalCone& cone, const Vec3& m, double r) {
-    r = r * (1.0 + 1e-12) + cone.absTol;
+    r = padUp(r) + cone.absTol;
     const Vec3 w = m - cone.apex;
     const double d2 = glm::dot(w, w);
     const double far = cone.tMaxOuter + r;  // |w| - r > tMaxOuter
@@ -643,7 +652,7 @@ inline Footprint footprintOnPlane(const LocalCone& cone, int axis, double value)
     // positive when every ray crosses; kept away from 0 so that the ellipse
     // is well conditioned (an elongated footprint goes to the fallbacks).
     const double k = c * c - g2;
-    if (!(an > 0.0) || !(k > 1e-6)) return f;
+    if (!(an > 0.0) || !(k > kFootprintMinK)) return f;
     const double g = std::sqrt(g2);
     f.bounded = true;
     f.major = g > 0.0 ? Vec2(ax[i], ax[j]) / g : Vec2(1.0, 0.0);

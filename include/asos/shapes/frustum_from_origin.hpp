@@ -47,16 +47,17 @@ public:
         // A length along t clears the margin when its square times |d|^2
         // exceeds the margin's (no division).
         const auto clear = [&](double t) { return t * t * dd > margin2_; };
-        // Nearly across the axis: the slab's bounds are ill-conditioned.
-        if (!(d.z * d.z > 1e-6 * dd)) return kUndecided;
+        // Nearly across the axis (|d.z| <= kIllConditioned |d|): the slab's
+        // bounds are ill-conditioned.
+        if (!(d.z * d.z > kIllConditioned * kIllConditioned * dd)) return kUndecided;
         const double radial = d.x * d.x + d.y * d.y, axial = k_ * k_ * d.z * d.z;
         const double a = radial - axial;
         // Nearly along a generator of the side's cone: one root runs away.
-        if (!(std::abs(a) > 1e-3 * (radial + axial))) return kUndecided;
+        if (!(std::abs(a) > kIllConditioned * (radial + axial))) return kUndecided;
         const double b = o_.x * d.x + o_.y * d.y - k_ * d.z * rho_;
         const double disc = b * b - a * c_;
         // Nearly tangent to the side: the roots are ill-conditioned.
-        if (!(std::abs(disc) > 1e-3 * (b * b + std::abs(a * c_)))) return kUndecided;
+        if (!(std::abs(disc) > kIllConditioned * (b * b + std::abs(a * c_)))) return kUndecided;
         if (disc < 0.0 && a > 0.0) return 0;  // the line misses the side's cone
         const double inv = 1.0 / d.z;
         const double z0 = -o_.z * inv, z1 = (length_ - o_.z) * inv;
@@ -98,6 +99,12 @@ public:
 
 private:
     static constexpr double kMargin = 1e-7;
+    // A ray is left to the exact test where a quantity is below this
+    // fraction of its terms (the direction's part along the axis, the side's
+    // leading coefficient, its discriminant): the slab's bounds or the roots
+    // are ill-conditioned there. A modelling choice, which keeps the errors
+    // far below kMargin elsewhere.
+    static constexpr double kIllConditioned = 1e-3;
 
     Vec3 o_;
     double k_, length_;

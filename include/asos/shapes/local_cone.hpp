@@ -3,8 +3,9 @@
 //
 // PreparedCone is a world cone with its trigonometry done once, since the
 // tracer asks one cone about many objects. Its half-angle is already widened
-// by kConeAngleMargin: every primitive classifies that slightly larger cone,
-// which keeps both Miss and Full conservative for the real one under rounding.
+// by kConeAngleMargin (asos/geometry/margins.hpp): every primitive classifies
+// that slightly larger cone, which keeps both Miss and Full conservative for
+// the real one under rounding.
 //
 // LocalCone is the same cone carried into a primitive's local frame, where t
 // is local distance, with [tMin, tMax] also kept in a widened (outer) and a
@@ -16,14 +17,10 @@
 #include <cstdint>
 
 #include "asos/geometry/cone.hpp"
+#include "asos/geometry/margins.hpp"
 #include "asos/geometry/vec.hpp"
 
 namespace asos {
-
-// Radians added to every half-angle (plus the same fraction of the angle).
-inline constexpr double kConeAngleMargin = 1e-9;
-// Relative tolerance on distances compared against the t-range.
-inline constexpr double kConeDistanceTolerance = 1e-9;
 
 struct PreparedCone {
     Vec3 apex{0.0};

@@ -21,8 +21,8 @@ struct LocalRays {
     int count = 0;
 
     // Every direction turned along n (the normal of such a plane, pointing
-    // away from the shape), by a margin far above rounding (the rays are
-    // tested from t > 0 on).
+    // away from the shape), by a margin far above rounding (a cosine above
+    // 1e-9; the rays are tested from t > 0 on).
     bool awayFrom(const Vec3& n) const {
         const double nn = glm::length(n);
         for (int i = 0; i < count; ++i)

@@ -8,6 +8,7 @@
 
 #include "asos/geometry/bounds.hpp"
 #include "asos/geometry/cone.hpp"
+#include "asos/geometry/margins.hpp"
 #include "asos/geometry/ray.hpp"
 #include "asos/geometry/transform.hpp"
 #include "asos/scene/description.hpp"
@@ -130,8 +131,9 @@ inline ConeClass Sphere::classify(const LocalCone& cone) const {
     const Vec3 w = -cone.apex;  // centre - apex
     const double d2 = glm::dot(w, w);
     const double c = cone.cosHalf, s = cone.sinHalf;
-    // How far d2 - r2 may be from its sign: the apex is "on" the sphere within.
-    const double band = 4e-15 * (d2 + r2) + 2.0 * r * cone.absTol;
+    // How far d2 - r2 may be from its sign: the apex is "on" the sphere within
+    // (their rounding is at most roundingGamma(4) (d2 + r2), a ninth of this).
+    const double band = 4.0 * kFewUlps * (d2 + r2) + 2.0 * r * cone.absTol;
     const double sigma = glm::dot(w, cone.axis);
     const Vec3 perp = w - sigma * cone.axis;
     const double p2 = glm::dot(perp, perp);
