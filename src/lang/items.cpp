@@ -250,8 +250,7 @@ Transform Interpreter::evalTransformItem(const Node& item) {
     case Word::Scale: {
         const Vec3 s = evalVector(item[0]);
         if (s.x == 0 || s.y == 0 || s.z == 0)
-            fail(item[0], "scale by zero (<" + formatNumber(s.x) + ", " + formatNumber(s.y) + ", " +
-                              formatNumber(s.z) + ">) flattens everything");
+            fail(item[0], "scale by zero (" + formatVector(s) + ") flattens everything");
         return Transform::scale(s);
     }
     default: {
