@@ -1,7 +1,8 @@
 // The six primitives of the paper's Figure 6 on a checkered floor under a
 // rectangular area light of 9 x 9 points. It stresses texture edges: the
 // checker's edges cross pixels that one object covers, which object-space
-// adaptive sampling does not see as edges, and they shrink toward the horizon.
+// adaptive sampling does not see as edges, and they shrink toward the back
+// wall. (A checker to the horizon, where no method converges, is another test.)
 // It renders the same way in POV-Ray 3.7; LightN sets the light's points:
 //   asos render examples/bench/textured.pov -o textured.png
 //   povray +Iexamples/bench/textured.pov +Otextured-pov.png +W320 +H240 Declare=LightN=9
@@ -23,6 +24,7 @@ light_source {
 plane { y, 0
   pigment { checker color rgb 0.9, color rgb <0.25, 0.3, 0.4> scale 0.8 rotate y*20 }
   finish { Matte } }
+box { <-30, 0, 7>, <30, 12, 7.2> pigment { color rgb <0.8, 0.78, 0.72> } finish { Matte } }
 
 sphere { <-3, 1.9, 1.6>, 0.9 pigment { color rgb <0.85, 0.2, 0.15> } finish { Matte phong 0.5 } }
 polygon {
