@@ -5,7 +5,7 @@
 # kept). Each table is preceded by the command that made it, the machine, the
 # load average and the commit.
 #
-#   scripts/results.sh [--quick] [--only parse,bvh,intersect,render,lights,povray]
+#   scripts/results.sh [--quick] [--only parse,bvh,intersect,render,lights,povray,scenes]
 #                      [--file docs/results.md] [--output FILE]
 #
 #   --quick   small sizes and one pass, to check the script and the benchmarks
@@ -25,7 +25,7 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
-all_tables=(parse bvh intersect render lights povray)
+all_tables=(parse bvh intersect render lights povray scenes)
 quick=0
 only=""
 file=docs/results.md
@@ -240,6 +240,19 @@ table_povray() {
       "$work/povray-$i.log" >>"$content"
   done
   replace_block povray "$content"
+}
+
+table_scenes() {
+  local size=(-W 320 -H 240) quick_flag=() content=$work/scenes.md
+  [[ $quick == 1 ]] && size=(-W 80 -H 60) quick_flag=(--quick)
+  progress "  scripts/bench-scenes.sh ${size[*]} ${quick_flag[*]}"
+  ASOS_BUILD_DIR=$build_dir ASOS_BENCH_DIR=$cache/bench-scenes scripts/bench-scenes.sh "${size[@]}" "${quick_flag[@]}" \
+    >"$work/scenes.log" 2>&1 || { cat "$work/scenes.log" >&2; fail "bench-scenes.sh failed"; }
+  {
+    provenance "scripts/bench-scenes.sh ${size[*]} ${quick_flag[*]}"; echo
+    sed -n '/^| scene /,$p' "$cache/bench-scenes/summary.md"
+  } >"$content"
+  replace_block scenes "$content"
 }
 
 progress "benchmark program: ${bench_name} (Release build in $build_dir); $mode"
