@@ -175,7 +175,7 @@ Value Interpreter::eval(const Node& n) {
         case Word::Clock: return Num::scalar(options_.clock);
         case Word::ClockDelta: return Num::scalar(0.0);
         case Word::ClockOn: return Num::scalar(0.0);
-        case Word::Version: return Num::scalar(version_);
+        case Word::Version: return Num::scalar(versionHundredths_ / 100.0);
         case Word::True: case Word::On: case Word::Yes: return Num::scalar(1.0);
         case Word::False: case Word::Off: case Word::No: return Num::scalar(0.0);
         case Word::ImageWidth: return Num::scalar(options_.imageWidth);

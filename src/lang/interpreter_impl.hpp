@@ -188,6 +188,7 @@ private:
     bool truth(const Node& condition);
     void countIteration(const Node& at);
     std::optional<SceneDescription> finish();
+    void applyVersionRules();
 
     // items.cpp
     void placeObject(ObjectTree&& tree);
@@ -209,7 +210,12 @@ private:
     NameTable names_;
     // scopes_[0] is global; each #include adds one for its #local names.
     std::vector<std::unordered_map<std::uint32_t, Value>> scopes_;
-    double version_ = 3.7;
+    // POV-Ray's language version, in hundredths as it keeps it. `version`
+    // reads 3.7 until a #version sets it; a scene without one is read as 3.62.
+    int versionHundredths_ = 370;
+    bool versionSet_ = false;
+    bool statementRun_ = false;    // something ran before: a #version now is late
+    bool assumedGammaSet_ = false;
 
     std::deque<SourceFile> files_;  // every file read, kept for error lines
     std::unordered_map<std::string, SourceFile*> filesByPath_;  // included files, by canonical path

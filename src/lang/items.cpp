@@ -621,6 +621,7 @@ void Interpreter::applyGlobalSettings(const Node& block) {
             const double v = evalFloat(n[0]);
             if (!(v > 0)) fail(n[0], "assumed_gamma must be positive, not " + formatNumber(v));
             g.assumedGamma = v;
+            assumedGammaSet_ = true;
             break;
         }
         case Word::MaxTraceLevel: g.maxTraceLevel = evalInt(n[0], 1); break;

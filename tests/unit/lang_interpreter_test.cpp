@@ -391,6 +391,74 @@ TEST_CASE("global settings, background, asos options, #version", "[lang][interpr
     CHECK(scene.objects[0].noShadow);
 }
 
+// POV-Ray 3.7's rules (its Parser::Run and #version, checked with `povray`):
+// the version the scene ends with decides, a scene without #version is read
+// as 3.62; without assumed_gamma a scene older than 3.7 has gamma correction
+// off and a 3.7 scene gets 1.0.
+TEST_CASE("#version and a missing assumed_gamma as in POV-Ray 3.7", "[lang][interpreter]") {
+    const std::string body = "sphere { 0, 1 }\n";
+    auto messages = [](const Run& r) {
+        std::vector<std::string> m;
+        for (const auto& d : r.diagnostics.all()) {
+            CHECK(d.severity == Severity::Warning);
+            m.push_back(d.message.substr(0, d.message.find(':')));
+        }
+        return m;
+    };
+    using Strings = std::vector<std::string>;
+
+    Run none = run(body);
+    CHECK_FALSE(ok(none).globals.assumedGamma);
+    CHECK(ok(none).version == Approx(3.62));
+    CHECK(messages(none) == Strings{"assumed_gamma not specified, so gamma correction is turned off for this "
+                                    "scene older than POV-Ray 3.7 (no #version, read as 3.62), as POV-Ray does",
+                                    "this scene has no #version directive"});
+    CHECK(none.diagnostics.all()[0].loc.line == 0);
+    CHECK(*none.diagnostics.all()[0].loc.file == "t.pov");
+
+    Run v37 = run("#version 3.7;\n" + body);
+    CHECK(ok(v37).globals.assumedGamma == 1.0);
+    CHECK(messages(v37) == Strings{"assumed_gamma not specified in this POV-Ray 3.7 scene"});
+
+    Run v36 = run("#version 3.6;\n" + body);
+    CHECK_FALSE(ok(v36).globals.assumedGamma);
+    CHECK(ok(v36).version == Approx(3.6));
+
+    // assumed_gamma set: that gamma whatever the version, without a word.
+    for (const char* version : {"3.6", "3.7"}) {
+        Run set = run(std::string("#version ") + version + ";\nglobal_settings { assumed_gamma 2.2 }\n" + body);
+        CHECK(ok(set).globals.assumedGamma == 2.2);
+        CHECK(set.diagnostics.all().empty());
+    }
+
+    // The last #version decides, wherever it stands; a late first one is said.
+    Run ends36 = run("#version 3.7;\n" + body + "#version 3.6;\n");
+    CHECK_FALSE(ok(ends36).globals.assumedGamma);
+    CHECK(ends36.diagnostics.all().size() == 1);
+    Run late = run(body + "#version 3.7;\n");
+    CHECK(ok(late).globals.assumedGamma == 1.0);
+    CHECK(messages(late) == Strings{"other statements come before the first #version",
+                                    "assumed_gamma not specified in this POV-Ray 3.7 scene"});
+    CHECK(late.diagnostics.all()[0].loc.line == 2);
+    Run inIf = run("#if (1) #version 3.7; #end\nglobal_settings { assumed_gamma 1 }\n");
+    CHECK(messages(inIf) == Strings{"other statements come before the first #version"});
+
+    // `version` reads 3.7 until a #version; POV-Ray keeps hundredths, rounded.
+    CHECK(floatOf("version") == Approx(3.7));
+    CHECK(floatOf("version", "#version 3.14159;") == Approx(3.14));
+    Run rounded = run("#version 3.704;\n" + body);
+    CHECK(ok(rounded).version == Approx(3.7));
+    CHECK(ok(rounded).globals.assumedGamma == 1.0);
+    CHECK_THAT(run("#version 3.705;").errors(), Contains("1:10: #version 3.705 is newer than POV-Ray 3.7"));
+
+    Run old = run("#version 3.1;\nglobal_settings { assumed_gamma 1 }\n");
+    CHECK(messages(old) == Strings{"the scene ends with #version 3.1"});
+
+    // No warning about the end of a scene that has errors.
+    Run broken = run("sphere { 0, -1 }\n");
+    CHECK(broken.diagnostics.all().size() == 1);
+}
+
 TEST_CASE("every semantic error of a file is reported", "[lang][interpreter]") {
     Run r = run("sphere { 0, -1 }\n"
                 "cylinder { 0, 0, 1 }\n"
