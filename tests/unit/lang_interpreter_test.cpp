@@ -141,6 +141,79 @@ TEST_CASE("colours", "[lang][interpreter]") {
     CHECK(ok(gray).background.rgb.x == Approx(0.297));
 }
 
+// Each use of a colour as POV-Ray's Parse_Colour reads it (checked with
+// `povray`): a surface's colour with filter or transmit would be transparent,
+// which asos refuses; a light's colour, ambient, reflection and ambient_light
+// keep red, green and blue, a float there being a grey.
+TEST_CASE("filter and transmit where a colour is used", "[lang][interpreter]") {
+    const std::string v37 = "#version 3.7; global_settings { assumed_gamma 1 }\n";
+    auto pigmentOf = [&](const std::string& pigment) {
+        Run r = run(v37 + "sphere { 0, 1 pigment { " + pigment + " } }");
+        INFO(r.errors());
+        CHECK(r.diagnostics.all().empty());
+        REQUIRE(r.scene);
+        return r.scene->objects.at(0).texture->pigment;
+    };
+    // Zeros, as the include files write them (rgbt <r, g, b, 0>), are opaque.
+    CHECK(pigmentOf("rgbt <0.5, 0.6, 0.7, 0>").color1 == Color{{0.5, 0.6, 0.7}, 0, 0});
+    CHECK(pigmentOf("color red 1 filter 0 transmit 0").color1 == Color{{1, 0, 0}, 0, 0});
+    CHECK(pigmentOf("rgbf <1, 1, 1, 0.5> filter 0").color1 == Color{{1, 1, 1}, 0, 0});
+    CHECK(pigmentOf("checker rgbt <1, 1, 1, 0> rgbf <0, 0, 0, 0>").color2 == Color{{0, 0, 0}, 0, 0});
+
+    Run transparent = run(v37 + "#declare Glass = rgbf <1, 1, 1, 0.9>;\n"
+                                "sphere { 0, 1 pigment { Glass } }\n"
+                                "sphere { 0, 1 pigment { color 0.5 } }\n"
+                                "plane { y, 0 pigment { checker rgb 1 rgbt <0, 0, 0, 0.25> } }\n"
+                                "plane { y, 0 pigment { brick rgb 1 transmit 1 } }\n");
+    CHECK_FALSE(transparent.scene);
+    CHECK(transparent.errors() ==
+          "3:25: transparency is not supported by asos: this colour's filter 0.9 would make the surface "
+          "transparent in POV-Ray\n"
+          "4:25: transparency is not supported by asos: this colour's filter 0.5 and transmit 0.5 would make "
+          "the surface transparent in POV-Ray; a float as a colour sets filter and transmit too: write "
+          "'rgb 0.5' for a grey\n"
+          "5:38: transparency is not supported by asos: this colour's transmit 0.25 would make the surface "
+          "transparent in POV-Ray\n"
+          "6:30: transparency is not supported by asos: this colour's transmit 1 would make the surface "
+          "transparent in POV-Ray\n");
+
+    // A float is a grey where only red, green and blue are read: no warning.
+    Run grey = run(v37 + "global_settings { ambient_light color 0.8 }\n"
+                         "light_source { 0, color 1.5 }\n"
+                         "light_source { 0, color 0.5 green 1 }\n"
+                         "sphere { 0, 1 finish { ambient color 0.3 reflection 0.2 } }\n");
+    const auto& g = ok(grey);
+    CHECK(grey.diagnostics.all().empty());
+    CHECK(g.globals.ambientLight == Vec3(0.8));
+    CHECK(g.lights.at(0).color == Vec3(1.5));
+    CHECK(g.lights.at(1).color == Vec3(0.5, 1, 0.5));
+    CHECK(g.objects.at(0).texture->finish.ambient == Vec3(0.3));
+    CHECK(g.objects.at(0).texture->finish.reflection == Vec3(0.2));
+
+    // Filter and transmit given otherwise are ignored, with POV-Ray's warning.
+    Run ignored = run(v37 + "#declare Half = color 0.5;\n"
+                            "light_source { 0, Half }\n"
+                            "light_source { 0, rgb 1 transmit 0.3 }\n"
+                            "sphere { 0, 1 finish { ambient rgbf <0.1, 0.1, 0.1, 0.5> } }\n");
+    const auto& i = ok(ignored);
+    CHECK(i.lights.at(0).color == Vec3(0.5));
+    CHECK(i.lights.at(1).color == Vec3(1));
+    CHECK(i.objects.at(0).texture->finish.ambient == Vec3(0.1));
+    CHECK(ignored.errors() ==
+          "3:19: filter 0.5 and transmit 0.5 have no effect on a light's colour, which is red, green and "
+          "blue only (POV-Ray warns and ignores them too)\n"
+          "4:19: transmit 0.3 has no effect on a light's colour, which is red, green and blue only "
+          "(POV-Ray warns and ignores it too)\n"
+          "5:32: filter 0.5 has no effect on ambient, which is red, green and blue only (POV-Ray warns and "
+          "ignores it too)\n");
+    for (const auto& d : ignored.diagnostics.all()) CHECK(d.severity == Severity::Warning);
+
+    // The background keeps all five (its transmit darkens it: shading_test).
+    Run background = run(v37 + "background { rgbft <0.2, 0.3, 0.4, 0.5, 0.25> }");
+    CHECK(ok(background).background == Color{{0.2, 0.3, 0.4}, 0.5, 0.25});
+    CHECK(background.diagnostics.all().empty());
+}
+
 TEST_CASE("#if, #while, #for, #declare, #local, #undef", "[lang][interpreter]") {
     Run run1 = run(R"(
         #declare N = 0;

@@ -151,7 +151,7 @@ struct SceneDescription {
     std::vector<Light> lights;
     std::vector<Object> objects;  // unions are flattened; order of appearance
     GlobalSettings globals;
-    Color background{};
+    Color background{};  // its transmit darkens it (POV-Ray without alpha output)
     // The POV-Ray version the scene is read as, in hundredths as POV-Ray keeps
     // it: its last #version, or 3.62 when it has none (POV-Ray's assumption).
     double version = 3.7;
