@@ -217,7 +217,7 @@ IoStatus writeImage(const Image& image, const fs::path& path, const WriteOptions
     const void* pixels = nullptr;
     auto value = [&](float v) -> double {
         switch (transfer) {
-            case Transfer::Srgb: return srgbEncode(workingToLinear(v, options.assumedGamma));
+            case Transfer::Srgb: return workingToSrgb(v, options.assumedGamma);
             case Transfer::Linear: return workingToLinear(v, options.assumedGamma);
             default: return v;
         }

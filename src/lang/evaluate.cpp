@@ -116,19 +116,63 @@ Vec3 Interpreter::evalVector(const Node& n) {
     return Vec3(v.v[0], v.v[1], v.dim == 3 ? v.v[2] : 0.0);
 }
 
-Color Interpreter::toColour(const Num& v, const Node& at) {
+Color Interpreter::toColour(const Num& v, const Node& at, ColourChannels channels) {
     if (v.dim == 2 && !v.colour) fail(at, "expected a colour, found a 2-component vector");
-    // A float is all five components, as in POV-Ray (`color 0.5` is half
-    // filtering, half transmitting); a 3-, 4- or 5-vector is rgb, rgbf, rgbft.
-    const Num w = v.isFloat() ? widen(v, 5, true) : v;
+    // A float is all five components where a colour has five, as in POV-Ray
+    // (`color 0.5` is half filtering, half transmitting), and a grey where it
+    // has three; a 3-, 4- or 5-vector is rgb, rgbf, rgbft.
     Color c;
-    c.rgb = Vec3(w.v[0], w.v[1], w.v[2]);
-    c.filter = w.dim >= 4 ? w.v[3] : 0.0;
-    c.transmit = w.dim >= 5 ? w.v[4] : 0.0;
+    if (v.isFloat()) {
+        c.rgb = Vec3(v.v[0]);
+        if (channels == ColourChannels::Rgbft) c.filter = c.transmit = v.v[0];
+        return c;
+    }
+    c.rgb = Vec3(v.v[0], v.v[1], v.v[2]);
+    c.filter = v.dim >= 4 ? v.v[3] : 0.0;
+    c.transmit = v.dim >= 5 ? v.v[4] : 0.0;
     return c;
 }
 
-Color Interpreter::evalColour(const Node& n) { return toColour(evalNum(n), n); }
+Color Interpreter::evalColour(const Node& n, ColourChannels channels) {
+    if (n.kind == NodeKind::Colour) {
+        const Num c = evalColourNode(n, channels);
+        return Color{Vec3(c.v[0], c.v[1], c.v[2]), c.v[3], c.v[4]};
+    }
+    return toColour(evalNum(n), n, channels);
+}
+
+namespace {
+// "filter 0.5 and transmit 0.2" (the components that are not zero).
+std::string filterAndTransmit(const Color& c) {
+    std::string s;
+    if (c.filter != 0.0) s = "filter " + formatNumber(c.filter);
+    if (c.transmit != 0.0) s += (s.empty() ? "transmit " : " and transmit ") + formatNumber(c.transmit);
+    return s;
+}
+}  // namespace
+
+Vec3 Interpreter::evalRgb(const Node& n, std::string_view usedAs) {
+    const Color c = evalColour(n, ColourChannels::Rgb);
+    if (c.filter != 0.0 || c.transmit != 0.0) {
+        const bool both = c.filter != 0.0 && c.transmit != 0.0;
+        report(Severity::Warning, n,
+               filterAndTransmit(c) + (both ? " have" : " has") + " no effect on " + std::string(usedAs) +
+                   ", which is red, green and blue only (POV-Ray warns and ignores " +
+                   (both ? "them" : "it") + " too)");
+    }
+    return c.rgb;
+}
+
+Color Interpreter::checkOpaque(const Color& c, const Node& at) {
+    if (c.filter == 0.0 && c.transmit == 0.0) return c;
+    std::string message = "transparency is not supported by asos: this colour's " + filterAndTransmit(c) +
+                          " would make the surface transparent in POV-Ray";
+    // All five alike is, in practice, a float used as a colour.
+    if (c.rgb.x == c.filter && c.rgb.y == c.filter && c.rgb.z == c.filter && c.transmit == c.filter)
+        message += "; a float as a colour sets filter and transmit too: write 'rgb " +
+                   formatNumber(c.filter) + "' for a grey";
+    fail(at, std::move(message));
+}
 
 std::string Interpreter::evalString(const Node& n) {
     Value v = eval(n);
@@ -141,6 +185,53 @@ namespace {
 double component(const Num& a, int i) { return a.isFloat() ? a.v[0] : a.v[i]; }
 
 }  // namespace
+
+// `color X red R …`: a whole colour (with `color`, any expression), then
+// components that override it. `channels` says what a float base means.
+Num Interpreter::evalColourNode(const Node& n, ColourChannels channels) {
+    Num c;
+    c.dim = 5;
+    c.colour = true;
+    std::size_t i = 0;
+    if (n.flags) c = Num::fromColour(evalColour(n[i++], channels));
+    for (; i < n.count; ++i) {
+        const Node& item = n[i];
+        const Num value = evalNum(item[0]);
+        auto needs = [&](int dim) {
+            if (!value.isFloat() && !(value.colour) && value.dim != dim)
+                fail(item[0], quote(wordText(item.word)) + " takes a float or a " +
+                                  std::to_string(dim) + "-component vector, found " + describe(value));
+        };
+        auto setAll = [&](std::initializer_list<int> slots) {
+            int k = 0;
+            for (int s : slots) c.v[s] = component(value, value.colour ? s : k++);
+        };
+        switch (item.word) {
+        case Word::Rgb: needs(3); setAll({0, 1, 2}); break;
+        case Word::Rgbf: needs(4); setAll({0, 1, 2, 3}); break;
+        case Word::Rgbt:
+            needs(4);
+            c.v[0] = component(value, 0);
+            c.v[1] = component(value, 1);
+            c.v[2] = component(value, 2);
+            c.v[4] = component(value, value.colour ? 4 : 3);
+            break;
+        case Word::Rgbft: needs(5); setAll({0, 1, 2, 3, 4}); break;
+        default: {
+            if (!value.isFloat())
+                fail(item[0], quote(wordText(item.word)) + " takes a float, found " +
+                                  describe(value));
+            const int slot = item.word == Word::Red     ? 0
+                             : item.word == Word::Green ? 1
+                             : item.word == Word::Blue  ? 2
+                             : item.word == Word::Filter ? 3
+                                                        : 4;
+            c.v[slot] = value.v[0];
+        }
+        }
+    }
+    return c;
+}
 
 Value Interpreter::eval(const Node& n) {
     switch (n.kind) {
@@ -175,7 +266,7 @@ Value Interpreter::eval(const Node& n) {
         case Word::Clock: return Num::scalar(options_.clock);
         case Word::ClockDelta: return Num::scalar(0.0);
         case Word::ClockOn: return Num::scalar(0.0);
-        case Word::Version: return Num::scalar(version_);
+        case Word::Version: return Num::scalar(versionHundredths_ / 100.0);
         case Word::True: case Word::On: case Word::Yes: return Num::scalar(1.0);
         case Word::False: case Word::Off: case Word::No: return Num::scalar(0.0);
         case Word::ImageWidth: return Num::scalar(options_.imageWidth);
@@ -260,50 +351,8 @@ Value Interpreter::eval(const Node& n) {
             fail(n, describe(a) + " has no " + quote(std::string(".") += wordText(n.word)) + " component");
         return Num::scalar(a.v[index]);
     }
-    case NodeKind::Colour: {
-        Num c;
-        c.dim = 5;
-        c.colour = true;
-        std::size_t i = 0;
-        if (n.flags) c = Num::fromColour(evalColour(n[i++]));
-        for (; i < n.count; ++i) {
-            const Node& item = n[i];
-            const Num value = evalNum(item[0]);
-            auto needs = [&](int dim) {
-                if (!value.isFloat() && !(value.colour) && value.dim != dim)
-                    fail(item[0], quote(wordText(item.word)) + " takes a float or a " +
-                                      std::to_string(dim) + "-component vector, found " + describe(value));
-            };
-            auto setAll = [&](std::initializer_list<int> slots) {
-                int k = 0;
-                for (int s : slots) c.v[s] = component(value, value.colour ? s : k++);
-            };
-            switch (item.word) {
-            case Word::Rgb: needs(3); setAll({0, 1, 2}); break;
-            case Word::Rgbf: needs(4); setAll({0, 1, 2, 3}); break;
-            case Word::Rgbt:
-                needs(4);
-                c.v[0] = component(value, 0);
-                c.v[1] = component(value, 1);
-                c.v[2] = component(value, 2);
-                c.v[4] = component(value, value.colour ? 4 : 3);
-                break;
-            case Word::Rgbft: needs(5); setAll({0, 1, 2, 3, 4}); break;
-            default: {
-                if (!value.isFloat())
-                    fail(item[0], quote(wordText(item.word)) + " takes a float, found " +
-                                      describe(value));
-                const int slot = item.word == Word::Red     ? 0
-                                 : item.word == Word::Green ? 1
-                                 : item.word == Word::Blue  ? 2
-                                 : item.word == Word::Filter ? 3
-                                                            : 4;
-                c.v[slot] = value.v[0];
-            }
-            }
-        }
-        return c;
-    }
+    case NodeKind::Colour:
+        return evalColourNode(n, ColourChannels::Rgbft);
     case NodeKind::Call:
         break;
     default:

@@ -2,6 +2,7 @@
 // order; a directive runs here and hands the entries of the branch it takes
 // back to the same handler, so #if and #while work alike in every block.
 #include <algorithm>
+#include <cmath>
 #include <fstream>
 
 #include "asos/lang/parse.hpp"
@@ -142,15 +143,48 @@ void Interpreter::applyDefines() {
 
 std::optional<SceneDescription> Interpreter::finish() {
     if (errorCount_ > 0) return std::nullopt;
-    scene_.version = version_;
+    applyVersionRules();
     scene_.objects = objects_.take();
     return std::move(scene_);
+}
+
+// POV-Ray 3.7's rules once the scene is read (its Parser::Run): the version
+// the scene ends with decides, and one without #version is read as 3.62.
+// Without assumed_gamma a scene older than 3.7 has gamma correction off and a
+// 3.7 scene gets assumed_gamma 1.0; POV-Ray warns of both, and of a scene
+// without #version.
+void Interpreter::applyVersionRules() {
+    const int version = versionSet_ ? versionHundredths_ : 362;
+    scene_.version = version / 100.0;
+    const SourceLoc scene{files_.front().name, 0, 0};
+    const std::string versionText =
+        versionSet_ ? "#version " + formatNumber(scene_.version) : "no #version, read as 3.62";
+    if (!assumedGammaSet_ && version < 370) {
+        scene_.globals.assumedGamma = std::nullopt;
+        diagnostics_.warning(scene, "assumed_gamma not specified, so gamma correction is turned off for "
+                                    "this scene older than POV-Ray 3.7 (" + versionText +
+                                    "), as POV-Ray does: its colours go to the image file as they are; "
+                                    "set assumed_gamma in global_settings to turn it on");
+    } else if (!assumedGammaSet_) {
+        scene_.globals.assumedGamma = 1.0;
+        diagnostics_.warning(scene, "assumed_gamma not specified in this POV-Ray 3.7 scene: it is 1.0, "
+                                    "as in POV-Ray, which may make this an error in future versions; "
+                                    "write 'assumed_gamma 1.0' in global_settings");
+    }
+    if (version < 350)
+        diagnostics_.warning(scene, "the scene ends with #version " + formatNumber(scene_.version) +
+                                        ": like POV-Ray 3.7, asos does not reproduce the defects of "
+                                        "POV-Ray 3.1 and earlier");
+    if (!versionSet_)
+        diagnostics_.warning(scene, "this scene has no #version directive: like POV-Ray 3.7, asos reads it "
+                                    "as a scene older than 3.7; start it with '#version 3.7;'");
 }
 
 // --- entries and directives -----------------------------------------------------------
 
 void Interpreter::runEntries(std::span<const Node> entries, EntryHandler handle) {
     for (const Node& n : entries) {
+        if (n.kind != NodeKind::Version) statementRun_ = true;
         try {
             switch (n.kind) {
             case NodeKind::If: case NodeKind::While: case NodeKind::For: case NodeKind::Declare:
@@ -255,11 +289,22 @@ void Interpreter::runDirective(const Node& n, EntryHandler handle) {
         runInclude(n, handle);
         return;
     case NodeKind::Version: {
+        // POV-Ray 3.7 expects #version first; one after anything else (an
+        // #include that holds it included) is late, and it says so.
+        const bool late = !versionSet_ && statementRun_;
+        statementRun_ = true;
         const double v = evalFloat(n[0]);
-        if (v > 3.7 + kPovEpsilon)
+        // POV-Ray keeps the version in hundredths, rounded: 3.704 is 3.7.
+        const double hundredths = std::floor(v * 100.0 + 0.5);
+        if (hundredths > 370)
             fail(n[0], "#version " + formatNumber(v) + " is newer than POV-Ray 3.7, which asos follows");
         if (v < 1.0) fail(n[0], "#version " + formatNumber(v) + " is not a POV-Ray version");
-        version_ = v;
+        versionHundredths_ = static_cast<int>(hundredths);
+        versionSet_ = true;
+        if (late)
+            report(Severity::Warning, n,
+                   "other statements come before the first #version: POV-Ray 3.7 expects #version "
+                   "as the first statement of a scene");
         return;
     }
     case NodeKind::Debug:

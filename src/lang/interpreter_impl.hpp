@@ -89,6 +89,12 @@ inline std::string quote(std::string_view word) {
 std::string describe(const Value& v);
 std::string describe(const Num& n);
 
+// What a colour carries where it is used, as POV-Ray's Parse_Colour reads
+// it: all five components for a pigment's or the background's colour; red,
+// green and blue only for a light's, ambient, reflection and ambient_light,
+// where a float is a grey (`color 1.5` is rgb 1.5).
+enum class ColourChannels : std::uint8_t { Rgbft, Rgb };
+
 // The current statement is dropped; its error has been reported.
 struct Abandon {};
 // Interpretation stops (#error, too many errors, a syntax error in an include).
@@ -161,8 +167,11 @@ public:
     int evalInt(const Node& n, int min);
     bool evalBool(const Node& n);
     Vec3 evalVector(const Node& n);
-    Color evalColour(const Node& n);
-    Color toColour(const Num& value, const Node& at);
+    Color evalColour(const Node& n, ColourChannels channels = ColourChannels::Rgbft);
+    Color toColour(const Num& value, const Node& at, ColourChannels channels = ColourChannels::Rgbft);
+    Num evalColourNode(const Node& n, ColourChannels channels);
+    Vec3 evalRgb(const Node& n, std::string_view usedAs);
+    Color checkOpaque(const Color& c, const Node& at);
     std::string evalString(const Node& n);
     const Value* lookup(std::uint32_t id) const;
 
@@ -188,6 +197,7 @@ private:
     bool truth(const Node& condition);
     void countIteration(const Node& at);
     std::optional<SceneDescription> finish();
+    void applyVersionRules();
 
     // items.cpp
     void placeObject(ObjectTree&& tree);
@@ -209,7 +219,12 @@ private:
     NameTable names_;
     // scopes_[0] is global; each #include adds one for its #local names.
     std::vector<std::unordered_map<std::uint32_t, Value>> scopes_;
-    double version_ = 3.7;
+    // POV-Ray's language version, in hundredths as it keeps it. `version`
+    // reads 3.7 until a #version sets it; a scene without one is read as 3.62.
+    int versionHundredths_ = 370;
+    bool versionSet_ = false;
+    bool statementRun_ = false;    // something ran before: a #version now is late
+    bool assumedGammaSet_ = false;
 
     std::deque<SourceFile> files_;  // every file read, kept for error lines
     std::unordered_map<std::string, SourceFile*> filesByPath_;  // included files, by canonical path

@@ -338,8 +338,8 @@ std::shared_ptr<const Pigment> Interpreter::evalPigment(const Node& block, const
         } else if (n.kind == NodeKind::Item && n.word == Word::Checker) {
             pattern(n);
             p->kind = Pigment::Kind::Checker;
-            p->color1 = n.count > 0 ? evalColour(n[0]) : kCheckerBlue;
-            p->color2 = n.count > 1 ? evalColour(n[1]) : kCheckerGreen;
+            p->color1 = n.count > 0 ? checkOpaque(evalColour(n[0]), n[0]) : kCheckerBlue;
+            p->color2 = n.count > 1 ? checkOpaque(evalColour(n[1]), n[1]) : kCheckerGreen;
         } else if (n.kind == NodeKind::Item && n.word == Word::Brick) {
             pattern(n);
             // As POV-Ray: a brick pigment given brick again keeps its size and
@@ -350,8 +350,8 @@ std::shared_ptr<const Pigment> Interpreter::evalPigment(const Node& block, const
                 p->mortar = fresh.mortar;
             }
             p->kind = Pigment::Kind::Brick;
-            p->color1 = n.count > 0 ? evalColour(n[0]) : kBrickMortar;
-            p->color2 = n.count > 1 ? evalColour(n[1]) : kBrickRed;
+            p->color1 = n.count > 0 ? checkOpaque(evalColour(n[0]), n[0]) : kBrickMortar;
+            p->color2 = n.count > 1 ? checkOpaque(evalColour(n[1]), n[1]) : kBrickRed;
         } else if (n.kind == NodeKind::Item && (n.word == Word::BrickSize || n.word == Word::Mortar)) {
             // Pattern modifiers, like the transforms (POV-Ray reads them in the
             // same loop), of a brick pigment only.
@@ -376,7 +376,7 @@ std::shared_ptr<const Pigment> Interpreter::evalPigment(const Node& block, const
             } else if (const auto* num = std::get_if<Num>(&v)) {
                 pattern(n);
                 p->kind = Pigment::Kind::Solid;
-                p->color1 = toColour(*num, n);
+                p->color1 = checkOpaque(toColour(*num, n), n);
                 p->color2 = Color{};
             } else {
                 fail(n, "expected a colour or a pigment, found " + describe(v));
@@ -398,7 +398,7 @@ std::shared_ptr<const Finish> Interpreter::evalFinish(const Node& block, const F
             return;
         }
         switch (n.word) {
-        case Word::Ambient: f->ambient = evalColour(n[0]).rgb; break;
+        case Word::Ambient: f->ambient = evalRgb(n[0], "ambient"); break;
         case Word::Diffuse: f->diffuse = evalFloat(n[0]); break;
         case Word::Brilliance: f->brilliance = evalFloat(n[0]); break;
         case Word::Phong: f->phong = evalFloat(n[0]); break;
@@ -410,7 +410,7 @@ std::shared_ptr<const Finish> Interpreter::evalFinish(const Node& block, const F
             f->roughness = r;
             break;
         }
-        case Word::Reflection: f->reflection = evalColour(n[0]).rgb; break;
+        case Word::Reflection: f->reflection = evalRgb(n[0], "reflection"); break;
         default: fail(n, "this is not a finish item");
         }
     };
@@ -460,7 +460,7 @@ Light Interpreter::evalLight(const Node& block) {
         fail(args[0], "expected the position of the light, found " + describe(first));
     }
     if (block.flags >= 2)
-        l.color = evalColour(args[1]).rgb;
+        l.color = evalRgb(args[1], "a light's colour");
     else if (!fromIdentifier)
         fail(block, "a light_source needs a colour after its position");
 
@@ -621,10 +621,11 @@ void Interpreter::applyGlobalSettings(const Node& block) {
             const double v = evalFloat(n[0]);
             if (!(v > 0)) fail(n[0], "assumed_gamma must be positive, not " + formatNumber(v));
             g.assumedGamma = v;
+            assumedGammaSet_ = true;
             break;
         }
         case Word::MaxTraceLevel: g.maxTraceLevel = evalInt(n[0], 1); break;
-        case Word::AmbientLight: g.ambientLight = evalColour(n[0]).rgb; break;
+        case Word::AmbientLight: g.ambientLight = evalRgb(n[0], "ambient_light"); break;
         case Word::Asos: g.asos = evalAsos(n, g.asos); break;
         default: fail(n, "this is not a global setting");
         }

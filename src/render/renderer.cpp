@@ -78,9 +78,10 @@ TileRenderResult renderClassic(const RayTracer& tracer, const CameraModel& camer
     auto eyeRadiance = [&](RenderCounters& counters) {
         return EyeRadiance{tracer, counters, scratch.local(), s.seed};
     };
-    // POV-Ray compares anti-aliasing samples in the scene's working gamma.
+    // POV-Ray compares anti-aliasing samples in the scene's working gamma;
+    // with gamma correction off it compares the values as they are.
     AdaptiveSettings antialias = s.adaptive;
-    antialias.assumedGamma = tracer.description().globals.assumedGamma;
+    antialias.assumedGamma = tracer.description().globals.assumedGamma.value_or(1.0);
     switch (s.method) {
         case RenderMethod::Single:
             return renderTiles(s.width, s.height, options, [&](int x, int y, RenderCounters& c) {

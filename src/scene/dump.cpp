@@ -186,8 +186,14 @@ void writeDump(std::ostream& out, const SceneDescription& scene, const DumpOptio
     w.num(scene.version) << ";\n\n";
 
     const GlobalSettings& g = scene.globals;
-    w << "global_settings {\n  assumed_gamma ";
-    w.num(g.assumedGamma) << "\n  max_trace_level " << g.maxTraceLevel << "\n  ambient_light ";
+    w << "global_settings {\n";
+    // No assumed_gamma and a version before 3.7 (written above) turn gamma
+    // correction off, as they did in the scene.
+    if (g.assumedGamma) {
+        w << "  assumed_gamma ";
+        w.num(*g.assumedGamma) << '\n';
+    }
+    w << "  max_trace_level " << g.maxTraceLevel << "\n  ambient_light ";
     w.rgb(g.ambientLight) << '\n';
     w.asos(g.asos, "  ");
     w << "}\n\nbackground { ";

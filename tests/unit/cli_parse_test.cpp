@@ -26,12 +26,25 @@ fs::path scene(const std::string& name, const std::string& text) {
 }  // namespace
 
 TEST_CASE("asos parse prints the dump and exits 0", "[cli]") {
-    scene("good.pov", "sphere { <0, 1, 0>, 0.5 }\n");
+    scene("good.pov", "#version 3.7; global_settings { assumed_gamma 1 }\nsphere { <0, 1, 0>, 0.5 }\n");
     const Result r = runAsos({"parse", "good.pov"});
     CHECK(r.exitCode == 0);
     CHECK(r.err.empty());
     CHECK(r.out.rfind("// asos scene description", 0) == 0);
-    CHECK(r.out.find("// good.pov:1:1\nsphere {\n  <0, 1, 0>, 0.5\n") != std::string::npos);
+    CHECK(r.out.find("// good.pov:2:1\nsphere {\n  <0, 1, 0>, 0.5\n") != std::string::npos);
+}
+
+TEST_CASE("asos parse prints warnings on stderr and still exits 0", "[cli]") {
+    scene("old.pov", "sphere { <0, 1, 0>, 0.5 }\n");
+    const Result r = runAsos({"parse", "old.pov"});
+    CHECK(r.exitCode == 0);
+    CHECK(r.err ==
+          "old.pov: warning: assumed_gamma not specified, so gamma correction is turned off for this scene "
+          "older than POV-Ray 3.7 (no #version, read as 3.62), as POV-Ray does: its colours go to the image "
+          "file as they are; set assumed_gamma in global_settings to turn it on\n"
+          "old.pov: warning: this scene has no #version directive: like POV-Ray 3.7, asos reads it as a "
+          "scene older than 3.7; start it with '#version 3.7;'\n");
+    CHECK(r.out.rfind("// asos scene description", 0) == 0);
 }
 
 TEST_CASE("asos parse reports errors with the source line and a caret, exit 1", "[cli]") {

@@ -21,10 +21,17 @@
 
 namespace asos::test {
 
+// A rendered scene and how `asos render` writes it: in the scene's working
+// gamma (none for a scene older than 3.7 without assumed_gamma).
+struct RenderedScene {
+    Image color;
+    WriteOptions encoding;
+};
+
 // Renders `scene` at the settings' size on two threads; `defines` are
 // declared before the scene runs (as -D does).
-inline Image renderSceneFile(const std::filesystem::path& scene, RenderSettings settings,
-                             std::vector<std::pair<std::string, std::string>> defines = {}) {
+inline RenderedScene renderSceneForFile(const std::filesystem::path& scene, RenderSettings settings,
+                                        std::vector<std::pair<std::string, std::string>> defines = {}) {
     lang::InterpreterOptions options;
     options.imageWidth = settings.width;
     options.imageHeight = settings.height;
@@ -36,19 +43,26 @@ inline Image renderSceneFile(const std::filesystem::path& scene, RenderSettings 
     settings.threads = 2;
     std::optional<RenderOutput> out = render(*description, settings, diagnostics);
     REQUIRE(out);
-    return std::move(out->color);
+    return {std::move(out->color), {.assumedGamma = description->globals.assumedGamma}};
 }
 
-// Writes `rendered` as PNG (the comparison reads its encoded values back)
-// and compares it with `reference`, which is first rewritten from it when
-// updating and `ownReference` (references made by another program are not
-// ours). The rendered image and the difference stay only when they differ.
-inline void compareWithReference(const Image& rendered, const std::filesystem::path& reference,
+// The image alone, for scenes whose working gamma is 1 (the default
+// encoding).
+inline Image renderSceneFile(const std::filesystem::path& scene, RenderSettings settings,
+                             std::vector<std::pair<std::string, std::string>> defines = {}) {
+    return renderSceneForFile(scene, std::move(settings), std::move(defines)).color;
+}
+
+// Writes `rendered` as PNG in its encoding (the comparison reads the file's
+// values back) and compares it with `reference`, which is first rewritten
+// from it when updating and `ownReference` (references made by another
+// program are not ours). The rendered image and the difference stay only when they differ.
+inline void compareWithReference(const RenderedScene& rendered, const std::filesystem::path& reference,
                                  bool ownReference = true) {
     const std::filesystem::path ours = goldenOutput(reference);
     const std::filesystem::path diff = std::filesystem::path(ours).replace_extension(".diff.png");
     std::filesystem::remove(diff);
-    REQUIRE(writeImage(rendered, ours).ok());
+    REQUIRE(writeImage(rendered.color, ours, rendered.encoding).ok());
     if (ownReference && updatingGoldens())
         std::filesystem::copy_file(ours, reference, std::filesystem::copy_options::overwrite_existing);
     const ReadResult mine = readImage(ours);
@@ -63,6 +77,12 @@ inline void compareWithReference(const Image& rendered, const std::filesystem::p
                                        << ", difference " << diff.string());
     CHECK(cmp.passed);
     if (cmp.passed) std::filesystem::remove(ours);
+}
+
+// An image in the default encoding (working gamma 1).
+inline void compareWithReference(const Image& rendered, const std::filesystem::path& reference,
+                                 bool ownReference = true) {
+    compareWithReference(RenderedScene{rendered, {}}, reference, ownReference);
 }
 
 }  // namespace asos::test

@@ -84,6 +84,27 @@ TEST_CASE("8-bit encoding matches the codes POV-Ray 3.7 writes", "[image]") {
     CHECK(encodeSrgb8(0.5, 2.2) == encodeSrgb8(std::pow(0.5, 2.2)));
 }
 
+// Measured: `povray` on a `#version 3.6` scene without assumed_gamma (gamma
+// correction off), flat patches of these values, +FN8, +FN16 and +FE.
+TEST_CASE("With gamma correction off values are written as they are", "[image]") {
+    CHECK(encodeSrgb8(0.2, std::nullopt) == 51);
+    CHECK(encodeSrgb8(0.5, std::nullopt) == 128);
+    CHECK(encodeSrgb8(0.05, std::nullopt) == 13);
+    CHECK(encodeSrgb8(1.5, std::nullopt) == 255);
+    CHECK(encodeSrgb8(-0.2, std::nullopt) == 0);
+    CHECK(encodeSrgb16(0.2, std::nullopt) == 13107);
+    CHECK(encodeSrgb16(0.5, std::nullopt) == 32768);
+    CHECK(encodeSrgb16(0.05, std::nullopt) == 3277);
+    // EXR holds the working value decoded as sRGB, the curve continued
+    // outside [0, 1] (POV-Ray's half floats: 0.0331116, 0.213989, 2.53711,
+    // 12.8281, -0.01548).
+    CHECK(workingToLinear(0.2, std::nullopt) == Approx(0.0331116).epsilon(1e-3));
+    CHECK(workingToLinear(0.5, std::nullopt) == Approx(0.213989).epsilon(1e-3));
+    CHECK(workingToLinear(1.5, std::nullopt) == Approx(2.53711).epsilon(1e-3));
+    CHECK(workingToLinear(3.0, std::nullopt) == Approx(12.8281).epsilon(1e-3));
+    CHECK(workingToLinear(-0.2, std::nullopt) == Approx(-0.01548).epsilon(1e-3));
+}
+
 TEST_CASE("PNG and TIFF and EXR files round-trip through OpenImageIO", "[image]") {
     const fs::path dir = outputDir("roundtrip");
     const Image img = sampleImage();

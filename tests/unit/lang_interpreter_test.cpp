@@ -141,6 +141,79 @@ TEST_CASE("colours", "[lang][interpreter]") {
     CHECK(ok(gray).background.rgb.x == Approx(0.297));
 }
 
+// Each use of a colour as POV-Ray's Parse_Colour reads it (checked with
+// `povray`): a surface's colour with filter or transmit would be transparent,
+// which asos refuses; a light's colour, ambient, reflection and ambient_light
+// keep red, green and blue, a float there being a grey.
+TEST_CASE("filter and transmit where a colour is used", "[lang][interpreter]") {
+    const std::string v37 = "#version 3.7; global_settings { assumed_gamma 1 }\n";
+    auto pigmentOf = [&](const std::string& pigment) {
+        Run r = run(v37 + "sphere { 0, 1 pigment { " + pigment + " } }");
+        INFO(r.errors());
+        CHECK(r.diagnostics.all().empty());
+        REQUIRE(r.scene);
+        return r.scene->objects.at(0).texture->pigment;
+    };
+    // Zeros, as the include files write them (rgbt <r, g, b, 0>), are opaque.
+    CHECK(pigmentOf("rgbt <0.5, 0.6, 0.7, 0>").color1 == Color{{0.5, 0.6, 0.7}, 0, 0});
+    CHECK(pigmentOf("color red 1 filter 0 transmit 0").color1 == Color{{1, 0, 0}, 0, 0});
+    CHECK(pigmentOf("rgbf <1, 1, 1, 0.5> filter 0").color1 == Color{{1, 1, 1}, 0, 0});
+    CHECK(pigmentOf("checker rgbt <1, 1, 1, 0> rgbf <0, 0, 0, 0>").color2 == Color{{0, 0, 0}, 0, 0});
+
+    Run transparent = run(v37 + "#declare Glass = rgbf <1, 1, 1, 0.9>;\n"
+                                "sphere { 0, 1 pigment { Glass } }\n"
+                                "sphere { 0, 1 pigment { color 0.5 } }\n"
+                                "plane { y, 0 pigment { checker rgb 1 rgbt <0, 0, 0, 0.25> } }\n"
+                                "plane { y, 0 pigment { brick rgb 1 transmit 1 } }\n");
+    CHECK_FALSE(transparent.scene);
+    CHECK(transparent.errors() ==
+          "3:25: transparency is not supported by asos: this colour's filter 0.9 would make the surface "
+          "transparent in POV-Ray\n"
+          "4:25: transparency is not supported by asos: this colour's filter 0.5 and transmit 0.5 would make "
+          "the surface transparent in POV-Ray; a float as a colour sets filter and transmit too: write "
+          "'rgb 0.5' for a grey\n"
+          "5:38: transparency is not supported by asos: this colour's transmit 0.25 would make the surface "
+          "transparent in POV-Ray\n"
+          "6:30: transparency is not supported by asos: this colour's transmit 1 would make the surface "
+          "transparent in POV-Ray\n");
+
+    // A float is a grey where only red, green and blue are read: no warning.
+    Run grey = run(v37 + "global_settings { ambient_light color 0.8 }\n"
+                         "light_source { 0, color 1.5 }\n"
+                         "light_source { 0, color 0.5 green 1 }\n"
+                         "sphere { 0, 1 finish { ambient color 0.3 reflection 0.2 } }\n");
+    const auto& g = ok(grey);
+    CHECK(grey.diagnostics.all().empty());
+    CHECK(g.globals.ambientLight == Vec3(0.8));
+    CHECK(g.lights.at(0).color == Vec3(1.5));
+    CHECK(g.lights.at(1).color == Vec3(0.5, 1, 0.5));
+    CHECK(g.objects.at(0).texture->finish.ambient == Vec3(0.3));
+    CHECK(g.objects.at(0).texture->finish.reflection == Vec3(0.2));
+
+    // Filter and transmit given otherwise are ignored, with POV-Ray's warning.
+    Run ignored = run(v37 + "#declare Half = color 0.5;\n"
+                            "light_source { 0, Half }\n"
+                            "light_source { 0, rgb 1 transmit 0.3 }\n"
+                            "sphere { 0, 1 finish { ambient rgbf <0.1, 0.1, 0.1, 0.5> } }\n");
+    const auto& i = ok(ignored);
+    CHECK(i.lights.at(0).color == Vec3(0.5));
+    CHECK(i.lights.at(1).color == Vec3(1));
+    CHECK(i.objects.at(0).texture->finish.ambient == Vec3(0.1));
+    CHECK(ignored.errors() ==
+          "3:19: filter 0.5 and transmit 0.5 have no effect on a light's colour, which is red, green and "
+          "blue only (POV-Ray warns and ignores them too)\n"
+          "4:19: transmit 0.3 has no effect on a light's colour, which is red, green and blue only "
+          "(POV-Ray warns and ignores it too)\n"
+          "5:32: filter 0.5 has no effect on ambient, which is red, green and blue only (POV-Ray warns and "
+          "ignores it too)\n");
+    for (const auto& d : ignored.diagnostics.all()) CHECK(d.severity == Severity::Warning);
+
+    // The background keeps all five (its transmit darkens it: shading_test).
+    Run background = run(v37 + "background { rgbft <0.2, 0.3, 0.4, 0.5, 0.25> }");
+    CHECK(ok(background).background == Color{{0.2, 0.3, 0.4}, 0.5, 0.25});
+    CHECK(background.diagnostics.all().empty());
+}
+
 TEST_CASE("#if, #while, #for, #declare, #local, #undef", "[lang][interpreter]") {
     Run run1 = run(R"(
         #declare N = 0;
@@ -389,6 +462,74 @@ TEST_CASE("global settings, background, asos options, #version", "[lang][interpr
     CHECK(scene.objects[0].asos.eps == 0.5);
     CHECK(scene.objects[0].asos.jitter == true);
     CHECK(scene.objects[0].noShadow);
+}
+
+// POV-Ray 3.7's rules (its Parser::Run and #version, checked with `povray`):
+// the version the scene ends with decides, a scene without #version is read
+// as 3.62; without assumed_gamma a scene older than 3.7 has gamma correction
+// off and a 3.7 scene gets 1.0.
+TEST_CASE("#version and a missing assumed_gamma as in POV-Ray 3.7", "[lang][interpreter]") {
+    const std::string body = "sphere { 0, 1 }\n";
+    auto messages = [](const Run& r) {
+        std::vector<std::string> m;
+        for (const auto& d : r.diagnostics.all()) {
+            CHECK(d.severity == Severity::Warning);
+            m.push_back(d.message.substr(0, d.message.find(':')));
+        }
+        return m;
+    };
+    using Strings = std::vector<std::string>;
+
+    Run none = run(body);
+    CHECK_FALSE(ok(none).globals.assumedGamma);
+    CHECK(ok(none).version == Approx(3.62));
+    CHECK(messages(none) == Strings{"assumed_gamma not specified, so gamma correction is turned off for this "
+                                    "scene older than POV-Ray 3.7 (no #version, read as 3.62), as POV-Ray does",
+                                    "this scene has no #version directive"});
+    CHECK(none.diagnostics.all()[0].loc.line == 0);
+    CHECK(*none.diagnostics.all()[0].loc.file == "t.pov");
+
+    Run v37 = run("#version 3.7;\n" + body);
+    CHECK(ok(v37).globals.assumedGamma == 1.0);
+    CHECK(messages(v37) == Strings{"assumed_gamma not specified in this POV-Ray 3.7 scene"});
+
+    Run v36 = run("#version 3.6;\n" + body);
+    CHECK_FALSE(ok(v36).globals.assumedGamma);
+    CHECK(ok(v36).version == Approx(3.6));
+
+    // assumed_gamma set: that gamma whatever the version, without a word.
+    for (const char* version : {"3.6", "3.7"}) {
+        Run set = run(std::string("#version ") + version + ";\nglobal_settings { assumed_gamma 2.2 }\n" + body);
+        CHECK(ok(set).globals.assumedGamma == 2.2);
+        CHECK(set.diagnostics.all().empty());
+    }
+
+    // The last #version decides, wherever it stands; a late first one is said.
+    Run ends36 = run("#version 3.7;\n" + body + "#version 3.6;\n");
+    CHECK_FALSE(ok(ends36).globals.assumedGamma);
+    CHECK(ends36.diagnostics.all().size() == 1);
+    Run late = run(body + "#version 3.7;\n");
+    CHECK(ok(late).globals.assumedGamma == 1.0);
+    CHECK(messages(late) == Strings{"other statements come before the first #version",
+                                    "assumed_gamma not specified in this POV-Ray 3.7 scene"});
+    CHECK(late.diagnostics.all()[0].loc.line == 2);
+    Run inIf = run("#if (1) #version 3.7; #end\nglobal_settings { assumed_gamma 1 }\n");
+    CHECK(messages(inIf) == Strings{"other statements come before the first #version"});
+
+    // `version` reads 3.7 until a #version; POV-Ray keeps hundredths, rounded.
+    CHECK(floatOf("version") == Approx(3.7));
+    CHECK(floatOf("version", "#version 3.14159;") == Approx(3.14));
+    Run rounded = run("#version 3.704;\n" + body);
+    CHECK(ok(rounded).version == Approx(3.7));
+    CHECK(ok(rounded).globals.assumedGamma == 1.0);
+    CHECK_THAT(run("#version 3.705;").errors(), Contains("1:10: #version 3.705 is newer than POV-Ray 3.7"));
+
+    Run old = run("#version 3.1;\nglobal_settings { assumed_gamma 1 }\n");
+    CHECK(messages(old) == Strings{"the scene ends with #version 3.1"});
+
+    // No warning about the end of a scene that has errors.
+    Run broken = run("sphere { 0, -1 }\n");
+    CHECK(broken.diagnostics.all().size() == 1);
 }
 
 TEST_CASE("every semantic error of a file is reported", "[lang][interpreter]") {

@@ -25,6 +25,7 @@ namespace fs = std::filesystem;
 using namespace asos;
 using test::compareWithReference;
 using test::renderSceneFile;
+using test::renderSceneForFile;
 
 namespace {
 
@@ -56,11 +57,13 @@ RenderSettings settingsFor(RenderMethod method, int width, int height) {
 }
 
 // A scene of tests/golden/povray rendered by `method` at 160 x 90 against
-// POV-Ray's render of it with `povrayOptions`, kept as <scene><suffix>.png.
+// POV-Ray's render of it with `povrayOptions`, kept as <scene><suffix>.png;
+// written in the scene's working gamma, as both programs write it.
 void compareWithPovray(const std::string& scene, RenderMethod method, const std::string& suffix,
                        const std::string& povrayOptions) {
     INFO(scene);
-    compareWithReference(renderSceneFile(sourceDir("povray") / (scene + ".pov"), settingsFor(method, 160, 90)),
+    compareWithReference(renderSceneForFile(sourceDir("povray") / (scene + ".pov"),
+                                            settingsFor(method, 160, 90)),
                          povrayReference(scene, scene + suffix, povrayOptions), false);
 }
 
@@ -69,25 +72,26 @@ void compareWithPovray(const std::string& scene, RenderMethod method, const std:
 // Every scene of tests/golden/povray against POV-Ray's own render of it:
 // camera mappings (tilted perspective, orthographic), the checker pattern, the
 // background and 8-bit encoding (flat_*), the lighting model (lighting), the
-// recursion of reflection (reflection), the six primitives (primitives) and
-// the brick pattern (brick).
+// recursion of reflection (reflection), the six primitives (primitives), the
+// brick pattern (brick), and the working gamma: none (gamma_off, a scene
+// without #version or assumed_gamma) and 2.2 (assumed_gamma).
 TEST_CASE("The renderer matches POV-Ray with one ray per pixel", "[golden][povray]") {
-    for (const char* scene :
-         {"flat_perspective", "flat_orthographic", "lighting", "reflection", "primitives", "brick"})
+    for (const char* scene : {"flat_perspective", "flat_orthographic", "lighting", "reflection", "primitives",
+                              "brick", "gamma_off", "assumed_gamma"})
         compareWithPovray(scene, RenderMethod::Single, "", "-A");
 }
 
 // POV-Ray's defaults: threshold 0.3, depth +R3 (two subdivisions); -J turns
 // its jitter off so that the sample positions coincide.
 TEST_CASE("The adaptive method matches POV-Ray's +AM2", "[golden][povray]") {
-    for (const char* scene : {"flat_perspective", "lighting", "primitives", "brick"})
+    for (const char* scene : {"flat_perspective", "lighting", "primitives", "brick", "gamma_off", "assumed_gamma"})
         compareWithPovray(scene, RenderMethod::Adaptive, "_am2", "+A0.3 +AM2 +R3 -J");
 }
 
 // POV-Ray's default method with its default threshold and depth, over its
 // default 32-pixel render blocks (+BS32), whose borders the method sees.
 TEST_CASE("The am1 method matches POV-Ray's +AM1", "[golden][povray]") {
-    for (const char* scene : {"flat_perspective", "lighting", "primitives", "brick"})
+    for (const char* scene : {"flat_perspective", "lighting", "primitives", "brick", "gamma_off", "assumed_gamma"})
         compareWithPovray(scene, RenderMethod::Am1, "_am1", "+A0.3 +AM1 +R3 -J");
 }
 

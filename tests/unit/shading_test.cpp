@@ -54,6 +54,21 @@ TEST_CASE("Ambient is pigment times ambient times ambient_light", "[shading]") {
     CHECK(refl.calls == 0);
 }
 
+// Measured with `povray` (no alpha output): rgbt <0.2, 0.3, 0.4, 0.7> gives
+// codes 69, 85, 97 seen directly and in a mirror, rgbf the codes of rgb, and a
+// transmit of 1.5 or -0.5 scales by -0.5 or 1.5 (reflected, unclipped).
+TEST_CASE("The background's transmit darkens it, its filter does nothing", "[shading]") {
+    SceneDescription scene;
+    scene.background = {{0.2, 0.3, 0.4}, 0.0, 0.0};
+    CHECK(near(backgroundColor(scene), {0.2, 0.3, 0.4}));
+    scene.background.filter = 0.7;
+    CHECK(near(backgroundColor(scene), {0.2, 0.3, 0.4}));
+    scene.background = {{0.2, 0.3, 0.4}, 0.5, 0.25};
+    CHECK(near(backgroundColor(scene), {0.15, 0.225, 0.3}));
+    scene.background.transmit = 1.5;
+    CHECK(near(backgroundColor(scene), {-0.1, -0.15, -0.2}));
+}
+
 TEST_CASE("Diffuse follows Lambert's cosine raised to brilliance", "[shading]") {
     const Vec3 pigment{0.8, 0.6, 0.4};
     Finish f;

@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <optional>
 
 namespace asos {
 
@@ -24,21 +25,32 @@ inline double srgbDecode(double encoded) {
 
 // A rendered value in the scene's working space (POV-Ray's assumed_gamma)
 // to linear light: POV-Ray decodes with the working gamma before encoding for
-// the file. With assumed_gamma 1 (the only value the project promises to
-// match) this is the identity.
-inline double workingToLinear(double value, double assumedGamma) {
-    if (assumedGamma == 1.0) return value;
-    return value <= 0.0 ? 0.0 : std::pow(value, assumedGamma);
+// the file. With assumed_gamma 1 this is the identity. No gamma (std::nullopt)
+// is POV-Ray's gamma correction turned off, for a scene older than 3.7 that
+// does not set assumed_gamma: its working space is then the display's, sRGB,
+// and the decoding continues both pieces of the curve outside [0, 1]
+// (measured: povray writes 1.5 as 2.537 and -0.2 as -0.01548 in EXR).
+inline double workingToLinear(double value, std::optional<double> assumedGamma) {
+    if (!assumedGamma)
+        return value <= 0.04045 ? value / 12.92 : std::pow((value + 0.055) / 1.055, 2.4);
+    if (*assumedGamma == 1.0) return value;
+    return value <= 0.0 ? 0.0 : std::pow(value, *assumedGamma);
+}
+
+// The sRGB-encoded value, in [0, 1], that an integer file holds for a working
+// value. With gamma correction off the value is already encoded: POV-Ray
+// writes it as it is (measured: 0.2, 0.5, 0.05 become codes 51, 128, 13).
+inline double workingToSrgb(double value, std::optional<double> assumedGamma) {
+    if (!assumedGamma) return value > 0.0 ? std::min(value, 1.0) : 0.0;
+    return srgbEncode(workingToLinear(value, assumedGamma));
 }
 
 // The file code for a value: sRGB-encoded, clipped, rounded to nearest.
-inline std::uint8_t encodeSrgb8(double value, double assumedGamma = 1.0) {
-    return static_cast<std::uint8_t>(
-        std::lround(srgbEncode(workingToLinear(value, assumedGamma)) * 255.0));
+inline std::uint8_t encodeSrgb8(double value, std::optional<double> assumedGamma = 1.0) {
+    return static_cast<std::uint8_t>(std::lround(workingToSrgb(value, assumedGamma) * 255.0));
 }
-inline std::uint16_t encodeSrgb16(double value, double assumedGamma = 1.0) {
-    return static_cast<std::uint16_t>(
-        std::lround(srgbEncode(workingToLinear(value, assumedGamma)) * 65535.0));
+inline std::uint16_t encodeSrgb16(double value, std::optional<double> assumedGamma = 1.0) {
+    return static_cast<std::uint16_t>(std::lround(workingToSrgb(value, assumedGamma) * 65535.0));
 }
 
 }  // namespace asos

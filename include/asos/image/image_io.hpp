@@ -4,6 +4,7 @@
 // but cannot write, through a writer of our own (src/image/pfm.cpp). Nothing
 // here prints: every failure comes back as a message.
 #include <filesystem>
+#include <optional>
 #include <string>
 
 #include "asos/image/image.hpp"
@@ -24,7 +25,9 @@ enum class Transfer { Auto, Srgb, Linear, Raw };
 struct WriteOptions {
     SampleFormat format = SampleFormat::Auto;
     Transfer transfer = Transfer::Auto;
-    double assumedGamma = 1.0;  // the scene's working gamma (global_settings)
+    // The scene's working gamma (GlobalSettings::assumedGamma); none: gamma
+    // correction off, values written as they are (asos/image/encoding.hpp).
+    std::optional<double> assumedGamma = 1.0;
 };
 
 struct IoStatus {

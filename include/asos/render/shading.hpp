@@ -112,8 +112,12 @@ inline bool usesLights(const Finish& f) {
     return f.diffuse != 0.0 || f.phong != 0.0 || f.specular != 0.0;
 }
 
-// The colour of a ray that hits nothing.
-inline Vec3 backgroundColor(const SceneDescription& scene) { return scene.background.rgb; }
+// The colour of a ray that hits nothing. POV-Ray, writing no alpha channel,
+// composes the background over black: its transmit darkens it wherever it is
+// seen, reflections included, and its filter does nothing (measured).
+inline Vec3 backgroundColor(const SceneDescription& scene) {
+    return scene.background.rgb * (1.0 - scene.background.transmit);
+}
 
 // The shaded colour of a surface point.
 //

@@ -137,7 +137,10 @@ struct Object {
 };
 
 struct GlobalSettings {
-    double assumedGamma = 1.0;
+    // The working gamma. None: POV-Ray's gamma correction is off, as for a
+    // scene older than 3.7 (by its #version, or without one) that does not set
+    // assumed_gamma; its colours are then written to files as they are.
+    std::optional<double> assumedGamma = 1.0;
     int maxTraceLevel = 5;
     Vec3 ambientLight{1.0};
     AsosOptions asos;
@@ -148,7 +151,9 @@ struct SceneDescription {
     std::vector<Light> lights;
     std::vector<Object> objects;  // unions are flattened; order of appearance
     GlobalSettings globals;
-    Color background{};
+    Color background{};  // its transmit darkens it (POV-Ray without alpha output)
+    // The POV-Ray version the scene is read as, in hundredths as POV-Ray keeps
+    // it: its last #version, or 3.62 when it has none (POV-Ray's assumption).
     double version = 3.7;
 };
 

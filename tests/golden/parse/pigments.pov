@@ -1,16 +1,19 @@
 // pigment: colours in every POV-Ray form, checker with given and default
-// colours, declared pigments, pattern transforms.
+// colours, declared pigments, pattern transforms. Filter and transmit are
+// zero: anything else would be transparent, which asos refuses
+// (tests/golden/diag/semantic_transparent_colour.pov).
 #declare Orange = color rgb <1, 0.5, 0>;
 #declare Stripes = pigment { checker color rgb 1, color rgb 0 scale <1, 10, 1> }
 sphere { 0, 1 pigment { color rgb <1, 0, 0> } }
 sphere { 0, 1 pigment { rgb 0.5 } }
 sphere { 0, 1 pigment { Orange } }
-sphere { 0, 1 pigment { color Orange filter 0.5 } }
-sphere { 0, 1 pigment { colour red 0.2 green 0.4 blue 0.6 transmit 0.1 } }
-sphere { 0, 1 pigment { rgbf <1, 1, 1, 0.9> } }
-sphere { 0, 1 pigment { rgbt <1, 1, 1, 0.3> } }
-sphere { 0, 1 pigment { rgbft <0.1, 0.2, 0.3, 0.4, 0.5> } }
-sphere { 0, 1 pigment { color 0.5 } }  // a float is all five components
+sphere { 0, 1 pigment { color Orange filter 0 } }
+sphere { 0, 1 pigment { colour red 0.2 green 0.4 blue 0.6 transmit 0 } }
+sphere { 0, 1 pigment { rgbf <1, 1, 1, 0> } }
+sphere { 0, 1 pigment { rgbt <1, 1, 1, 0> } }
+sphere { 0, 1 pigment { rgbft <0.1, 0.2, 0.3, 0, 0> } }
+sphere { 0, 1 pigment { rgbf <1, 1, 1, 0.5> filter 0 } }  // the last word counts
+sphere { 0, 1 pigment { color 0 } }  // a float is all five components
 sphere { 0, 1 pigment { checker } }  // POV-Ray's default blue and green
 sphere { 0, 1 pigment { checker color rgb <1, 0, 0> } }
 sphere { 0, 1 pigment { checker Orange, rgb 0 rotate <0, 0, 45> translate 0.5 } }
@@ -28,4 +31,4 @@ sphere { 0, 1 pigment { Stripes rgb <0, 1, 0> } }  // a declared pigment, then a
 // override it (POV-Ray 3.7 renders these): a declared colour, an arithmetic one.
 sphere { 0, 1 pigment { Orange green 1 } }
 sphere { 0, 1 pigment { Orange * 0.5 blue 1 } finish { ambient Orange red 0 } }
-sphere { 0, 1 pigment { checker Orange green 1, Orange transmit 0.5 } }
+sphere { 0, 1 pigment { checker Orange green 1, Orange transmit 0 } }
