@@ -76,12 +76,9 @@ struct ShadeRequest {
     double weight = 1.0;
 };
 
-// The pigment's colour at a world point. Checker: POV-Ray 3.7's rule in
-// pattern space, the parity of floor(x + e) + floor(y + e) + floor(z + e) with
-// e = kPovEpsilon (odd: color2). Brick: BrickPattern (brick: color2).
+// The pigment's colour at a world point: CheckerPattern and BrickPattern in
+// pattern space (1: color2).
 Color evaluatePigment(const Pigment& pigment, const Vec3& worldPoint);
-// 0 or 1 at a pattern-space point, as POV-Ray's checker pattern.
-int checkerValue(const Vec3& patternPoint);
 
 // POV-Ray's light fade (Attenuate_Light): with fade_power > 0,
 // 2 / (1 + (d / fade_distance)^fade_power), or d^-fade_power when
