@@ -78,6 +78,63 @@ TEST_CASE("Every method renders the same scene alike", "[renderer]") {
     }
 }
 
+TEST_CASE("With its pattern filter ASOS renders a checkered floor as a dense grid does", "[renderer]") {
+    // The scene above with its checker: without the filter ASOS aliases it
+    // as one ray per pixel does; with it (the default), each covered pixel
+    // still costs one ray.
+    const SceneDescription d = demoScene();
+    RenderSettings s;
+    s.width = 48;
+    s.height = 36;
+    s.method = RenderMethod::Grid;
+    s.samples = 8;
+    const RenderOutput reference = renderOrFail(d, s);
+    auto meanDifference = [&](const RenderOutput& out) {
+        double sum = 0.0;
+        for (std::size_t i = 0; i < out.color.data().size(); ++i)
+            sum += std::abs(out.color.data()[i] - reference.color.data()[i]);
+        return sum / static_cast<double>(out.color.data().size());
+    };
+    s.method = RenderMethod::Asos;
+    const RenderOutput filtered = renderOrFail(d, s);
+    s.patternFilter = false;
+    const RenderOutput paper = renderOrFail(d, s);
+    CHECK(meanDifference(filtered) < 0.01);
+    CHECK(meanDifference(paper) > 2.0 * meanDifference(filtered));
+    CHECK(filtered.stats.counters.eyeRays == paper.stats.counters.eyeRays);
+
+    // Pattern edges keep point-sampled leaves unless the filter is asked for.
+    s.patternFilter.reset();
+    s.patternEdges = true;
+    const RenderOutput edges = renderOrFail(d, s);
+    s.patternFilter = false;
+    CHECK(renderOrFail(d, s).color.data() == edges.color.data());
+    CHECK(edges.stats.counters.eyeRays > filtered.stats.counters.eyeRays);
+}
+
+TEST_CASE("The pattern filter is ASOS's default, and ASOS's alone", "[renderer]") {
+    RenderSettings s;
+    CHECK(effectivePatternFilter(s));
+    s.patternEdges = true;
+    CHECK_FALSE(effectivePatternFilter(s));
+    s.patternFilter = true;
+    CHECK(effectivePatternFilter(s));
+    s.patternEdges = false;
+    s.patternFilter = false;
+    CHECK_FALSE(effectivePatternFilter(s));
+    CHECK(checkRenderSettings(s).empty());
+    for (RenderMethod m : {RenderMethod::Single, RenderMethod::Grid, RenderMethod::Jitter,
+                           RenderMethod::Adaptive, RenderMethod::Am1}) {
+        RenderSettings classic;
+        classic.method = m;
+        CHECK_FALSE(effectivePatternFilter(classic));
+        classic.patternFilter = false;
+        CHECK(checkRenderSettings(classic).empty());
+        classic.patternFilter = true;
+        CHECK_THAT(checkRenderSettings(classic), Catch::Contains("pattern filter"));
+    }
+}
+
 TEST_CASE("ASOS costs fewer rays than 4 x 4 stochastic sampling", "[renderer]") {
     const SceneDescription d = demoScene();
     RenderSettings s;
