@@ -6,7 +6,8 @@
 #   single    asos --method single    vs  povray -A            (same rays: should match)
 #   adaptive  asos --method adaptive  vs  povray +A0.3 +AM2 +R3 -J   (same method)
 #   am1       asos --method am1       vs  povray +A0.3 +AM1 +R3 -J   (same method)
-#   and asos (also with --pattern-edges on --max 3), adaptive, am1, 4x4 jitter
+#   and asos (also without its pattern filter, the paper's method, and with
+#   --pattern-edges on --max 3), adaptive, am1, 4x4 jitter
 #   and single against a converged POV-Ray reference (+A0.0 +AM2 +R5: 17 x 17
 #   samples in every pixel).
 #   scripts/compare-povray.sh [-W 320 -H 240] SCENE.pov...
@@ -48,13 +49,14 @@ for scene in "$@"; do
   render -o "$p.adaptive.png" --method adaptive
   render -o "$p.am1.png" --method am1
   render -o "$p.asos.png" --method asos
+  render -o "$p.asos-paper.png" --method asos --pattern-filter off
   render -o "$p.asos-patterns.png" --method asos --pattern-edges on --max 3
   render -o "$p.jitter4.png" --method jitter --samples 4
   echo "== $scene ($width x $height)"
   printf '  %-34s %s\n' "single vs povray -A" "$(difference "$p.pov-single.png" "$p.single.png")"
   printf '  %-34s %s\n' "adaptive vs povray +AM2" "$(difference "$p.pov-am2.png" "$p.adaptive.png")"
   printf '  %-34s %s\n' "am1 vs povray +AM1" "$(difference "$p.pov-am1.png" "$p.am1.png")"
-  for m in asos asos-patterns adaptive am1 jitter4 single; do
+  for m in asos asos-paper asos-patterns adaptive am1 jitter4 single; do
     printf '  %-34s %s\n' "$m vs converged povray" "$(difference "$p.pov-reference.png" "$p.$m.png")"
   done
   printf '  %-34s %s\n' "povray +AM2 vs converged povray" "$(difference "$p.pov-reference.png" "$p.pov-am2.png")"

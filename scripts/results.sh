@@ -235,6 +235,7 @@ table_povray() {
               over = f[5]; gsub(/[()]/, "", over)
               what = part[1]
               sub(/^asos-patterns /, "asos, pattern edges, MAX 3 ", what); sub(/^jitter4 /, "jitter 4 × 4 ", what)
+              sub(/^asos-paper /, "asos without the pattern filter ", what)
               sub(/ converged povray$/, " converged", what)
               printf "| %s | %s | %s | %s | %s |\n", first ? "" : label, what, f[1], f[3], over; first = 1 }' \
       "$work/povray-$i.log" >>"$content"

@@ -1,5 +1,6 @@
 // asos render SCENE -o OUT.png|.exr|.tif|… [-W 640 -H 480] [--method asos|single|grid|jitter|adaptive|am1]
-//   [--eps E|A/B --max M --jitter on|off --pattern-edges on|off] [--samples N] [--threshold T --depth D]
+//   [--eps E|A/B --max M --jitter on|off --pattern-edges on|off --pattern-filter on|off]
+//   [--samples N] [--threshold T --depth D]
 //   [--light-method asos|grid] [--light-samples N] [--shadow-apex surface|behind]
 //   [--bit-depth 8|16|half|float] [--threads N]
 //   [--seed S] [--region x0,y0,x1,y1] [--clock C] [-D NAME=VALUE]... [-L DIR]...
@@ -42,6 +43,7 @@ struct RenderArgs {
     std::optional<int> maxLevel;
     std::optional<std::string> jitter;
     std::string patternEdges = "off";
+    std::optional<std::string> patternFilter;
     int samples = 4;
     double threshold = 0.3;
     int depth = 2;
@@ -116,6 +118,12 @@ int runRender(const RenderArgs& args) {
         settings.patternEdges = args.patternEdges == "on";
     else
         problems.push_back("--pattern-edges wants on or off, not '" + args.patternEdges + "'");
+    if (args.patternFilter) {
+        if (*args.patternFilter == "on" || *args.patternFilter == "off")
+            settings.patternFilter = *args.patternFilter == "on";
+        else
+            problems.push_back("--pattern-filter wants on or off, not '" + *args.patternFilter + "'");
+    }
     settings.samples = args.samples;
     settings.adaptive.threshold = args.threshold;
     settings.adaptive.depth = args.depth;
@@ -252,6 +260,9 @@ void addRenderCommand(CLI::App& app, CommandResult& result) {
                     "on|off: ASOS jitters its MAX-rays, adaptive and am1 their sub-samples (default off)");
     cmd->add_option("--pattern-edges", args->patternEdges,
                     "on|off: ASOS also subdivides where a pigment pattern's edge crosses a pixel (default off)");
+    cmd->add_option("--pattern-filter", args->patternFilter,
+                    "on|off: ASOS shades a pattern averaged over each ray's footprint (default on "
+                    "under --method asos unless --pattern-edges is on)");
     cmd->add_option("--samples", args->samples, "grid and jitter: N x N rays per pixel (default 4)");
     cmd->add_option("--threshold", args->threshold,
                     "adaptive and am1: colour difference that subdivides or supersamples (default 0.3)");

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "asos/render/pattern_filter.hpp"
 #include "asos/shapes/local_cone.hpp"
 
 namespace asos {
@@ -44,9 +45,10 @@ bool overlapsAnother(const std::vector<Item>& items, std::uint32_t first, std::u
 }  // namespace
 
 AsosTracer::AsosTracer(const RayTracer& tracer, const CameraModel& camera,
-                       const AsosSettings& sceneSettings, std::uint64_t seed, bool patternEdges)
+                       const AsosSettings& sceneSettings, std::uint64_t seed, bool patternEdges,
+                       bool patternFilter)
     : tracer_(tracer), scene_(tracer.scene()), camera_(camera), seed_(seed),
-      patternEdges_(patternEdges) {
+      patternEdges_(patternEdges), patternFilter_(patternFilter) {
     const SceneDescription& d = scene_.description();
     objectSettings_.reserve(d.objects.size());
     selfShadowing_.reserve(d.objects.size());
@@ -134,6 +136,7 @@ private:
                      const Ray& ray, const std::vector<Item>& items, const Node& parent);
     Vec3 shadeLeaf(const ImageSquare& square, int level, std::uint32_t ix, std::uint32_t iy,
                    const Ray& ray, const std::optional<SurfaceHit>& hit);
+    std::optional<Color> leafPigment(const ImageSquare& square, const SurfaceHit& hit) const;
     std::optional<SurfaceHit> nearestInList(const Ray& ray, const std::vector<Item>& items,
                                             std::uint32_t first, std::uint32_t count,
                                             std::uint8_t* marks);
@@ -476,7 +479,22 @@ Vec3 AsosTracer::PixelTrace::shadeLeaf(const ImageSquare& square, int level, std
         storage = pointLightSample(light.position, light.color, p.position, lit);
         return {&storage, 1};
     };
-    return tracer_.shadeWith(*hit, ray, 1, 1.0, lightArriving, c_, context);
+    return tracer_.shadeWith(*hit, ray, 1, 1.0, lightArriving, c_, context, leafPigment(square, *hit));
+}
+
+// With the pattern filter, a patterned leaf's pigment averaged over the
+// leaf's footprint on the tangent plane at its hit ("Pattern filter");
+// otherwise (or where the plane does not hold the whole footprint) nothing:
+// the pigment at the hit.
+std::optional<Color> AsosTracer::PixelTrace::leafPigment(const ImageSquare& square,
+                                                         const SurfaceHit& hit) const {
+    const auto object = static_cast<std::uint32_t>(hit.objectIndex);
+    if (!asos_.patternFilter_ || !asos_.patterned_[object]) return std::nullopt;
+    const Pigment& pigment = textureOf(scene_.object(object)).pigment;
+    const std::optional<PatternFootprint> footprint = PatternFootprint::make(
+        camera_, square, hit.position, hit.normal, pigment.worldFromPattern.inverseMatrix());
+    if (!footprint) return std::nullopt;
+    return filteredPigment(pigment, *footprint);
 }
 
 }  // namespace asos

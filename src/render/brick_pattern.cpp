@@ -1,5 +1,6 @@
 #include "asos/render/brick_pattern.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 #include "asos/render/shading.hpp"
@@ -15,6 +16,34 @@ double fraction(double t) { return t - std::floor(t); }
 
 // The band's rank along its axis: the joint of a cell, then its brick.
 double rank(bool joint, double cell) { return 2.0 * cell + (joint ? 0.0 : 1.0); }
+
+// The mean over [a, b] of the brick part of a pulse train of period 1 whose
+// joints are frac(t + offset) <= share: the antiderivative counts (1 -
+// share) per whole period and the part of the last beyond its joint.
+double pulseMean(double a, double b, double offset, double share) {
+    const double s = std::clamp(share, 0.0, 1.0);
+    auto integral = [&](double t) {
+        const double u = t + offset;
+        return std::floor(u) * (1.0 - s) + std::max(fraction(u) - s, 0.0);
+    };
+    auto at = [&](double t) { return fraction(t + offset) > share ? 1.0 : 0.0; };
+    return averageOverInterval(a, b, integral, at);
+}
+
+// The mean over [a, b] of the brick part of the courses of one parity (0:
+// floor(t) even, 1: odd), period 2, joints frac(t) <= share.
+double courseMean(double a, double b, int parity, double share) {
+    const double s = std::clamp(share, 0.0, 1.0);
+    auto integral = [&](double t) {
+        const double pairs = std::floor(0.5 * t);
+        return pairs * (1.0 - s) + std::clamp(t - 2.0 * pairs - parity - s, 0.0, 1.0 - s);
+    };
+    auto at = [&](double t) {
+        const bool odd = fraction(0.5 * t) > 0.5;
+        return fraction(t) > share && odd == (parity == 1) ? 1.0 : 0.0;
+    };
+    return averageOverInterval(a, b, integral, at);
+}
 
 }  // namespace
 
@@ -64,6 +93,39 @@ double BrickPattern::edgesCrossed(const Vec3& lo, const Vec3& hi) const {
     double n = crossed(a.bed, b.bed) + (a.oddCourse != b.oddCourse ? 1.0 : 0.0);
     for (int c = 0; c < 2; ++c) n += crossed(a.head[c][0], b.head[c][0]) + crossed(a.head[c][1], b.head[c][1]);
     return n;
+}
+
+PatternPlanes BrickPattern::planes(int axis) const {
+    const double share = jointShare_[axis];
+    // Planes at size (k + side) - shift; a negative size counts its sides
+    // the other way along a positive period.
+    const double size = size_[axis];
+    PatternPlanes p{std::fabs(size), kPovEpsilon + mortar_, {}, 0};
+    // A joint spans frac in [0, share]: the planes at its two sides, for the
+    // head joints of both parities of course (moved by half a brick).
+    auto offset = [&](double side) { return fraction(size > 0.0 ? side : -side); };
+    if (axis == 1) {
+        const double foot = offset(0.0), top = offset(share);
+        p.offsets = {std::min(foot, top), std::max(foot, top)};
+        p.count = 2;
+    } else {
+        p.offsets = {offset(0.0), offset(share), offset(0.5), offset(0.5 + share)};
+        std::sort(p.offsets.begin(), p.offsets.end());
+        p.count = 4;
+    }
+    return p;
+}
+
+double BrickPattern::boxShare(const Vec3& lo, const Vec3& hi) const {
+    const Vec3 a = (lo + (kPovEpsilon + mortar_)) / size_;
+    const Vec3 b = (hi + (kPovEpsilon + mortar_)) / size_;
+    const Vec3 from = glm::min(a, b), to = glm::max(a, b);  // a size may be negative
+    const Vec3& m = jointShare_;
+    const double even = courseMean(from.y, to.y, 0, m.y) * pulseMean(from.x, to.x, 0.0, m.x) *
+                        pulseMean(from.z, to.z, 0.5, m.z);
+    const double odd = courseMean(from.y, to.y, 1, m.y) * pulseMean(from.x, to.x, 0.5, m.x) *
+                       pulseMean(from.z, to.z, 0.0, m.z);
+    return std::clamp(even + odd, 0.0, 1.0);
 }
 
 }  // namespace asos

@@ -3,6 +3,7 @@
 #include <cmath>
 
 #include "asos/render/brick_pattern.hpp"
+#include "asos/render/checker_pattern.hpp"
 #include "asos/render/shading.hpp"
 
 namespace asos {
@@ -17,13 +18,7 @@ Vec3 patternPoint(const Pigment& pigment, const Vec3& worldPoint) {
 double edgesCrossed(const Pigment& pigment, const Vec3& lo, const Vec3& hi) {
     switch (pigment.kind) {
         case Pigment::Kind::Solid: return 0.0;
-        case Pigment::Kind::Checker: {
-            // The checker's cells as checkerValue floors them (x + kPovEpsilon).
-            double crossings = 0.0;
-            for (int axis = 0; axis < 3; ++axis)
-                crossings += std::floor(hi[axis] + kPovEpsilon) - std::floor(lo[axis] + kPovEpsilon);
-            return crossings;
-        }
+        case Pigment::Kind::Checker: return CheckerPattern().edgesCrossed(lo, hi);
         case Pigment::Kind::Brick:
             // The mortar's faces: planes of constant y at the foot and top of
             // each bed joint, and within a course planes of constant x and z at
@@ -41,7 +36,7 @@ bool hasPattern(const Pigment& pigment) {
 int pigmentIndex(const Pigment& pigment, const Vec3& worldPoint) {
     switch (pigment.kind) {
         case Pigment::Kind::Solid: return 0;
-        case Pigment::Kind::Checker: return checkerValue(patternPoint(pigment, worldPoint));
+        case Pigment::Kind::Checker: return CheckerPattern().value(patternPoint(pigment, worldPoint));
         case Pigment::Kind::Brick:
             return BrickPattern(pigment.brickSize, pigment.mortar).value(patternPoint(pigment, worldPoint));
     }

@@ -165,6 +165,9 @@ std::string checkRenderSettings(const RenderSettings& s) {
         (s.method != RenderMethod::Asos || effectiveLightMethod(s) != LightMethod::Asos))
         add("the shadow apex behind the surface needs the ASOS eye method and ASOS light method "
             "(it encloses the eye pyray's footprint)");
+    if (s.patternFilter.value_or(false) && s.method != RenderMethod::Asos)
+        add("the pattern filter needs the ASOS eye method (the classic methods sample patterns "
+            "at points, as POV-Ray does)");
     if (s.threads < 0) add("threads must not be negative");
     if (s.tileSize < 1) add("tile size must be at least 1");
     if (s.region && s.width >= 1 && s.height >= 1 && !s.region->within(s.width, s.height))
@@ -194,6 +197,10 @@ LightMethod effectiveLightMethod(const RenderSettings& s) {
     return s.lightMethod.value_or(s.method == RenderMethod::Asos ? LightMethod::Asos : LightMethod::Grid);
 }
 
+bool effectivePatternFilter(const RenderSettings& s) {
+    return s.method == RenderMethod::Asos && s.patternFilter.value_or(!s.patternEdges);
+}
+
 RenderOutput render(const Scene& scene, const RenderSettings& settings) {
     if (std::string problems = checkRenderSettings(settings); !problems.empty())
         throw std::invalid_argument(problems);
@@ -211,7 +218,8 @@ RenderOutput render(const Scene& scene, const RenderSettings& settings) {
     if (settings.method == RenderMethod::Asos) {
         const AsosTracer asos(tracer, camera,
                               sceneAsosSettings(scene.description().globals, settings.asos),
-                              settings.seed, settings.patternEdges);
+                              settings.seed, settings.patternEdges,
+                              effectivePatternFilter(settings));
         // Per-thread buffers: no pixel allocates once they have grown.
         tbb::enumerable_thread_specific<AsosScratch> scratch;
         r = renderTiles(settings.width, settings.height, options,

@@ -3,27 +3,16 @@
 #include <cmath>
 
 #include "asos/render/brick_pattern.hpp"
+#include "asos/render/checker_pattern.hpp"
 
 namespace asos {
-
-int checkerValue(const Vec3& p) {
-    // POV-Ray 3.7 adds EPSILON (1e-10) before flooring, so that a surface on a
-    // cell boundary (a plane at y = 0, hit at y = -1e-16) falls in one cell.
-    // Measured with povray: a pattern point 1e-10 below an integer counts as
-    // the integer, 1.1e-10 below does not (older versions used 0.001).
-    const double sum = std::floor(p.x + kPovEpsilon) + std::floor(p.y + kPovEpsilon) +
-                       std::floor(p.z + kPovEpsilon);
-    // POV-Ray converts the sum to int and tests its low bit; fmod keeps huge
-    // coordinates from overflowing the conversion.
-    return std::fabs(std::fmod(sum, 2.0)) == 1.0 ? 1 : 0;
-}
 
 Color evaluatePigment(const Pigment& pigment, const Vec3& worldPoint) {
     switch (pigment.kind) {
         case Pigment::Kind::Solid: return pigment.color1;
         case Pigment::Kind::Checker: {
             const Vec3 p(pigment.worldFromPattern.inverseMatrix() * Vec4(worldPoint, 1.0));
-            return checkerValue(p) ? pigment.color2 : pigment.color1;
+            return CheckerPattern().value(p) ? pigment.color2 : pigment.color1;
         }
         case Pigment::Kind::Brick: {
             const Vec3 p(pigment.worldFromPattern.inverseMatrix() * Vec4(worldPoint, 1.0));

@@ -27,13 +27,13 @@ struct Setup {
     AsosScratch scratch;
 
     Setup(SceneDescription d, int width, int height, AsosSettings settings, std::uint64_t seed = 0,
-          bool patternEdges = false)
+          bool patternEdges = false, bool patternFilter = false)
         : description(std::move(d)) {
         description.camera = orthoCamera(width, height);
         scene = buildScene(description);
         tracer = std::make_unique<RayTracer>(*scene);
         camera = std::make_unique<CameraModel>(description.camera, width, height);
-        asos = std::make_unique<AsosTracer>(*tracer, *camera, settings, seed, patternEdges);
+        asos = std::make_unique<AsosTracer>(*tracer, *camera, settings, seed, patternEdges, patternFilter);
     }
     AsosPixelReport pixel(int x, int y) {
         RenderCounters counters;
@@ -68,29 +68,39 @@ struct PatternPixel {
     std::uint32_t rays = 0;
 };
 
+// The share of pixel (x, y) of `Setup`'s camera in the second colour of
+// `pigment` on the plane z = 0, by a 128 x 128 point count of the pattern
+// (itself within about 1/128 of the area).
+double pixelShare(const Pigment& pigment, int x, int y) {
+    int ones = 0;
+    for (int j = 0; j < 128; ++j)
+        for (int k = 0; k < 128; ++k)
+            ones += pigmentIndex(pigment, {x + (k + 0.5) / 128, -(y + (j + 0.5) / 128), 0.0});
+    return ones / 16384.0;
+}
+
 // A plane facing the camera with `pigment` (its first colour black, its
-// second white), traced with pattern edges: at every third pixel across and
-// every `rowStep` down a 16 x 16 image, the pixel's value is within EPS of
-// the share of the pixel in the second colour, and a pixel the pattern
-// crosses is subdivided. `label` names the case in a failure.
-std::vector<PatternPixel> measurePattern(Pigment pigment, const AsosSettings& settings, int rowStep, int label) {
+// second white).
+SceneDescription patternPlane(Pigment& pigment) {
     Texture texture = coverageTexture(0.0);
     pigment.color1 = texture.pigment.color1;
     pigment.color2.rgb = Vec3(1.0);
     texture.pigment = pigment;
     SceneDescription d;
     d.objects.push_back(makeObject(PlaneShape{{0, 0, -1}, 0.0}, texture));
-    Setup s(d, 16, 16, settings, 0, true);
+    return d;
+}
+
+// The plane of `patternPlane`, traced with pattern edges: at every third
+// pixel across and every `rowStep` down a 16 x 16 image, the pixel's value is
+// within EPS of the share of the pixel in the second colour, and a pixel the
+// pattern crosses is subdivided. `label` names the case in a failure.
+std::vector<PatternPixel> measurePattern(Pigment pigment, const AsosSettings& settings, int rowStep, int label) {
+    Setup s(patternPlane(pigment), 16, 16, settings, 0, true);
     std::vector<PatternPixel> pixels;
     for (int y = 0; y < 16; y += rowStep)
         for (int x = 0; x < 16; x += 3) {
-            // Against a 128 x 128 point count of the pattern, itself within
-            // about 1/128 of the area.
-            int ones = 0;
-            for (int j = 0; j < 128; ++j)
-                for (int k = 0; k < 128; ++k)
-                    ones += pigmentIndex(pigment, {x + (k + 0.5) / 128, -(y + (j + 0.5) / 128), 0.0});
-            const double exact = ones / 16384.0;
+            const double exact = pixelShare(pigment, x, y);
             const AsosPixelReport r = s.pixel(x, y);
             INFO("case " << label << ", pixel " << x << ", " << y << ": exact " << exact);
             CHECK(std::abs(r.result.color.x - exact) <= settings.eps + 0.008);
@@ -379,6 +389,35 @@ TEST_CASE("With pattern edges, ASOS measures brick's mortar within EPS", "[asos]
     // it (the footprint's bounds, a box, may reach the joint).
     CHECK(insideBrick > pixels / 5);
     CHECK(onePixelRays > insideBrick / 2);
+}
+
+TEST_CASE("With the pattern filter, ASOS shades a pattern's share of a pixel with one ray", "[asos][pattern-filter]") {
+    // Checker cells of 1.5 pixels and bricks of 3 x 1.5 pixels, turned about
+    // z: most pixels hold an edge, many several. Each is one ray, within the
+    // point count's accuracy of its exact share.
+    Pigment checker;
+    checker.kind = Pigment::Kind::Checker;
+    checker.worldFromPattern = Transform::rotateDegrees({0.0, 0.0, 23.0}) * Transform::scale(Vec3(1.5));
+    Pigment brick;
+    brick.kind = Pigment::Kind::Brick;
+    brick.brickSize = {4.0, 2.0, 4.0};
+    brick.mortar = 0.5;
+    brick.worldFromPattern = Transform::translate({0.3, 0.2, 0.0}) *
+                             Transform::rotateDegrees({0.0, 0.0, -31.0}) * Transform::scale(Vec3(0.75));
+    for (Pigment pigment : {checker, brick}) {
+        Setup s(patternPlane(pigment), 16, 16, AsosSettings{}, 0, false, true);
+        int between = 0;
+        for (int y = 0; y < 16; ++y)
+            for (int x = 0; x < 16; ++x) {
+                const double exact = pixelShare(pigment, x, y);
+                between += exact > 0.02 && exact < 0.98;
+                const AsosPixelReport r = s.pixel(x, y);
+                INFO("pixel " << x << ", " << y << ": exact " << exact);
+                CHECK(r.result.rays == 1);
+                CHECK(r.result.color.x == Approx(exact).margin(0.01));
+            }
+        CHECK(between > 100);
+    }
 }
 
 TEST_CASE("Without pattern edges a pixel on one object costs one ray, as in the paper", "[asos]") {

@@ -137,3 +137,88 @@ TEST_CASE("Where brick changes inside a box, the box straddles an edge", "[shadi
     CHECK(changing > 200);
     CHECK(still > 200);
 }
+
+namespace {
+
+// The share of brick over the box [lo, hi] by n^3 points at the centres of
+// its cells (within about 1/n per joint face the box straddles).
+double denseBrickShare(const BrickPattern& p, const Vec3& lo, const Vec3& hi, int n) {
+    long ones = 0;
+    for (int i = 0; i < n; ++i)
+        for (int j = 0; j < n; ++j)
+            for (int k = 0; k < n; ++k)
+                ones += p.value(lo + Vec3((i + 0.5) / n, (j + 0.5) / n, (k + 0.5) / n) * (hi - lo));
+    return double(ones) / (double(n) * n * n);
+}
+
+}  // namespace
+
+TEST_CASE("Brick's edge planes hold every change of its value", "[shading][brick]") {
+    // Between two consecutive planes of an axis, along a line parallel to
+    // it, the value does not change; sizes of both signs, thin and thick
+    // mortar.
+    std::mt19937 rng(9);
+    std::uniform_real_distribution<double> corner(-20.0, 20.0), size(0.5, 6.0), mortar(0.0, 1.2);
+    for (int i = 0; i < 200; ++i) {
+        const Vec3 s(size(rng) * (i % 2 ? -1.0 : 1.0), size(rng), size(rng) * (i % 3 ? 1.0 : -1.0));
+        const BrickPattern p(s, mortar(rng));
+        const Vec3 base(corner(rng), corner(rng), corner(rng));
+        const int axis = i % 3;
+        const double lo = base[axis], hi = lo + 15.0;
+        std::vector<double> cuts{lo};
+        p.planes(axis).forEachInside(lo, hi, [&](double plane) { cuts.push_back(plane); });
+        cuts.push_back(hi);
+        for (std::size_t c = 0; c + 1 < cuts.size(); ++c) {
+            INFO("case " << i << ", axis " << axis << ", between " << cuts[c] << " and " << cuts[c + 1]);
+            REQUIRE(cuts[c + 1] >= cuts[c]);  // two sides may meet (a joint of half a brick)
+            if (cuts[c + 1] == cuts[c]) continue;
+            Vec3 point = base;
+            const double margin = 1e-7 * (cuts[c + 1] - cuts[c]);
+            point[axis] = cuts[c] + margin;
+            const int value = p.value(point);
+            for (int k = 1; k <= 8; ++k) {
+                point[axis] = cuts[c] + margin + (cuts[c + 1] - cuts[c] - 2.0 * margin) * k / 8.0;
+                CHECK(p.value(point) == value);
+            }
+        }
+    }
+}
+
+TEST_CASE("Brick's box share has its known answers", "[shading][brick]") {
+    // kDefault, course 0: bricks over y in (0, 2.5), head joints at
+    // x in [-0.5, 0] + 8k and z in [1.75, 2.25] + 4.5k.
+    CHECK(kDefault.boxShare({1.0, 0.5, 0.0}, {6.0, 2.0, 1.5}) == 1.0);  // inside a brick
+    CHECK(kDefault.boxShare({1.0, -0.4, 0.0}, {6.0, -0.1, 1.5}) == 0.0);  // inside a bed joint
+    // Across the top of a bed joint: a quarter of the box in the joint.
+    CHECK(kDefault.boxShare({1.0, -0.25, 0.0}, {6.0, 0.75, 1.5}) == Approx(0.75));
+    // Across a head joint along x, [-0.5, 0] of [-1, 1]: a quarter mortar.
+    CHECK(kDefault.boxShare({-1.0, 0.5, 0.0}, {1.0, 2.0, 1.5}) == Approx(0.75));
+    // Across the corner of a bed and a head joint: y [-0.25, 0.75] (a
+    // quarter in the bed joint), x [-0.25, 0.25] (half in the head joint).
+    CHECK(kDefault.boxShare({-0.25, -0.25, 0.0}, {0.25, 0.75, 1.5}) == Approx(0.75 * 0.5));
+    // Many bricks: the share of brick in a whole period of courses.
+    const double mean = (1.0 - 0.5 / 3.0) * (1.0 - 0.5 / 8.0) * (1.0 - 0.5 / 4.5);
+    CHECK(kDefault.boxShare({-0.5, -0.5, -0.5}, {-0.5 + 80.0, -0.5 + 60.0, -0.5 + 45.0}) == Approx(mean));
+    CHECK(kDefault.boxShare({-3000.3, -2000.1, -4000.7}, {3000.9, 2000.6, 4000.2}) ==
+          Approx(mean).margin(1e-4));
+    // A box of no width along y, in course 0: the head joints' pattern.
+    CHECK(kDefault.boxShare({-0.5, 1.0, -0.5}, {-0.5 + 80.0, 1.0, -0.5 + 45.0}) ==
+          Approx((1.0 - 0.5 / 8.0) * (1.0 - 0.5 / 4.5)));
+    // No width along z either: along x through course 1's head joints at
+    // x in [3.5, 4] + 8k.
+    CHECK(kDefault.boxShare({0.0, 4.0, 1.0}, {8.0, 4.0, 1.0}) == Approx(1.0 - 0.5 / 8.0));
+    CHECK(kDefault.boxShare({3.0, 4.0, 1.0}, {4.0, 4.0, 1.0}) == Approx(0.5));
+}
+
+TEST_CASE("Brick's box share matches dense sampling of the box", "[shading][brick]") {
+    std::mt19937 rng(13);
+    std::uniform_real_distribution<double> corner(-10.0, 10.0), width(0.1, 4.0), size(1.0, 5.0),
+        mortar(0.1, 0.7);
+    for (int i = 0; i < 20; ++i) {
+        const BrickPattern p({size(rng), size(rng), size(rng)}, mortar(rng));
+        const Vec3 lo(corner(rng), corner(rng), corner(rng));
+        const Vec3 hi = lo + Vec3(width(rng), width(rng), width(rng));
+        INFO("case " << i);
+        CHECK(p.boxShare(lo, hi) == Approx(denseBrickShare(p, lo, hi, 96)).margin(0.015));
+    }
+}

@@ -158,6 +158,12 @@ TEST_CASE("asos render: bad options and scenes give an error and no file", "[cli
     const Result r5 = runAsos({"render", scene, "-o", "bad.png", "--bit-depth", "12"});
     CHECK(r5.exitCode == 1);
     CHECK_THAT(r5.err, Catch::Contains("--bit-depth must be"));
+    const Result r6 = runAsos({"render", scene, "-o", "bad.png", "--pattern-filter", "maybe"});
+    CHECK(r6.exitCode == 1);
+    CHECK_THAT(r6.err, Catch::Contains("--pattern-filter wants on or off"));
+    const Result r7 = runAsos({"render", scene, "-o", "bad.png", "--method", "single", "--pattern-filter", "on"});
+    CHECK(r7.exitCode == 1);
+    CHECK_THAT(r7.err, Catch::Contains("pattern filter needs the ASOS eye method"));
     const Result r3 = runAsos({"render", scene, "-o", "bad.png", "-W", "16", "-H", "12", "--eps", "-0.5"});
     CHECK(r3.exitCode == 1);
     CHECK_THAT(r3.err, Catch::Contains("eps must be"));

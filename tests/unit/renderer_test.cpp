@@ -39,34 +39,48 @@ RenderOutput renderOrFail(const SceneDescription& d, const RenderSettings& s) {
     return std::move(*out);
 }
 
-}  // namespace
-
-TEST_CASE("Every method renders the same scene alike", "[renderer]") {
-    // Without the checker, whose aliasing is no boundary of an object: ASOS
-    // antialiases geometry, not textures (the paper's "Conclusion").
-    SceneDescription d = demoScene();
-    d.objects[0].texture = std::make_shared<const Texture>(litTexture({0.8, 0.8, 0.7}));
+// 48 x 36 pixels, and a reference of them by an 8 x 8 grid.
+RenderSettings smallImage() {
     RenderSettings s;
     s.width = 48;
     s.height = 36;
+    return s;
+}
+RenderOutput gridReference(const SceneDescription& d) {
+    RenderSettings s = smallImage();
     s.method = RenderMethod::Grid;
     s.samples = 8;
     const RenderOutput reference = renderOrFail(d, s);
     CHECK(reference.stats.counters.eyeRays == 48u * 36u * 64u);
+    return reference;
+}
+
+// The mean absolute difference of two images, over all values.
+double meanDifference(const RenderOutput& a, const RenderOutput& b) {
+    double sum = 0.0;
+    for (std::size_t i = 0; i < a.color.data().size(); ++i)
+        sum += std::abs(a.color.data()[i] - b.color.data()[i]);
+    return sum / static_cast<double>(a.color.data().size());
+}
+
+}  // namespace
+
+TEST_CASE("Every method renders the same scene alike", "[renderer]") {
+    // Without the checker, whose aliasing is no boundary of an object (the
+    // classic methods do not filter patterns; ASOS does, the next test).
+    SceneDescription d = demoScene();
+    d.objects[0].texture = std::make_shared<const Texture>(litTexture({0.8, 0.8, 0.7}));
+    const RenderOutput reference = gridReference(d);
+    RenderSettings s = smallImage();
     for (RenderMethod m : {RenderMethod::Asos, RenderMethod::Single, RenderMethod::Jitter,
                            RenderMethod::Adaptive, RenderMethod::Am1}) {
         s.method = m;
-        s.samples = 4;
         const RenderOutput out = renderOrFail(d, s);
         INFO(methodName(m));
         CHECK(out.stats.method == methodName(m));
         CHECK(out.stats.counters.pixels == 48u * 36u);
-        // Mean absolute difference from the 8 x 8 grid, over all values.
-        double sum = 0.0;
-        for (std::size_t i = 0; i < out.color.data().size(); ++i)
-            sum += std::abs(out.color.data()[i] - reference.color.data()[i]);
-        const double mean = sum / static_cast<double>(out.color.data().size());
-        CHECK(mean < (m == RenderMethod::Single ? 0.03 : 0.015));
+        // Mean absolute difference from the 8 x 8 grid.
+        CHECK(meanDifference(out, reference) < (m == RenderMethod::Single ? 0.03 : 0.015));
         if (m == RenderMethod::Am1) {
             // The samples AOV counts every eye ray, the frames' included.
             double rays = 0.0;
@@ -75,6 +89,52 @@ TEST_CASE("Every method renders the same scene alike", "[renderer]") {
             CHECK(rays == double(out.stats.counters.eyeRays));
             CHECK(out.stats.counters.eyeRays > 48u * 36u + 2u * (48u + 36u));
         }
+    }
+}
+
+TEST_CASE("With its pattern filter ASOS renders a checkered floor as a dense grid does", "[renderer]") {
+    // The scene above with its checker: without the filter ASOS aliases it
+    // as one ray per pixel does; with it (the default), each covered pixel
+    // still costs one ray.
+    const SceneDescription d = demoScene();
+    const RenderOutput reference = gridReference(d);
+    RenderSettings s = smallImage();
+    const RenderOutput filtered = renderOrFail(d, s);
+    s.patternFilter = false;
+    const RenderOutput paper = renderOrFail(d, s);
+    CHECK(meanDifference(filtered, reference) < 0.01);
+    CHECK(meanDifference(paper, reference) > 2.0 * meanDifference(filtered, reference));
+    CHECK(filtered.stats.counters.eyeRays == paper.stats.counters.eyeRays);
+
+    // Pattern edges keep point-sampled leaves unless the filter is asked for.
+    s.patternFilter.reset();
+    s.patternEdges = true;
+    const RenderOutput edges = renderOrFail(d, s);
+    s.patternFilter = false;
+    CHECK(renderOrFail(d, s).color.data() == edges.color.data());
+    CHECK(edges.stats.counters.eyeRays > filtered.stats.counters.eyeRays);
+}
+
+TEST_CASE("The pattern filter is ASOS's default, and ASOS's alone", "[renderer]") {
+    RenderSettings s;
+    CHECK(effectivePatternFilter(s));
+    s.patternEdges = true;
+    CHECK_FALSE(effectivePatternFilter(s));
+    s.patternFilter = true;
+    CHECK(effectivePatternFilter(s));
+    s.patternEdges = false;
+    s.patternFilter = false;
+    CHECK_FALSE(effectivePatternFilter(s));
+    CHECK(checkRenderSettings(s).empty());
+    for (RenderMethod m : {RenderMethod::Single, RenderMethod::Grid, RenderMethod::Jitter,
+                           RenderMethod::Adaptive, RenderMethod::Am1}) {
+        RenderSettings classic;
+        classic.method = m;
+        CHECK_FALSE(effectivePatternFilter(classic));
+        classic.patternFilter = false;
+        CHECK(checkRenderSettings(classic).empty());
+        classic.patternFilter = true;
+        CHECK_THAT(checkRenderSettings(classic), Catch::Contains("pattern filter"));
     }
 }
 

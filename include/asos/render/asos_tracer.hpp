@@ -71,10 +71,12 @@ public:
     // `sceneSettings`: the command line over global_settings over the
     // defaults; each object's own asos block refines it. `patternEdges`:
     // also subdivide where a pigment pattern's edge crosses a pyray that
-    // one object covers (docs/algorithm.md, "Pattern edges"); false is the
-    // paper's method alone.
+    // one object covers (docs/algorithm.md, "Pattern edges").
+    // `patternFilter`: shade each leaf with its pigment averaged over the
+    // leaf's footprint ("Pattern filter"). Both false: the paper's method
+    // alone.
     AsosTracer(const RayTracer& tracer, const CameraModel& camera, const AsosSettings& sceneSettings,
-               std::uint64_t seed, bool patternEdges = false);
+               std::uint64_t seed, bool patternEdges = false, bool patternFilter = false);
 
     // One pixel: its colour, the pyrays it took (result.rays) and the
     // deepest level reached.
@@ -98,6 +100,7 @@ private:
     std::vector<AsosSettings> objectSettings_;
     std::vector<AsosSettings> lightSettings_;
     bool patternEdges_;
+    bool patternFilter_;
     std::vector<std::uint8_t> selfShadowing_;
     std::vector<std::uint8_t> patterned_;
     double eyeTMax_ = kInfinity;  // where eye pyrays end: beyond every object, or never

@@ -13,6 +13,7 @@
 // default 0.5 stays 0.5); so do we. Measured against povray's renders in
 // tests/golden/povray/brick.pov.
 #include "asos/geometry/vec.hpp"
+#include "asos/render/pattern_planes.hpp"
 
 namespace asos {
 
@@ -35,6 +36,22 @@ public:
     // joint); where the box meets more than one course, the head joints of
     // both parities count.
     double edgesCrossed(const Vec3& lo, const Vec3& hi) const;
+
+    // The edge planes along `axis` (0, 1, 2): along y the foot and top of
+    // each bed joint, along x and z the sides of the head joints of both
+    // parities of course (a plane where a course has no joint is a harmless
+    // extra cut).
+    PatternPlanes planes(int axis) const;
+
+    // The share of the box [lo, hi] in brick (value 1), in closed form. The
+    // brick indicator is a sum of two products of one-coordinate pulse
+    // trains, one per parity of course:
+    //   [frac(Y) > m_y] ([even Y] [frac(X) > m_x] [frac(Z + 1/2) > m_z]
+    //                  + [odd Y]  [frac(X + 1/2) > m_x] [frac(Z) > m_z])
+    // (X, Y, Z, m as above), so over a box it is the same sum of products of
+    // the factors' means, each from its antiderivative. An axis of no width
+    // is taken at its point.
+    double boxShare(const Vec3& lo, const Vec3& hi) const;
 
 private:
     // Where a point lies along the axes, as numbers that change only across

@@ -63,13 +63,16 @@ public:
                RenderCounters& counters, const LightContext& context = {}) const;
 
     // A known hit of `ray`, shaded with the caller's light function (as
-    // shadeSurface takes it); reflections are traced with plain rays.
+    // shadeSurface takes it), and with `pigment` where the caller has the
+    // pigment's colour (ShadeRequest::pigment); reflections are traced with
+    // plain rays.
     template <class LightFn>
     Vec3 shadeWith(const SurfaceHit& hit, const Ray& ray, int depth, double weight,
                    LightFn&& lightArriving, RenderCounters& counters,
-                   const LightContext& context = {}) const {
+                   const LightContext& context = {},
+                   const std::optional<Color>& pigment = std::nullopt) const {
         const Texture& texture = textureOf(scene_.object(static_cast<std::uint32_t>(hit.objectIndex)));
-        return shadeSurface({hit, texture, ray, depth, weight}, lights(), shading_, lightArriving,
+        return shadeSurface({hit, texture, ray, depth, weight, pigment}, lights(), shading_, lightArriving,
                             [&](const Ray& mirror, int d, double w) {
                                 ++counters.reflectedRays;
                                 return radiance(mirror, d, w, counters, context.reflected(d));

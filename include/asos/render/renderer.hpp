@@ -36,8 +36,16 @@ struct RenderSettings {
     // asos block; objects' and lights' own blocks refine both.
     AsosOptions asos;
     // ASOS: also subdivide where a pigment pattern's edge crosses a pyray
-    // (docs/algorithm.md, "Pattern edges"); off: the paper's method alone.
+    // (docs/algorithm.md, "Pattern edges").
     bool patternEdges = false;
+    // ASOS: shade each leaf with its pigment averaged over its footprint
+    // (docs/algorithm.md, "Pattern filter"). By default on under ASOS
+    // without pattern edges (so that pattern edges stay the point-sampled
+    // reference the filter is checked against), and never under the classic
+    // methods, which sample patterns at points as POV-Ray does: on with a
+    // classic method is refused. Both pattern options off: the paper's
+    // method alone.
+    std::optional<bool> patternFilter;
     int samples = 4;            // grid and jitter: samples x samples rays per pixel
     AdaptiveSettings adaptive;  // adaptive and am1: threshold, depth, jitter (gamma from the scene)
     // Area lights (docs/lights.md): ASOS shadow beams or the classic grid of
@@ -68,6 +76,9 @@ std::string checkRenderSettings(const RenderSettings& settings);
 
 // The way area lights are shadowed under these settings.
 LightMethod effectiveLightMethod(const RenderSettings& settings);
+
+// Whether ASOS filters patterns under these settings (RenderSettings::patternFilter).
+bool effectivePatternFilter(const RenderSettings& settings);
 
 // Checks what the renderer needs of a description beyond what Scene::build
 // checks: asos blocks in range, lights it can render (checkLight, which also

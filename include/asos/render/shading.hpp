@@ -14,6 +14,7 @@
 //  - the colour seen along the reflected ray.
 // All colours are linear RGB in the scene's working space.
 #include <algorithm>
+#include <optional>
 #include <span>
 
 #include "asos/geometry/hit.hpp"
@@ -67,21 +68,21 @@ struct ShadingSettings {
 
 // The ray being shaded and where it ended. `depth` is POV-Ray's trace level
 // (eye rays 1, their reflections 2, ...) and `weight` its ADC weight (eye
-// rays 1).
+// rays 1). `pigment`: the pigment's colour when the caller has it already
+// (ASOS's pattern filter, averaged over the ray's footprint); otherwise the
+// pigment is evaluated at the hit.
 struct ShadeRequest {
     const SurfaceHit& hit;
     const Texture& texture;
     const Ray& ray;
     int depth = 1;
     double weight = 1.0;
+    std::optional<Color> pigment = std::nullopt;
 };
 
-// The pigment's colour at a world point. Checker: POV-Ray 3.7's rule in
-// pattern space, the parity of floor(x + e) + floor(y + e) + floor(z + e) with
-// e = kPovEpsilon (odd: color2). Brick: BrickPattern (brick: color2).
+// The pigment's colour at a world point: CheckerPattern and BrickPattern in
+// pattern space (1: color2).
 Color evaluatePigment(const Pigment& pigment, const Vec3& worldPoint);
-// 0 or 1 at a pattern-space point, as POV-Ray's checker pattern.
-int checkerValue(const Vec3& patternPoint);
 
 // POV-Ray's light fade (Attenuate_Light): with fade_power > 0,
 // 2 / (1 + (d / fade_distance)^fade_power), or d^-fade_power when
@@ -138,7 +139,10 @@ Vec3 shadeSurface(const ShadeRequest& req, std::span<const Light> lights,
     const Finish& finish = req.texture.finish;
     const Vec3 rayDir = glm::normalize(req.ray.dir);
     const Vec3 normal = facingNormal(req.hit.normal, rayDir);
-    const Vec3 pigment = evaluatePigment(req.texture.pigment, req.hit.position).rgb;
+    // Every term that uses the pigment (ambient, diffuse) is linear in it, so
+    // a pigment averaged over a footprint gives the average of those terms.
+    const Vec3 pigment =
+        (req.pigment ? *req.pigment : evaluatePigment(req.texture.pigment, req.hit.position)).rgb;
 
     Vec3 color = ambientTerm(finish, pigment, settings.ambientLight);
     if (usesLights(finish)) {
