@@ -388,6 +388,29 @@ ConeClass Box::classifyOnSurface(const LocalCone& cone, double tol) const {
     return marginalClass(cone, cone.tMin, dFar);
 }
 
+HoldingPlanes Box::holdingPlanes(const Vec3& point) const {
+    HoldingPlanes h;
+    // A box of no thickness along an axis is flat: that axis' planes first.
+    int first = 0;
+    for (int i = 2; i >= 0; --i)
+        if (lo_[i] == hi_[i]) first = i;
+    h.flat = lo_[first] == hi_[first];
+    for (int n = 0; n < 3; ++n) {
+        const int i = (first + n) % 3;
+        Vec3 e(0.0);
+        e[i] = 1.0;
+        h.add(e, hi_[i]);
+        h.add(-e, -lo_[i]);
+    }
+    // Outside (beyond the positional tolerance that classify uses), every
+    // face on a plane that holds the box on the point's side faces away.
+    const double tol = kTensOfUlps * (l1Norm(point) + cornerAbsSum_);
+    bool outside = false;
+    for (int i = 0; i < 3; ++i) outside = outside || point[i] < lo_[i] - tol || point[i] > hi_[i] + tol;
+    h.thinContact = !h.flat && outside;
+    return h;
+}
+
 bool Box::raysLeave(const LocalRays& rays) const {
     const Vec3& a = rays.origin;
     for (int i = 0; i < 3; ++i) {

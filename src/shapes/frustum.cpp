@@ -389,6 +389,20 @@ ConeClass Frustum::classifyOff(const LocalCone& cone, double rho, double tol, do
     return marginalClass(cone, dNear, firstFar);
 }
 
+HoldingPlanes Frustum::holdingPlanes(const Vec3& point) const {
+    HoldingPlanes h;
+    h.add(Vec3(0.0, 0.0, -1.0), 0.0);
+    h.add(Vec3(0.0, 0.0, 1.0), length_);
+    // Outside a capped solid (beyond classify's positional tolerance) a cap
+    // on such a plane faces away from the point; an open surface has no flat
+    // piece.
+    const double tol = kTensOfUlps * (l1Norm(point) + ball_.radius + ball_.center.z);
+    const double rho = length2d(point.x, point.y);
+    h.thinContact = !capped_ || point.z < -tol || point.z > length_ + tol ||
+                    (rho - radiusAt(point.z)) * invSlant_ > tol;
+    return h;
+}
+
 bool Frustum::raysLeave(const LocalRays& rays) const {
     // n = (L cos phi, L sin phi, r0 - r1), at the origin's angle phi, has
     // n . x <= L r0 over the solid (at both rims, L r0).

@@ -218,6 +218,27 @@ bool Primitive::canShadowItself() const {
     return visit([](const auto& shape) { return shape.canShadowItself(); });
 }
 
+HoldingPlanes Primitive::holdingPlanes(const Vec3& worldPoint) const {
+    HoldingPlanes h = visit([&](const auto& shape) { return shape.holdingPlanes(frame_.pointToLocal(worldPoint)); });
+    // local n.x <= d with x = L w + o (L = localFromWorld) is (L^T n).w <= d - n.o.
+    for (int i = 0; i < h.count; ++i) {
+        HalfSpace& p = h.planes[i];
+        const Vec3 n = frame_.kind == LocalFrame::Kind::Translate ? p.normal : p.normal * frame_.localFromWorld;
+        const double d = p.offset - glm::dot(p.normal, frame_.localOffset);
+        const double len = glm::length(n);
+        p = {n / len, d / len};
+    }
+    return h;
+}
+
+double Primitive::support(const Vec3& worldDir) const {
+    // max over world x = W y + o of n.x is n.o + the local support along W^T n.
+    const Vec3 local =
+        frame_.kind == LocalFrame::Kind::Translate ? worldDir : worldDir * frame_.worldFromLocal;
+    const double s = visit([&](const auto& shape) { return shape.support(local); });
+    return glm::dot(worldDir, frame_.pointToWorld(Vec3(0.0))) + s;
+}
+
 const char* Primitive::kindName() const { return name_; }
 
 }  // namespace asos

@@ -21,17 +21,31 @@ const char* coverageName(Coverage c) {
 
 }  // namespace
 
+std::vector<Vec3> probeDirections(const Cone& cone, const ProbeDensity& density) {
+    const Vec3 axis = glm::normalize(cone.axis);
+    const Mat3 basis = frameAroundAxis(axis);
+    const double theta = std::min(cone.halfAngle, kPi);
+    std::vector<Vec3> out{axis};
+    if (theta > 0.0) {
+        constexpr double kGolden = 2.39996322972865332;
+        for (int k = 1; k <= density.rings; ++k) {
+            const int n = density.raysPerRing * k + (k == density.rings ? density.rimRays : 0);
+            const double phi = theta * k / density.rings;
+            for (int j = 0; j < n; ++j) {
+                const double psi = kGolden * k + 2.0 * kPi * j / n;
+                out.push_back(glm::normalize(std::cos(phi) * axis + std::sin(phi) * (std::cos(psi) * basis[0] +
+                                                                                    std::sin(psi) * basis[1])));
+            }
+        }
+    }
+    return out;
+}
+
 ProbeResult probeCone(const Primitive& primitive, const Cone& cone, const ConeClass& answer,
                       const ProbeDensity& density) {
     ProbeResult out;
-    const Vec3 axis = glm::normalize(cone.axis);
-    const Mat3 basis = frameAroundAxis(axis);
     const double tMin = std::max(cone.tMin, 0.0);
-    const double theta = std::min(cone.halfAngle, kPi);
-    auto trace = [&](double phi, double psi) {
-        const Vec3 d = glm::normalize(std::cos(phi) * axis +
-                                      std::sin(phi) * (std::cos(psi) * basis[0] +
-                                                       std::sin(psi) * basis[1]));
+    for (const Vec3& d : probeDirections(cone, density)) {
         const std::optional<SurfaceHit> hit = primitive.intersect({cone.apex, d}, tMin, cone.tMax);
         ++out.rays;
         if (hit) ++out.hits;
@@ -49,19 +63,10 @@ ProbeResult probeCone(const Primitive& primitive, const Cone& cone, const ConeCl
             std::ostringstream s;
             s.precision(17);
             s << wrong << ": class " << coverageName(answer.coverage) << " [" << answer.tNear
-              << ", " << answer.tFar << "], ray at phi " << phi << " psi " << psi << " dir ("
+              << ", " << answer.tFar << "], ray dir ("
               << d.x << ", " << d.y << ", " << d.z << ")";
             if (hit) s << " hit t " << hit->t;
             out.firstViolation = s.str();
-        }
-    };
-    trace(0.0, 0.0);
-    if (theta > 0.0) {
-        constexpr double kGolden = 2.39996322972865332;
-        for (int k = 1; k <= density.rings; ++k) {
-            const int n = density.raysPerRing * k + (k == density.rings ? density.rimRays : 0);
-            const double phi = theta * k / density.rings;
-            for (int j = 0; j < n; ++j) trace(phi, kGolden * k + 2.0 * kPi * j / n);
         }
     }
     return out;

@@ -26,10 +26,11 @@ struct Setup {
     std::unique_ptr<AsosTracer> asos;
     AsosScratch scratch;
 
+    // The description's own camera when `keepCamera`, else orthoCamera.
     Setup(SceneDescription d, int width, int height, AsosSettings settings, std::uint64_t seed = 0,
-          bool patternEdges = false)
+          bool patternEdges = false, bool keepCamera = false)
         : description(std::move(d)) {
-        description.camera = orthoCamera(width, height);
+        if (!keepCamera) description.camera = orthoCamera(width, height);
         scene = buildScene(description);
         tracer = std::make_unique<RayTracer>(*scene);
         camera = std::make_unique<CameraModel>(description.camera, width, height);
@@ -322,6 +323,35 @@ TEST_CASE("ASOS tallies interpenetrating Full objects", "[asos]") {
             CHECK(r.result.color.x < 1.0);
         }
     CHECK(edgePixels > 20);
+}
+
+TEST_CASE("ASOS takes one ray for a pixel on a rug just above a floor", "[asos]") {
+    // Seen from a room's eye height, the rug's and the floor's depths over a
+    // pixel's cone overlap far more than the 2 mm between them, but the rug
+    // is in front over the whole cone: such a pixel is one object's.
+    SceneDescription d;
+    d.objects.push_back(makeObject(PlaneShape{{0, 1, 0}, 0.0}, coverageTexture(0.2)));
+    d.objects.push_back(makeObject(DiscShape{{0.4, 0.002, 0.6}, {0, 1, 0}, 1.3, 0.0}, coverageTexture(0.8)));
+    d.camera = lookAtCamera({2.4, 1.65, -2.8}, {0.4, 0.0, 0.6}, 40.0);
+    Setup s(d, 32, 24, AsosSettings{1.0 / 64.0, 4, false}, 0, false, true);
+    int inside = 0;
+    for (int y = 0; y < 24; ++y)
+        for (int x = 0; x < 32; ++x) {
+            // A pixel whose corners all see the rug well inside its rim.
+            bool deep = true;
+            for (int corner = 0; corner < 4 && deep; ++corner) {
+                const auto hit = s.tracer->nearestHit(s.camera->ray(x + (corner & 1), y + (corner >> 1)));
+                deep = hit && hit->objectIndex == 1 &&
+                       glm::length(hit->position - Vec3(0.4, 0.002, 0.6)) < 1.3 - 0.1;
+            }
+            if (!deep) continue;
+            ++inside;
+            const AsosPixelReport r = s.pixel(x, y);
+            INFO("pixel " << x << ", " << y);
+            CHECK(r.result.rays == 1);
+            CHECK(r.result.color.x == Approx(0.8));
+        }
+    CHECK(inside > 50);
 }
 
 TEST_CASE("With pattern edges, ASOS measures a checker edge within EPS", "[asos]") {

@@ -5,6 +5,7 @@
 // `asos bench intersect` (the spurious-marginal rate: a Marginal cone whose
 // rays all hit or all miss).
 #include <string>
+#include <vector>
 
 #include "asos/geometry/cone.hpp"
 #include "asos/shapes/primitive.hpp"
@@ -27,8 +28,12 @@ struct ProbeResult {
     bool allMiss() const { return hits == 0; }
 };
 
-// Rays are apex + t d for the directions d of the cone (its half-angle as
-// given, not widened), traced over [max(tMin, 0), tMax].
+// The unit directions of the probe's rays: the axis, the rings (the cone's
+// half-angle as given, not widened), the rim.
+std::vector<Vec3> probeDirections(const Cone& cone, const ProbeDensity& density = {});
+
+// Rays are apex + t d for the directions d, traced over [max(tMin, 0),
+// tMax].
 ProbeResult probeCone(const Primitive& primitive, const Cone& cone, const ConeClass& answer,
                       const ProbeDensity& density = {});
 
