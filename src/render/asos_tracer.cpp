@@ -234,7 +234,7 @@ std::optional<Vec3> AsosTracer::PixelTrace::detect(const EyePyray& pixel, LevelB
     to.items.clear();
     to.hits.clear();
     to.nodes.clear();
-    const PreparedCone cone(pixel.cone());
+    const PreparedCone cone(pixel.cone(), true);
     auto test = [&](std::uint32_t object) {
         ++c_.coneTests;
         const ConeClass k = scene_.primitive(object).classify(cone);
@@ -253,8 +253,9 @@ std::optional<Vec3> AsosTracer::PixelTrace::detect(const EyePyray& pixel, LevelB
 // dropped, none left is background and one Full object in front of all
 // covers the pyray ("this object covers the entire pixel and shading can be
 // performed"): a leaf, whose colour is returned. Otherwise the pyray is
-// marginal (or one object's pattern may change in it) and joins the level's
-// nodes, with its K-ray traced against its list for the tally.
+// marginal (or a crease of that object crosses it, or its pattern may change
+// in it) and joins the level's nodes, with its K-ray traced against its list
+// for the tally.
 std::optional<Vec3> AsosTracer::PixelTrace::settle(const EyePyray& pyray, const PreparedCone& cone,
                                                    int level, std::uint32_t ix, std::uint32_t iy,
                                                    LevelBuffers to, std::uint32_t first) {
@@ -268,7 +269,8 @@ std::optional<Vec3> AsosTracer::PixelTrace::settle(const EyePyray& pyray, const 
         const Item& front = to.items[first];
         std::optional<SurfaceHit> hit = frontHit(pyray, front);
         const PatternChange pattern = patternEdge(pyray, front, hit);
-        if (!pattern.mayChange) {
+        // A crease inside it is an edge between the parts of its surface.
+        if (!pattern.mayChange && front.cls.creaseParts == 0) {
             ++leaves_;
             return shadeLeaf(pyray.square(), level, ix, iy, pyray.centralRay(), hit);
         }
@@ -284,9 +286,10 @@ std::optional<Vec3> AsosTracer::PixelTrace::settle(const EyePyray& pyray, const 
 }
 
 // "Subdivision Phase", the decision: the tally of each marginal K-pyray
-// against each object it is marginal on (in: its K-ray hits it), and of the
-// Full objects crossed by another (in: its K-ray sees them), gives the
-// paper's bound on the change another level could make, L / 2^2K, or
+// against each object it is marginal on (in: its K-ray hits it), of the Full
+// objects crossed by another (in: its K-ray sees them) and of the parts
+// beside a crease inside a Full object (in: its K-ray sees that part) gives
+// the paper's bound on the change another level could make, L / 2^2K, or
 // half that where every pyray of an object is near one edge of it
 // ("Proximity to One Edge"); the level stops when the bound is within EPS or
 // the level is MAX.
@@ -297,18 +300,26 @@ AsosTracer::PixelTrace::LevelDecision AsosTracer::PixelTrace::decide(int level, 
         for (std::uint32_t i = n.first; i < n.first + n.count; ++i) {
             const std::uint32_t object = from.items[i].object;
             const ConeClass& k = from.items[i].cls;
+            const bool sees = n.hit && n.hit->objectIndex == static_cast<int>(object);
             if (k.coverage == Coverage::Marginal) {
                 s_.tally.add(object, from.hits[i] != 0, k.singleEdge);
-            } else if (from.items[i].crossed) {
-                s_.tally.add(object, n.hit && n.hit->objectIndex == static_cast<int>(object), false);
-            } else if (n.pattern.mayChange) {
-                // in: the K-ray sees the pattern's second colour.
-                s_.tally.add(object,
-                             n.hit && pigmentIndex(textureOf(scene_.object(object)).pigment,
-                                                   n.hit->position) == 1,
-                             n.pattern.singleEdge);
             } else {
-                continue;
+                // Each part the rays may see beside a crease, and a tip.
+                for (std::uint8_t part = 0; part < 7; ++part)
+                    if (k.creaseParts & (1u << part))
+                        s_.tally.addPart(object, part, sees && n.hit->part == part, k.singleEdge);
+                if (k.creaseParts & ConeClass::kTipCrease) s_.tally.addTip(object);
+                if (from.items[i].crossed) {
+                    s_.tally.add(object, sees, false);
+                } else if (n.pattern.mayChange) {
+                    // in: the K-ray sees the pattern's second colour.
+                    s_.tally.add(object,
+                                 n.hit && pigmentIndex(textureOf(scene_.object(object)).pigment,
+                                                       n.hit->position) == 1,
+                                 n.pattern.singleEdge);
+                } else if (k.creaseParts == 0) {
+                    continue;
+                }
             }
             settings = settings.finest(asos_.objectSettings_[object]);
         }
@@ -345,7 +356,7 @@ void AsosTracer::PixelTrace::subdivide(int level, double weight, LevelBuffers fr
             ++pyrays_;
             c_.countPyray(level);
             const auto first = static_cast<std::uint32_t>(to.items.size());
-            const PreparedCone cone(child.cone());
+            const PreparedCone cone(child.cone(), true);
             for (std::uint32_t i = n.first; i < n.first + n.count; ++i) {
                 ++c_.coneTests;
                 const ConeClass k = scene_.primitive(from.items[i].object).classify(cone);

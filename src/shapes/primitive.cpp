@@ -45,6 +45,7 @@ SurfaceHit Primitive::surfaceHit(const Ray& worldRay, const LocalHit& hit) const
     out.position = worldRay.at(hit.t);
     out.normal = frame_.normalToWorld(hit.normal);
     out.objectPoint = frame_.pointToObject(hit.point);
+    out.part = hit.part;
     return out;
 }
 
@@ -87,6 +88,7 @@ ConeClass Primitive::classifyRigid(const PreparedCone& cone) const {
     }
     local.cosHalf = cone.cosHalf;
     local.sinHalf = cone.sinHalf;
+    local.creases = cone.creases;
     const double absTol = kPositionTolerance * (l1Norm(local.apex) + sphereTolerance_);
     local.absTol = absTol;  // the range is set by the shape (classifyRanging)
     const double t0 = kScaled ? cone.tMin * frame_.localPerWorld : cone.tMin;
@@ -140,6 +142,7 @@ ConeClass Primitive::classifyGeneral(const PreparedCone& cone) const {
     LocalCone local;
     local.apex = a * cone.apex + frame_.localOffset;
     local.axis = axis;
+    local.creases = cone.creases;
     // A direction at angle phi <= theta from the axis maps to one whose
     // tangent from the new axis is at most tan(phi) sigmaPerp / (la - tan(phi) tau),
     // tl = s sigmaPerp / den: cos = den / |(den, s sigmaPerp)|, sin = tl cos
@@ -182,6 +185,7 @@ ConeClass Primitive::classifyGeneral(const PreparedCone& cone) const {
         if (!inEveryRange) {
             out.coverage = Coverage::Marginal;
             out.singleEdge = false;
+            out.creaseParts = 0;
         }
     }
     double farBound = kInfinity;

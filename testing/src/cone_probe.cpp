@@ -42,9 +42,10 @@ std::vector<Vec3> probeDirections(const Cone& cone, const ProbeDensity& density)
 }
 
 ProbeResult probeCone(const Primitive& primitive, const Cone& cone, const ConeClass& answer,
-                      const ProbeDensity& density) {
+                      const ProbeDensity& density, bool creases) {
     ProbeResult out;
     const double tMin = std::max(cone.tMin, 0.0);
+    int firstPart = -1;  // the part the first hit sees
     for (const Vec3& d : probeDirections(cone, density)) {
         const std::optional<SurfaceHit> hit = primitive.intersect({cone.apex, d}, tMin, cone.tMax);
         ++out.rays;
@@ -58,14 +59,21 @@ ProbeResult probeCone(const Primitive& primitive, const Cone& cone, const ConeCl
             const double tol = 1e-7 * hit->t + 1e-12;
             if (hit->t < answer.tNear - tol || hit->t > answer.tFar + tol)
                 wrong = "a hit lies outside [tNear, tFar]";
+            else if (creases && answer.coverage == Coverage::Full && answer.creaseParts == 0 && firstPart >= 0 &&
+                     hit->part != firstPart)
+                wrong = "a crease-free Full cone's rays see two parts";
+            else if (creases && answer.coverage == Coverage::Full && answer.creaseParts != 0 &&
+                     !(answer.creaseParts & (1u << hit->part)))
+                wrong = "a ray of a creased Full cone sees a part it does not name";
+            if (firstPart < 0) firstPart = hit->part;
         }
         if (wrong && out.violations++ == 0) {
             std::ostringstream s;
             s.precision(17);
             s << wrong << ": class " << coverageName(answer.coverage) << " [" << answer.tNear
-              << ", " << answer.tFar << "], ray dir ("
+              << ", " << answer.tFar << "] creaseParts " << int(answer.creaseParts) << ", ray dir ("
               << d.x << ", " << d.y << ", " << d.z << ")";
-            if (hit) s << " hit t " << hit->t;
+            if (hit) s << " hit t " << hit->t << " part " << int(hit->part);
             out.firstViolation = s.str();
         }
     }

@@ -245,8 +245,11 @@ inline PropertyStats runConeProperty(const char* name, std::uint64_t baseSeed, i
                                             : transform.worldFromObject.point(shape.surfacePoint(rng)) +
                                                   rng.unitVector() * shape.size * rng.uniform(0.0, 0.3);
         const Cone cone = randomCone(rng, target, surface, bounds, shape.size);
-        const ConeClass answer = prim.classify(cone);
-        ProbeResult probe = probeCone(prim, cone, answer, density);
+        // Every other case asks for the creases too (from the seed: the
+        // draws stay those of the cases before).
+        const bool creases = (seed & 1) != 0;
+        const ConeClass answer = prim.classify(PreparedCone(cone, creases));
+        ProbeResult probe = probeCone(prim, cone, answer, density, creases);
         const bool nan = std::isnan(answer.tNear) || std::isnan(answer.tFar);
         // The ray hits themselves: any-hit agrees, the point is on the ray,
         // in the bounds and back at objectPoint, the normal is unit.
@@ -316,7 +319,7 @@ inline PropertyStats runConeProperty(const char* name, std::uint64_t baseSeed, i
                     : answer.coverage == Coverage::Full ? "Full"
                                                         : "Marginal")
                 << " [" << fmt(answer.tNear) << ", " << fmt(answer.tFar) << "] singleEdge "
-                << answer.singleEdge << "\n  probe " << probe.hits << "/" << probe.rays
+                << answer.singleEdge << " creaseParts " << int(answer.creaseParts) << "\n  probe " << probe.hits << "/" << probe.rays
                 << " rays hit; " << probe.violations << " contradict"
                 << (probe.firstViolation.empty() ? "" : ": " + probe.firstViolation)
                 << (nan ? "\n  NaN depth bound" : "");

@@ -71,6 +71,9 @@ private:
     ConeClass classifyOutside(const LocalCone& cone) const;
     ConeClass classifyInside(const LocalCone& cone) const;
     ConeClass classifyOnSurface(const LocalCone& cone, double tol) const;
+    // A Full answer with the creases the cone may hold where the apex sees
+    // every edge as one (inside the box).
+    ConeClass withEveryCrease(const LocalCone& cone, ConeClass full) const;
 
     Vec3 lo_, hi_;
     // |lo| + |hi| summed over the axes: the box's part of classify's

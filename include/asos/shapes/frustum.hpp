@@ -100,6 +100,11 @@ private:
     double depthInside(double rho, double z) const;
 
     ConeClass classifyInside(const LocalCone& cone, double rho, double dFar) const;
+    // A Full answer with the creases the cone may hold: the rims of a
+    // capped solid's caps it sees (where the side meets them), and a tip
+    // not hidden behind a cap (from outside).
+    ConeClass withCreases(const LocalCone& cone, ConeClass full, bool seesBase, bool seesTop,
+                          bool inside = false) const;
     ConeClass classifyOnSurface(const LocalCone& cone, double rho, double tol, double dFar,
                                 bool nearSide, bool nearBottom, bool nearTop) const;
     // far2: the squared distance to the farthest point of the object.

@@ -33,8 +33,11 @@ struct ProbeResult {
 std::vector<Vec3> probeDirections(const Cone& cone, const ProbeDensity& density = {});
 
 // Rays are apex + t d for the directions d, traced over [max(tMin, 0),
-// tMax].
+// tMax]. Besides hit or miss and the depths, with `creases` (the answer was
+// asked for them: PreparedCone::creases) a Full answer's creases: the rays
+// of a cone it calls crease-free all see one part of the surface
+// (SurfaceHit::part), and those of one with creases only the parts it names.
 ProbeResult probeCone(const Primitive& primitive, const Cone& cone, const ConeClass& answer,
-                      const ProbeDensity& density = {});
+                      const ProbeDensity& density = {}, bool creases = false);
 
 }  // namespace asos
