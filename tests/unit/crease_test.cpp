@@ -72,9 +72,7 @@ CreasedShape randomCreased(Rng& rng) {
 TEST_CASE("Creases: the rays of a Full cone see one part unless it names a crease, and then only its parts",
           "[crease][property]") {
     int cases = 0, full = 0, creased = 0, single = 0, failures = 0;
-    for (int i = 0; i < 60000; ++i) {
-        const std::uint64_t seed = shapetest::splitmix(0xc4ea5e00ull + static_cast<std::uint64_t>(i));
-        Rng rng(seed);
+    shapetest::forEachCase(0xc4ea5e00ull, 60000, [&](int i, std::uint64_t seed, Rng& rng) {
         const CreasedShape s = randomCreased(rng);
         const shapetest::TransformCase tc = shapetest::randomTransform(rng, 5.0);
         const Primitive prim = Primitive::make(s.shape, tc.worldFromObject);
@@ -89,7 +87,7 @@ TEST_CASE("Creases: the rays of a Full cone see one part unless it names a creas
         cone.halfAngle = half;
         const ConeClass k = prim.classify(PreparedCone(cone, true));
         ++cases;
-        if (k.coverage != Coverage::Full) continue;
+        if (k.coverage != Coverage::Full) return;
         ++full;
         creased += k.creaseParts != 0;
         single += k.creaseParts != 0 && k.singleEdge;
@@ -98,7 +96,7 @@ TEST_CASE("Creases: the rays of a Full cone see one part unless it names a creas
             FAIL_CHECK("case " << i << " (seed " << seed << "): " << s.text << " under " << tc.text << "\n  "
                                << shapetest::describe(cone) << "\n  creaseParts " << int(k.creaseParts)
                                << " singleEdge " << k.singleEdge << ": " << probe.firstViolation);
-    }
+    });
     INFO(cases << " cases, " << full << " Full, " << creased << " with creases, " << single << " single");
     CHECK(failures == 0);
     CHECK(full > 10000);

@@ -94,9 +94,7 @@ std::string contradiction(const Primitive& front, const Primitive& back, const C
 TEST_CASE("Depth order: the object claimed in front is met first by every ray of the cone",
           "[depth_order][property]") {
     int cases = 0, claims = 0, failures = 0, fullPairs = 0, fullClaims = 0;
-    for (int i = 0; i < 40000; ++i) {
-        const std::uint64_t seed = shapetest::splitmix(0xde9740d0ull + static_cast<std::uint64_t>(i));
-        Rng rng(seed);
+    shapetest::forEachCase(0xde9740d0ull, 40000, [&](int i, std::uint64_t seed, Rng& rng) {
         const Pair pair = randomPair(rng);
         const shapetest::TransformCase tc = shapetest::randomTransform(rng, 5.0);
         const Primitive front = Primitive::make(pair.front, tc.worldFromObject);
@@ -112,7 +110,7 @@ TEST_CASE("Depth order: the object claimed in front is met first by every ray of
                                                                                 : rng.logUniform(-7.0, -4.0);
         if (rng.chance(0.2)) cone.tMin = rng.uniform(0.0, 0.5) * glm::length(cone.axis);
         const ConeClass kf = front.classify(cone), kb = back.classify(cone);
-        if (kf.coverage == Coverage::Miss || kb.coverage == Coverage::Miss) continue;
+        if (kf.coverage == Coverage::Miss || kb.coverage == Coverage::Miss) return;
         ++cases;
         const PreparedCone prepared(cone);
         const bool bothFull = kf.coverage == Coverage::Full && kb.coverage == Coverage::Full;
@@ -129,7 +127,7 @@ TEST_CASE("Depth order: the object claimed in front is met first by every ray of
                                    << ", the " << (way ? "back" : "front") << " object claimed in front: "
                                    << wrong << "\n  " << shapetest::describe(cone));
         }
-    }
+    });
     INFO(cases << " cases, " << claims << " claims; " << fullPairs << " with both Full, " << fullClaims
                << " of them ordered");
     CHECK(failures == 0);

@@ -46,6 +46,18 @@ inline std::uint64_t splitmix(std::uint64_t x) {
     return x ^ (x >> 31);
 }
 
+// Runs f(i, seed, rng) for `count` cases of a property test, each with its
+// own seed (splitmix(base + i)) and random numbers, so that a failing case
+// can be named and replayed alone.
+template <class F>
+void forEachCase(std::uint64_t base, int count, F&& f) {
+    for (int i = 0; i < count; ++i) {
+        const std::uint64_t seed = splitmix(base + static_cast<std::uint64_t>(i));
+        Rng rng(seed);
+        f(i, seed, rng);
+    }
+}
+
 inline std::string fmt(const Vec3& v) {
     std::ostringstream s;
     s.precision(17);
