@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "asos/render/pattern_filter.hpp"
+#include "asos/shapes/depth_order.hpp"
 #include "asos/shapes/local_cone.hpp"
 
 namespace asos {
@@ -13,33 +14,57 @@ namespace {
 using Item = AsosScratch::Item;
 using Node = AsosScratch::Node;
 
-// Drops, in place and in order, the objects of items[first, end) that lie
-// wholly behind a Full object (their nearest depth beyond its farthest): no
-// ray of the pyray can see them. Returns how many are left; items is cut to
-// first + that.
-std::uint32_t pruneHidden(std::vector<Item>& items, std::uint32_t first) {
-    double front = kInfinity;
-    for (std::size_t i = first; i < items.size(); ++i)
-        if (items[i].cls.coverage == Coverage::Full) front = std::min(front, items[i].cls.tFar);
-    std::size_t kept = first;
-    for (std::size_t i = first; i < items.size(); ++i)
-        if (items[i].cls.tNear <= front) items[kept++] = items[i];
-    items.resize(kept);
-    return static_cast<std::uint32_t>(kept - first);
+// Whether a's first hit comes before b's on every ray of the cone that meets
+// both: a's depths all before b's, or their order shown (depth_order.hpp).
+bool inFront(const Scene& scene, const PreparedCone& cone, const Item& a, const Item& b) {
+    return a.cls.tFar < b.cls.tNear ||
+           surelyInFront(scene.primitive(a.object), a.cls, scene.primitive(b.object), b.cls, cone);
 }
 
-// A Full object whose depth range overlaps another object's in the same
-// pyray: the visible surface may switch between them inside the pyray (a
-// sphere sunk into a plane), though neither has a boundary there.
-bool overlapsAnother(const std::vector<Item>& items, std::uint32_t first, std::uint32_t count,
-                     std::uint32_t i) {
-    const ConeClass& a = items[i].cls;
-    for (std::uint32_t j = first; j < first + count; ++j) {
-        if (j == i) continue;
-        const ConeClass& b = items[j].cls;
-        if (b.tNear <= a.tFar && a.tNear <= b.tFar) return true;
+// Sorts out the objects of items[first, end) for a pyray: drops, in place
+// and in order, those no ray of the pyray can see, which a Full object (met
+// by every ray) comes before on every ray (two that each come before the
+// other, to the tolerances of surelyInFront, are both kept); then marks as
+// crossed each Full object left whose order against another one left is
+// not known (a sphere sunk into a plane). Returns how many are left; items
+// is cut to first + that.
+std::uint32_t sortOut(const Scene& scene, const PreparedCone& cone, std::vector<Item>& items,
+                      std::uint32_t first, std::vector<std::uint8_t>& hidden) {
+    const std::size_t end = items.size();
+    // Wholly behind the nearest far depth of a Full object: hidden, as
+    // cheaply as that.
+    double front = kInfinity;
+    for (std::size_t i = first; i < end; ++i)
+        if (items[i].cls.coverage == Coverage::Full) front = std::min(front, items[i].cls.tFar);
+    hidden.assign(end - first, 0);
+    for (std::size_t i = first; i < end; ++i) {
+        if (items[i].cls.tNear > front) {
+            hidden[i - first] = 1;
+            continue;
+        }
+        for (std::size_t j = first; j < end; ++j) {
+            if (j == i || items[j].cls.coverage != Coverage::Full || items[j].cls.tNear > front) continue;
+            if (inFront(scene, cone, items[j], items[i]) &&
+                !(items[i].cls.coverage == Coverage::Full && inFront(scene, cone, items[i], items[j]))) {
+                hidden[i - first] = 1;
+                break;
+            }
+        }
     }
-    return false;
+    std::size_t kept = first;
+    for (std::size_t i = first; i < end; ++i)
+        if (!hidden[i - first]) items[kept++] = items[i];
+    items.resize(kept);
+    // Two Full objects left are crossed: neither hid the other.
+    for (std::size_t i = first; i < kept; ++i) {
+        Item& a = items[i];
+        a.crossed = false;
+        if (a.cls.coverage != Coverage::Full) continue;
+        for (std::size_t j = first; j < kept && !a.crossed; ++j)
+            a.crossed = j != i && items[j].cls.tNear <= a.cls.tFar && a.cls.tNear <= items[j].cls.tFar &&
+                        (items[j].cls.coverage == Coverage::Full || !inFront(scene, cone, items[j], a));
+    }
+    return static_cast<std::uint32_t>(kept - first);
 }
 
 }  // namespace
@@ -121,8 +146,8 @@ private:
     };
 
     std::optional<Vec3> detect(const EyePyray& pixel, LevelBuffers to);
-    std::optional<Vec3> settle(const EyePyray& pyray, int level, std::uint32_t ix, std::uint32_t iy,
-                               LevelBuffers to, std::uint32_t first);
+    std::optional<Vec3> settle(const EyePyray& pyray, const PreparedCone& cone, int level,
+                               std::uint32_t ix, std::uint32_t iy, LevelBuffers to, std::uint32_t first);
     LevelDecision decide(int level, LevelBuffers from);
     void subdivide(int level, double weight, LevelBuffers from, LevelBuffers to);
     void shadeStopped(int level, double weight, const AsosSettings& settings, LevelBuffers from);
@@ -212,7 +237,7 @@ std::optional<Vec3> AsosTracer::PixelTrace::detect(const EyePyray& pixel, LevelB
     to.items.clear();
     to.hits.clear();
     to.nodes.clear();
-    const PreparedCone cone(pixel.cone());
+    const PreparedCone cone(pixel.cone(), true);
     auto test = [&](std::uint32_t object) {
         ++c_.coneTests;
         const ConeClass k = scene_.primitive(object).classify(cone);
@@ -224,19 +249,20 @@ std::optional<Vec3> AsosTracer::PixelTrace::detect(const EyePyray& pixel, LevelB
     if (camera_.orthographic()) scene_.coneCandidates(pixel.cone(), test);
     else s_.eyeCandidates.visit(scene_, pixel.cone(), test);
     sortByObject(to.items.data(), to.items.data() + to.items.size());
-    return settle(pixel, 0, 0, 0, to, 0);
+    return settle(pixel, cone, 0, 0, 0, to, 0);
 }
 
-// A pyray whose objects are to.items[first, end): with those wholly hidden
+// A pyray whose objects are to.items[first, end): with those hidden
 // dropped, none left is background and one Full object in front of all
 // covers the pyray ("this object covers the entire pixel and shading can be
 // performed"): a leaf, whose colour is returned. Otherwise the pyray is
-// marginal (or one object's pattern may change in it) and joins the level's
-// nodes, with its K-ray traced against its list for the tally.
-std::optional<Vec3> AsosTracer::PixelTrace::settle(const EyePyray& pyray, int level,
-                                                   std::uint32_t ix, std::uint32_t iy,
+// marginal (or a crease of that object crosses it, or its pattern may change
+// in it) and joins the level's nodes, with its K-ray traced against its list
+// for the tally.
+std::optional<Vec3> AsosTracer::PixelTrace::settle(const EyePyray& pyray, const PreparedCone& cone,
+                                                   int level, std::uint32_t ix, std::uint32_t iy,
                                                    LevelBuffers to, std::uint32_t first) {
-    const std::uint32_t count = pruneHidden(to.items, first);
+    const std::uint32_t count = sortOut(scene_, cone, to.items, first, s_.hidden);
     to.hits.resize(to.items.size(), 0);
     if (count == 0) {
         ++leaves_;
@@ -246,7 +272,8 @@ std::optional<Vec3> AsosTracer::PixelTrace::settle(const EyePyray& pyray, int le
         const Item& front = to.items[first];
         std::optional<SurfaceHit> hit = frontHit(pyray, front);
         const PatternChange pattern = patternEdge(pyray, front, hit);
-        if (!pattern.mayChange) {
+        // A crease inside it is an edge between the parts of its surface.
+        if (!pattern.mayChange && front.cls.creaseParts == 0) {
             ++leaves_;
             return shadeLeaf(pyray.square(), level, ix, iy, pyray.centralRay(), hit);
         }
@@ -262,8 +289,9 @@ std::optional<Vec3> AsosTracer::PixelTrace::settle(const EyePyray& pyray, int le
 }
 
 // "Subdivision Phase", the decision: the tally of each marginal K-pyray
-// against each object it is marginal on (in: its K-ray hits it), and of the
-// Full objects that interpenetrate another (in: its K-ray sees them), gives
+// against each object it is marginal on (in: its K-ray hits it), of the Full
+// objects crossed by another (in: its K-ray sees them) and of the parts
+// beside a crease inside a Full object (in: its K-ray sees that part) gives
 // the paper's bound on the change another level could make, L / 2^2K, or
 // half that where every pyray of an object is near one edge of it
 // ("Proximity to One Edge"); the level stops when the bound is within EPS or
@@ -275,18 +303,26 @@ AsosTracer::PixelTrace::LevelDecision AsosTracer::PixelTrace::decide(int level, 
         for (std::uint32_t i = n.first; i < n.first + n.count; ++i) {
             const std::uint32_t object = from.items[i].object;
             const ConeClass& k = from.items[i].cls;
+            const bool sees = n.hit && n.hit->objectIndex == static_cast<int>(object);
             if (k.coverage == Coverage::Marginal) {
                 s_.tally.add(object, from.hits[i] != 0, k.singleEdge);
-            } else if (overlapsAnother(from.items, n.first, n.count, i)) {
-                s_.tally.add(object, n.hit && n.hit->objectIndex == static_cast<int>(object), false);
-            } else if (n.pattern.mayChange) {
-                // in: the K-ray sees the pattern's second colour.
-                s_.tally.add(object,
-                             n.hit && pigmentIndex(textureOf(scene_.object(object)).pigment,
-                                                   n.hit->position) == 1,
-                             n.pattern.singleEdge);
             } else {
-                continue;
+                // Each part the rays may see beside a crease, and a tip.
+                for (std::uint8_t part = 0; part < 7; ++part)
+                    if (k.creaseParts & (1u << part))
+                        s_.tally.addPart(object, part, sees && n.hit->part == part, k.singleEdge);
+                if (k.creaseParts & ConeClass::kTipCrease) s_.tally.addTip(object);
+                if (from.items[i].crossed) {
+                    s_.tally.add(object, sees, false);
+                } else if (n.pattern.mayChange) {
+                    // in: the K-ray sees the pattern's second colour.
+                    s_.tally.add(object,
+                                 n.hit && pigmentIndex(textureOf(scene_.object(object)).pigment,
+                                                       n.hit->position) == 1,
+                                 n.pattern.singleEdge);
+                } else if (k.creaseParts == 0) {
+                    continue;
+                }
             }
             settings = settings.finest(asos_.objectSettings_[object]);
         }
@@ -323,13 +359,13 @@ void AsosTracer::PixelTrace::subdivide(int level, double weight, LevelBuffers fr
             ++pyrays_;
             c_.countPyray(level);
             const auto first = static_cast<std::uint32_t>(to.items.size());
-            const PreparedCone cone(child.cone());
+            const PreparedCone cone(child.cone(), true);
             for (std::uint32_t i = n.first; i < n.first + n.count; ++i) {
                 ++c_.coneTests;
                 const ConeClass k = scene_.primitive(from.items[i].object).classify(cone);
                 if (k.coverage != Coverage::Miss) to.items.push_back({from.items[i].object, k});
             }
-            if (const std::optional<Vec3> leaf = settle(child, level, ix, iy, to, first))
+            if (const std::optional<Vec3> leaf = settle(child, cone, level, ix, iy, to, first))
                 color_ += weight * *leaf;
         }
     }

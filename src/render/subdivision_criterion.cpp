@@ -5,10 +5,10 @@
 
 namespace asos {
 
-SubdivisionTally::Entry& SubdivisionTally::entry(std::uint32_t object) {
+SubdivisionTally::Entry& SubdivisionTally::entry(std::uint32_t object, std::uint8_t part, double weight) {
     for (Entry& e : entries_)
-        if (e.object == object) return e;
-    entries_.push_back({object, 0, 0, true});
+        if (e.object == object && e.part == part) return e;
+    entries_.push_back({object, part, 0, 0, true, weight});
     return entries_.back();
 }
 
@@ -20,7 +20,7 @@ double SubdivisionTally::changeBound(int level) const {
 double SubdivisionTally::changeBoundForShare(double area) const {
     double bound = 0.0;
     for (const Entry& e : entries_) {
-        const double l = std::max(e.in, e.out);
+        const double l = e.weight * std::max(e.in, e.out);
         bound += e.allSingleEdge ? 0.5 * l * area : l * area;
     }
     return bound;
@@ -29,7 +29,7 @@ double SubdivisionTally::changeBoundForShare(double area) const {
 double SubdivisionTally::leastChangeBoundForShare(double area) const {
     double bound = 0.0;
     for (const Entry& e : entries_) {
-        const double l = double((e.in + e.out + 1) / 2);
+        const double l = e.weight * double((e.in + e.out + 1) / 2);
         bound += e.allSingleEdge ? 0.5 * l * area : l * area;
     }
     return bound;

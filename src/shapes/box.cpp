@@ -45,18 +45,25 @@ Slab slab(const Vec3& lo, const Vec3& hi, const Vec3& o, const Vec3& d) {
 
 double sq(double x) { return x * x; }
 
-// The silhouette edges for each of the 27 places of the apex (front[i] in
-// {-1, 0, 1} per axis: below, within or above the slab): the edges between a
-// face turned to the apex and one turned away, as pairs of corners (bit i of
-// a corner: hi on axis i). A table, so that the pass over them has no branch
-// on where the apex is.
-struct SilhouetteTable {
-    int count[27] = {};
-    int edge[27][12][2] = {};
+// The part (SurfaceHit::part) of the face on side `hi` of axis i.
+constexpr int facePart(int i, int hi) { return 2 * i + hi; }
+
+// The edges seen from each of the 27 places of the apex (front[i] in
+// {-1, 0, 1} per axis: below, within or above the slab), as pairs of corners
+// (bit i of a corner: hi on axis i): the silhouette, between a face turned to
+// the apex and one turned away, and the creases, between two faces turned to
+// it (at most three), with the two faces' parts as bits. Tables, so that the
+// passes over them have no branch on where the apex is.
+struct EdgeTable {
+    int silhouetteCount[27] = {};
+    int silhouette[27][12][2] = {};
+    int creaseCount[27] = {};
+    int crease[27][3][2] = {};
+    std::uint8_t creaseParts[27][3] = {};
 };
 
-constexpr SilhouetteTable makeSilhouetteTable() {
-    SilhouetteTable t;
+constexpr EdgeTable makeEdgeTable() {
+    EdgeTable t;
     for (int place = 0; place < 27; ++place) {
         const int front[3] = {place % 3 - 1, place / 3 % 3 - 1, place / 9 - 1};
         for (int k = 0; k < 3; ++k) {  // edges along axis k
@@ -65,11 +72,18 @@ constexpr SilhouetteTable makeSilhouetteTable() {
                 for (int sj = 0; sj < 2; ++sj) {
                     const bool frontI = front[i] == (si ? 1 : -1);
                     const bool frontJ = front[j] == (sj ? 1 : -1);
-                    if (frontI == frontJ) continue;
                     const int base = (si << i) | (sj << j);
-                    t.edge[place][t.count[place]][0] = base;
-                    t.edge[place][t.count[place]][1] = base | (1 << k);
-                    ++t.count[place];
+                    if (frontI != frontJ) {
+                        const int n = t.silhouetteCount[place]++;
+                        t.silhouette[place][n][0] = base;
+                        t.silhouette[place][n][1] = base | (1 << k);
+                    } else if (frontI) {
+                        const int n = t.creaseCount[place]++;
+                        t.crease[place][n][0] = base;
+                        t.crease[place][n][1] = base | (1 << k);
+                        t.creaseParts[place][n] =
+                            static_cast<std::uint8_t>((1 << facePart(i, si)) | (1 << facePart(j, sj)));
+                    }
                 }
             }
         }
@@ -77,7 +91,7 @@ constexpr SilhouetteTable makeSilhouetteTable() {
     return t;
 }
 
-constexpr SilhouetteTable kSilhouette = makeSilhouetteTable();
+constexpr EdgeTable kEdges = makeEdgeTable();
 
 }  // namespace
 
@@ -111,7 +125,7 @@ std::optional<LocalHit> Box::intersect(const Ray& ray, double tMin, double tMax)
     n[axis] = sign;
     Vec3 p = ray.at(t);
     p[axis] = (sign > 0.0) ? hi_[axis] : lo_[axis];  // exactly on the face
-    return LocalHit{t, p, n};
+    return LocalHit{t, p, n, static_cast<std::uint8_t>(2 * axis + (sign > 0.0 ? 1 : 0))};
 }
 
 bool Box::intersectAny(const Ray& ray, double tMin, double tMax) const {
@@ -313,17 +327,25 @@ ConeClass Box::classifyOutside(const LocalCone& cone) const {
         const bool vertex = (qb >= 0.0) | (-qb >= qc) | ((qa - reach2) * qc > qb * qb);
         return ends & vertex;
     };
+    // Whether the edge between two corners meets the cone, and whether an
+    // end of it lies inside.
+    struct EdgeMeeting {
+        bool meets = false, endInside = false;
+    };
+    auto edgeMeeting = [&](const int (&edge)[2]) {
+        if (farFromAxis(edge[0], edge[1])) return EdgeMeeting{};
+        const ConePoint& from = cornerAt(edge[0]);
+        const ConePoint& to = cornerAt(edge[1]);
+        return EdgeMeeting{segmentMeetsCone(cone, from, to), from.inside || to.inside};
+    };
     const int place = (front[0] + 1) + 3 * (front[1] + 1) + 9 * (front[2] + 1);
     int meeting = 0;
     bool endpointInside = false;
-    for (int n = 0; n < kSilhouette.count[place] && meeting < 2; ++n) {  // two meeting settle it
-        const int c0 = kSilhouette.edge[place][n][0], c1 = kSilhouette.edge[place][n][1];
-        if (farFromAxis(c0, c1)) continue;
-        const ConePoint& from = cornerAt(c0);
-        const ConePoint& to = cornerAt(c1);
-        if (segmentMeetsCone(cone, from, to)) {
+    for (int n = 0; n < kEdges.silhouetteCount[place] && meeting < 2; ++n) {  // two meeting settle it
+        const EdgeMeeting m = edgeMeeting(kEdges.silhouette[place][n]);
+        if (m.meets) {
             ++meeting;
-            endpointInside = endpointInside || from.inside || to.inside;
+            endpointInside = endpointInside || m.endInside;
         }
     }
     if (meeting > 0) {
@@ -332,8 +354,58 @@ ConeClass Box::classifyOutside(const LocalCone& cone) const {
     }
     // No silhouette in the cone: every ray hits or none does, as the axis.
     if (!axisHits) return missClass();
-    if (cone.surelyWithin(dNear, frontFar)) return fullClass(dNear, frontFar);
-    return marginalClass(cone, dNear, firstFar);
+    if (!cone.surelyWithin(dNear, frontFar)) return marginalClass(cone, dNear, firstFar);
+    // Full: the creases, edges between two faces turned to the apex, the
+    // cone may hold (the rays may see both faces of each).
+    ConeClass out = fullClass(dNear, frontFar);
+    if (!cone.creases) return out;
+    int creases = 0;
+    for (int n = 0; n < kEdges.creaseCount[place]; ++n) {
+        const EdgeMeeting m = edgeMeeting(kEdges.crease[place][n]);
+        if (m.meets) {
+            ++creases;
+            out.creaseParts |= kEdges.creaseParts[place][n];
+            endpointInside = endpointInside || m.endInside;
+        }
+    }
+    // The face the axis enters by: a ray on another face passed, on its way
+    // from the axis within the cone, a crease found above (one found to
+    // rounding only may have none beside it).
+    if (creases > 0 && axisSlab.enterAxis >= 0) {
+        const int e = axisSlab.enterAxis;
+        out.creaseParts |= static_cast<std::uint8_t>(1 << facePart(e, cone.axis[e] > 0.0 ? 0 : 1));
+    }
+    out.singleEdge = creases == 1 && !endpointInside;
+    return out;
+}
+
+ConeClass Box::withEveryCrease(const LocalCone& cone, ConeClass full) const {
+    if (!cone.creases) return full;
+    const Vec3* bounds[2] = {&lo_, &hi_};
+    ConePoint corner[8];
+    for (int c = 0; c < 8; ++c)
+        corner[c] = conePoint(cone, Vec3(bounds[c & 1]->x, bounds[(c >> 1) & 1]->y, bounds[(c >> 2) & 1]->z) -
+                                        cone.apex);
+    int creases = 0;
+    bool endpointInside = false;
+    for (int k = 0; k < 3; ++k) {  // the edges along axis k, from the corners without bit k
+        const int i = (k + 1) % 3, j = (k + 2) % 3;
+        for (int c0 = 0; c0 < 8; ++c0) {
+            if (c0 & (1 << k)) continue;
+            const int c1 = c0 | (1 << k);
+            if (!segmentMeetsCone(cone, corner[c0], corner[c1])) continue;
+            ++creases;
+            full.creaseParts |= static_cast<std::uint8_t>((1 << facePart(i, (c0 >> i) & 1)) |
+                                                          (1 << facePart(j, (c0 >> j) & 1)));
+            endpointInside = endpointInside || corner[c0].inside || corner[c1].inside;
+        }
+    }
+    // The face the axis leaves by, as above.
+    if (creases > 0)
+        if (const std::optional<LocalHit> hit = intersect(Ray{cone.apex, cone.axis}, cone.tMin, cone.tMax))
+            full.creaseParts |= static_cast<std::uint8_t>(1 << hit->part);
+    full.singleEdge = creases == 1 && !endpointInside;
+    return full;
 }
 
 ConeClass Box::classifyInside(const LocalCone& cone) const {
@@ -347,7 +419,7 @@ ConeClass Box::classifyInside(const LocalCone& cone) const {
     }
     const double exitFar = std::sqrt(far2);
     if (cone.surelyAfter(exitNear) || cone.surelyBefore(exitFar)) return missClass();
-    if (cone.surelyWithin(exitNear, exitFar)) return fullClass(exitNear, exitFar);
+    if (cone.surelyWithin(exitNear, exitFar)) return withEveryCrease(cone, fullClass(exitNear, exitFar));
     return marginalClass(cone, exitNear, exitFar);
 }
 
@@ -383,9 +455,37 @@ ConeClass Box::classifyOnSurface(const LocalCone& cone, double tol) const {
         }
     }
     if (cone.surelyBefore(dFar)) return missClass();
-    if (allInward && entryFar < 0.5 * exitNear && cone.surelyWithin(exitNear, dFar))
-        return fullClass(cone.tMin, dFar);
+    if (allInward && entryFar < 0.5 * exitNear && cone.surelyWithin(exitNear, dFar)) {
+        // Rays from a point of the surface: which face each sees first is up
+        // to rounding at its start; any of them.
+        ConeClass out = fullClass(cone.tMin, dFar);
+        if (cone.creases) out.creaseParts = 0x3f;
+        return out;
+    }
     return marginalClass(cone, cone.tMin, dFar);
+}
+
+HoldingPlanes Box::holdingPlanes(const Vec3& point) const {
+    HoldingPlanes h;
+    // A box of no thickness along an axis is flat: that axis' planes first.
+    int first = 0;
+    for (int i = 2; i >= 0; --i)
+        if (lo_[i] == hi_[i]) first = i;
+    h.flat = lo_[first] == hi_[first];
+    for (int n = 0; n < 3; ++n) {
+        const int i = (first + n) % 3;
+        Vec3 e(0.0);
+        e[i] = 1.0;
+        h.add(e, hi_[i]);
+        h.add(-e, -lo_[i]);
+    }
+    // Outside (beyond the positional tolerance that classify uses), every
+    // face on a plane that holds the box on the point's side faces away.
+    const double tol = kTensOfUlps * (l1Norm(point) + cornerAbsSum_);
+    bool outside = false;
+    for (int i = 0; i < 3; ++i) outside = outside || point[i] < lo_[i] - tol || point[i] > hi_[i] + tol;
+    h.thinContact = !h.flat && outside;
+    return h;
 }
 
 bool Box::raysLeave(const LocalRays& rays) const {

@@ -78,7 +78,7 @@ std::optional<LocalHit> Cylinder::intersect(const Ray& ray, double tMin, double 
     Vec3 point = ray.at(t);
     if (part == 0) return LocalHit{t, point, Vec3(point.x, point.y, 0.0)};
     point.z = part == 1 ? 0.0 : length_;
-    return LocalHit{t, point, Vec3(0.0, 0.0, part == 1 ? -1.0 : 1.0)};
+    return LocalHit{t, point, Vec3(0.0, 0.0, part == 1 ? -1.0 : 1.0), static_cast<std::uint8_t>(part)};
 }
 
 std::vector<ShapeIssue> validate(const CylinderShape& record) {

@@ -134,7 +134,7 @@ std::optional<LocalHit> Frustum::intersect(const Ray& ray, double tMin, double t
         point.z = part == 1 ? 0.0 : length_;
         normal = Vec3(0.0, 0.0, part == 1 ? -1.0 : 1.0);
     }
-    return LocalHit{t, point, normal};
+    return LocalHit{t, point, normal, static_cast<std::uint8_t>(part)};
 }
 
 Frustum::Interval Frustum::solidInterval(const Profile& f, const Vec3& origin, const Vec3& d) {
@@ -245,8 +245,32 @@ ConeClass Frustum::classifyInside(const LocalCone& cone, double rho, double dFar
     // Every ray leaves, no sooner than the boundary's distance.
     const double exitNear = depthInside(rho, cone.apex.z);
     if (cone.surelyAfter(exitNear) || cone.surelyBefore(dFar)) return missClass();
-    if (cone.surelyWithin(exitNear, dFar)) return fullClass(exitNear, dFar);
+    if (cone.surelyWithin(exitNear, dFar)) {
+        // From inside, a cone may see every part; where a rim's test (not
+        // exact) calls one in it, the rays' parts are not known better.
+        ConeClass out = withCreases(cone, fullClass(exitNear, dFar), true, true, true);
+        if (out.creaseParts & 0b110) out.creaseParts |= 0b111;
+        return out;
+    }
     return marginalClass(cone, exitNear, dFar);
+}
+
+ConeClass Frustum::withCreases(const LocalCone& cone, ConeClass full, bool seesBase, bool seesTop,
+                               bool inside) const {
+    if (!cone.creases) return full;
+    constexpr std::uint8_t kSide = 1, kBase = 2, kTop = 4;  // SurfaceHit::part 0, 1, 2
+    if (capped_ && seesBase && r0_ > 0.0 && circleMayMeetCone(cone, 0.0, r0_)) full.creaseParts |= kSide | kBase;
+    if (capped_ && seesTop && r1_ > 0.0 && circleMayMeetCone(cone, length_, r1_)) full.creaseParts |= kSide | kTop;
+    // A tip, unless a capped solid hides it behind the cap the apex faces
+    // from outside (in a Full cone it cannot be on the silhouette).
+    const double radii[2] = {r0_, r1_};
+    const bool hidden[2] = {capped_ && !inside && seesTop, capped_ && !inside && seesBase};
+    for (int end = 0; end < 2; ++end) {
+        if (radii[end] > 0.0 || hidden[end]) continue;
+        const ConePoint tip = conePoint(cone, Vec3(0.0, 0.0, end ? length_ : 0.0) - cone.apex);
+        if (coneDistance(cone, tip) <= cone.absTol) full.creaseParts |= kSide | ConeClass::kTipCrease;
+    }
+    return full;
 }
 
 ConeClass Frustum::classifyOnSurface(const LocalCone& cone, double rho, double tol, double dFar,
@@ -294,7 +318,8 @@ ConeClass Frustum::classifyOff(const LocalCone& cone, double rho, double tol, do
             const double spread = tm * s;
             if (spread < depth - tol) {
                 const double tFar = tm - std::sqrt((depth - spread) * (depth + spread));
-                if (cone.surelyWithin(dNear, tFar)) return fullClass(dNear, tFar);
+                if (cone.surelyWithin(dNear, tFar))
+                    return withCreases(cone, fullClass(dNear, tFar), facesBottom, facesTop);
             }
         }
     }
@@ -385,8 +410,23 @@ ConeClass Frustum::classifyOff(const LocalCone& cone, double rho, double tol, do
     const bool axisHits =
         capped_ ? axisChord.hit && axisChord.exit >= 0.0 : sideHitAhead(p, cone.axis);
     if (!axisHits) return missClass();
-    if (cone.surelyWithin(dNear, frontFar)) return fullClass(dNear, frontFar);
+    if (cone.surelyWithin(dNear, frontFar))
+        return withCreases(cone, fullClass(dNear, frontFar), facesBottom, facesTop);
     return marginalClass(cone, dNear, firstFar);
+}
+
+HoldingPlanes Frustum::holdingPlanes(const Vec3& point) const {
+    HoldingPlanes h;
+    h.add(Vec3(0.0, 0.0, -1.0), 0.0);
+    h.add(Vec3(0.0, 0.0, 1.0), length_);
+    // Outside a capped solid (beyond classify's positional tolerance) a cap
+    // on such a plane faces away from the point; an open surface has no flat
+    // piece.
+    const double tol = kTensOfUlps * (l1Norm(point) + ball_.radius + ball_.center.z);
+    const double rho = length2d(point.x, point.y);
+    h.thinContact = !capped_ || point.z < -tol || point.z > length_ + tol ||
+                    (rho - radiusAt(point.z)) * invSlant_ > tol;
+    return h;
 }
 
 bool Frustum::raysLeave(const LocalRays& rays) const {

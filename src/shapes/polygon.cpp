@@ -125,6 +125,12 @@ Bounds3 Polygon::worldBounds(const Mat3& m, const Vec3& offset) const {
     return b;
 }
 
+double Polygon::support(const Vec3& dir) const {
+    double best = -kInfinity;
+    for (const Vec2& v : vertices_) best = std::max(best, dir.x * v.x + dir.y * v.y);
+    return best;
+}
+
 bool Polygon::contains(double x, double y) const {
     // Crossings of the ray +x from (x, y) with every edge of every loop.
     bool inside = false;

@@ -45,6 +45,7 @@ SurfaceHit Primitive::surfaceHit(const Ray& worldRay, const LocalHit& hit) const
     out.position = worldRay.at(hit.t);
     out.normal = frame_.normalToWorld(hit.normal);
     out.objectPoint = frame_.pointToObject(hit.point);
+    out.part = hit.part;
     return out;
 }
 
@@ -87,6 +88,7 @@ ConeClass Primitive::classifyRigid(const PreparedCone& cone) const {
     }
     local.cosHalf = cone.cosHalf;
     local.sinHalf = cone.sinHalf;
+    local.creases = cone.creases;
     const double absTol = kPositionTolerance * (l1Norm(local.apex) + sphereTolerance_);
     local.absTol = absTol;  // the range is set by the shape (classifyRanging)
     const double t0 = kScaled ? cone.tMin * frame_.localPerWorld : cone.tMin;
@@ -140,6 +142,7 @@ ConeClass Primitive::classifyGeneral(const PreparedCone& cone) const {
     LocalCone local;
     local.apex = a * cone.apex + frame_.localOffset;
     local.axis = axis;
+    local.creases = cone.creases;
     // A direction at angle phi <= theta from the axis maps to one whose
     // tangent from the new axis is at most tan(phi) sigmaPerp / (la - tan(phi) tau),
     // tl = s sigmaPerp / den: cos = den / |(den, s sigmaPerp)|, sin = tl cos
@@ -182,6 +185,7 @@ ConeClass Primitive::classifyGeneral(const PreparedCone& cone) const {
         if (!inEveryRange) {
             out.coverage = Coverage::Marginal;
             out.singleEdge = false;
+            out.creaseParts = 0;
         }
     }
     double farBound = kInfinity;
@@ -216,6 +220,27 @@ bool Primitive::raysLeave(const Vec3& worldOrigin, const Vec3* directions, int c
 
 bool Primitive::canShadowItself() const {
     return visit([](const auto& shape) { return shape.canShadowItself(); });
+}
+
+HoldingPlanes Primitive::holdingPlanes(const Vec3& worldPoint) const {
+    HoldingPlanes h = visit([&](const auto& shape) { return shape.holdingPlanes(frame_.pointToLocal(worldPoint)); });
+    // local n.x <= d with x = L w + o (L = localFromWorld) is (L^T n).w <= d - n.o.
+    for (int i = 0; i < h.count; ++i) {
+        HalfSpace& p = h.planes[i];
+        const Vec3 n = frame_.kind == LocalFrame::Kind::Translate ? p.normal : p.normal * frame_.localFromWorld;
+        const double d = p.offset - glm::dot(p.normal, frame_.localOffset);
+        const double len = glm::length(n);
+        p = {n / len, d / len};
+    }
+    return h;
+}
+
+double Primitive::support(const Vec3& worldDir) const {
+    // max over world x = W y + o of n.x is n.o + the local support along W^T n.
+    const Vec3 local =
+        frame_.kind == LocalFrame::Kind::Translate ? worldDir : worldDir * frame_.worldFromLocal;
+    const double s = visit([&](const auto& shape) { return shape.support(local); });
+    return glm::dot(worldDir, frame_.pointToWorld(Vec3(0.0))) + s;
 }
 
 const char* Primitive::kindName() const { return name_; }

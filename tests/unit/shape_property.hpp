@@ -46,6 +46,18 @@ inline std::uint64_t splitmix(std::uint64_t x) {
     return x ^ (x >> 31);
 }
 
+// Runs f(i, seed, rng) for `count` cases of a property test, each with its
+// own seed (splitmix(base + i)) and random numbers, so that a failing case
+// can be named and replayed alone.
+template <class F>
+void forEachCase(std::uint64_t base, int count, F&& f) {
+    for (int i = 0; i < count; ++i) {
+        const std::uint64_t seed = splitmix(base + static_cast<std::uint64_t>(i));
+        Rng rng(seed);
+        f(i, seed, rng);
+    }
+}
+
 inline std::string fmt(const Vec3& v) {
     std::ostringstream s;
     s.precision(17);
@@ -245,8 +257,11 @@ inline PropertyStats runConeProperty(const char* name, std::uint64_t baseSeed, i
                                             : transform.worldFromObject.point(shape.surfacePoint(rng)) +
                                                   rng.unitVector() * shape.size * rng.uniform(0.0, 0.3);
         const Cone cone = randomCone(rng, target, surface, bounds, shape.size);
-        const ConeClass answer = prim.classify(cone);
-        ProbeResult probe = probeCone(prim, cone, answer, density);
+        // Every other case asks for the creases too (from the seed: the
+        // draws stay those of the cases before).
+        const bool creases = (seed & 1) != 0;
+        const ConeClass answer = prim.classify(PreparedCone(cone, creases));
+        ProbeResult probe = probeCone(prim, cone, answer, density, creases);
         const bool nan = std::isnan(answer.tNear) || std::isnan(answer.tFar);
         // The ray hits themselves: any-hit agrees, the point is on the ray,
         // in the bounds and back at objectPoint, the normal is unit.
@@ -316,7 +331,7 @@ inline PropertyStats runConeProperty(const char* name, std::uint64_t baseSeed, i
                     : answer.coverage == Coverage::Full ? "Full"
                                                         : "Marginal")
                 << " [" << fmt(answer.tNear) << ", " << fmt(answer.tFar) << "] singleEdge "
-                << answer.singleEdge << "\n  probe " << probe.hits << "/" << probe.rays
+                << answer.singleEdge << " creaseParts " << int(answer.creaseParts) << "\n  probe " << probe.hits << "/" << probe.rays
                 << " rays hit; " << probe.violations << " contradict"
                 << (probe.firstViolation.empty() ? "" : ": " + probe.firstViolation)
                 << (nan ? "\n  NaN depth bound" : "");

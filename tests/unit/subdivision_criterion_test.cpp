@@ -88,3 +88,31 @@ TEST_CASE("The least bound: what the bound is at least, whatever the central ray
     t.add(9, true, true);    // object 9: at least 1, halved
     CHECK(t.leastChangeBoundForShare(0.25) == Approx((2.0 + 0.5) / 4.0));
 }
+
+TEST_CASE("Creases: two parts beside one edge are the paper's edge, parts count half, a tip whole",
+          "[criterion]") {
+    // One straight crease between parts 1 and 4 of object 3 across 13
+    // pyrays, 6 K-rays on part 1: exactly Table 2's level 3 (in 6, out 7).
+    SubdivisionTally two;
+    for (int i = 0; i < 13; ++i) {
+        two.addPart(3, 1, i < 6, true);
+        two.addPart(3, 4, i >= 6, true);
+    }
+    CHECK(two.changeBound(3) == Approx(tally(6, 7, true).changeBound(3)));
+    // Three parts about a corner, not single: half of each part's term.
+    SubdivisionTally three;
+    const int seen[] = {1, 1, 3, 4, 4, 4};
+    for (int part : {1, 3, 4})
+        for (int k : seen) three.addPart(3, static_cast<std::uint8_t>(part), k == part, false);
+    CHECK(three.changeBound(1) == Approx(0.5 * (4 + 5 + 3) / 4.0));
+    // Beside the object's own outline, in entries of their own; a tip
+    // counts its pyrays whole.
+    SubdivisionTally both;
+    both.add(3, true, false);
+    both.addPart(3, 0, true, false);
+    both.addPart(3, 2, false, false);
+    both.addTip(3);
+    both.addTip(3);
+    CHECK(both.entries().size() == 4);
+    CHECK(both.changeBound(0) == Approx(1.0 + 0.5 + 0.5 + 2.0));
+}

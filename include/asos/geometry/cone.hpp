@@ -3,6 +3,7 @@
 // Object-Space", Figure 1) or a shadow cone (Figure 5b), and the answer a
 // primitive gives about it (paper: "Detection Phase").
 #include <cmath>
+#include <cstdint>
 
 #include "asos/geometry/vec.hpp"
 
@@ -36,9 +37,18 @@ struct ConeClass {
     // [tNear, tFar].
     double tNear = kInfinity;
     double tFar = -kInfinity;
-    // Marginal only: the boundary inside the cone is a single straight edge
-    // (the paper's "Proximity to One Edge" criterion may be used).
+    // Marginal: the boundary inside the cone is a single straight edge (the
+    // paper's "Proximity to One Edge" criterion may be used). Full with a
+    // crease: the crease inside the cone is a single straight edge.
     bool singleEdge = false;
+    // Full only, for a cone that asks (PreparedCone::creases): a crease of
+    // the object, where its normal jumps (a box's edge between two faces, a
+    // capped cylinder's or cone's rim, a cone's tip), may lie inside the
+    // cone, so that its rays see different parts of the surface. Bit i: the rays may see part i (SurfaceHit::part)
+    // beside such a crease; kTipCrease: a tip, around which the normal turns
+    // all round, may lie inside the cone. 0: every ray sees the same part.
+    std::uint8_t creaseParts = 0;
+    static constexpr std::uint8_t kTipCrease = 0x80;
 };
 
 }  // namespace asos

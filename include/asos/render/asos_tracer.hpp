@@ -31,6 +31,10 @@ struct AsosScratch {
     struct Item {
         std::uint32_t object;
         ConeClass cls;
+        // Full, and which of it and another object of the pyray a ray meets
+        // first is not known: the visible surface may switch between them
+        // inside the pyray, though neither has a boundary there.
+        bool crossed = false;
     };
     // A marginal pyray awaiting the stopping decision of its level.
     struct Node {
@@ -44,6 +48,7 @@ struct AsosScratch {
     };
     std::vector<Item> items[2];
     std::vector<std::uint8_t> hits[2];  // per item: the node's K-ray hits the object
+    std::vector<std::uint8_t> hidden;   // per item of the pyray being settled
     std::vector<Node> nodes[2];
     SubdivisionTally tally;
     ShadowScratch shadow;

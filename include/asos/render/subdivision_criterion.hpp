@@ -12,7 +12,16 @@
 // |Δcoverage(o)| <= max(in_o, out_o) · 4^-K (halved when all of o's marginal
 // pyrays are near one straight edge), and the change of a pixel intensity in
 // [0,1] is at most the sum of the coverage changes. With a single object the
-// sum is exactly the paper's criterion. docs/algorithm.md has the argument.
+// sum is exactly the paper's criterion.
+//
+// A crease inside an object (a box's edge between two visible faces) is an
+// edge between parts of its surface: in a pyray the object covers, each part
+// the rays may see is tallied, in when the K-ray sees it. The parts' coverages
+// add up to the pyray, so their changes add up to zero, and a pixel value
+// sum_p c_p cov_p with c_p in [0,1] changes by sum_p (c_p - 1/2) Δcov_p, at
+// most half the sum of |Δcov_p|: each part counts half (for two parts, one
+// edge, exactly the paper's term). A tip, around which the normal turns all
+// round, counts its pyrays whole. docs/algorithm.md has the argument.
 #include <cstdint>
 #include <vector>
 
@@ -20,12 +29,21 @@ namespace asos {
 
 class SubdivisionTally {
 public:
+    // The part of an entry for an object's outline (or its pattern, or its
+    // order against another object), and for a tip.
+    static constexpr std::uint8_t kWhole = 0xff, kTip = 0xfe;
+
     // One marginal pyray's verdict on one object.
     void add(std::uint32_t object, bool centralRayHits, bool singleEdge) {
-        Entry& e = entry(object);
-        (centralRayHits ? e.in : e.out) += 1;
-        e.allSingleEdge = e.allSingleEdge && singleEdge;
+        count(entry(object, kWhole, 1.0), centralRayHits, singleEdge);
     }
+    // One pyray's verdict on one part of an object beside a crease inside
+    // it (SurfaceHit::part): in when its K-ray sees that part. Counts half.
+    void addPart(std::uint32_t object, std::uint8_t part, bool centralRaySees, bool singleEdge) {
+        count(entry(object, part, 0.5), centralRaySees, singleEdge);
+    }
+    // A pyray that may hold a tip of the object: counted whole.
+    void addTip(std::uint32_t object) { count(entry(object, kTip, 1.0), true, false); }
 
     // The paper's estimate of the largest change of the pixel intensity that
     // subdividing all marginal K-pyrays could produce, in units of the pixel.
@@ -44,14 +62,20 @@ public:
 
     struct Entry {
         std::uint32_t object = 0;
+        std::uint8_t part = kWhole;
         int in = 0;
         int out = 0;
         bool allSingleEdge = true;
+        double weight = 1.0;  // 1/2 for a part beside a crease
     };
     const std::vector<Entry>& entries() const { return entries_; }
 
 private:
-    Entry& entry(std::uint32_t object);
+    Entry& entry(std::uint32_t object, std::uint8_t part, double weight);
+    static void count(Entry& e, bool in, bool singleEdge) {
+        (in ? e.in : e.out) += 1;
+        e.allSingleEdge = e.allSingleEdge && singleEdge;
+    }
     std::vector<Entry> entries_;  // few objects per pixel: a flat vector beats a map
 };
 

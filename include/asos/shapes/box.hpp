@@ -1,6 +1,7 @@
 #pragma once
 // POV-Ray's box { corner1, corner2 } (corners in any order), axis-aligned in
 // its local frame, which is the object frame.
+#include <algorithm>
 #include <cmath>
 #include <optional>
 #include <vector>
@@ -11,6 +12,7 @@
 #include "asos/geometry/transform.hpp"
 #include "asos/scene/description.hpp"
 #include "asos/shapes/box_from_origin.hpp"
+#include "asos/shapes/holding_planes.hpp"
 #include "asos/shapes/local_cone.hpp"
 #include "asos/shapes/local_hit.hpp"
 #include "asos/shapes/local_rays.hpp"
@@ -47,6 +49,13 @@ public:
 
     bool convex() const { return true; }
     bool canShadowItself() const { return false; }
+    // Its six face planes (a flat box's plane first); a solid seen from
+    // outside.
+    HoldingPlanes holdingPlanes(const Vec3& point) const;
+    double support(const Vec3& dir) const {
+        return std::max(dir.x * lo_.x, dir.x * hi_.x) + std::max(dir.y * lo_.y, dir.y * hi_.y) +
+               std::max(dir.z * lo_.z, dir.z * hi_.z);
+    }
     // The plane of a face the origin is on or beyond.
     bool raysLeave(const LocalRays& rays) const;
     // BoxFromOrigin: the slabs' offsets from the origin found once.
@@ -62,6 +71,9 @@ private:
     ConeClass classifyOutside(const LocalCone& cone) const;
     ConeClass classifyInside(const LocalCone& cone) const;
     ConeClass classifyOnSurface(const LocalCone& cone, double tol) const;
+    // A Full answer with the creases the cone may hold where the apex sees
+    // every edge as one (inside the box).
+    ConeClass withEveryCrease(const LocalCone& cone, ConeClass full) const;
 
     Vec3 lo_, hi_;
     // |lo| + |hi| summed over the axes: the box's part of classify's

@@ -45,6 +45,8 @@ public:
     bool convex() const { return frustum_.capped(); }
     bool canShadowItself() const { return open_; }
     bool raysLeave(const LocalRays& rays) const { return frustum_.raysLeave(rays); }
+    HoldingPlanes holdingPlanes(const Vec3& point) const { return frustum_.holdingPlanes(point); }
+    double support(const Vec3& dir) const { return frustum_.support(dir); }
     template <class User>
     decltype(auto) withAnyTestFrom(const Vec3& origin, User&& user) const {
         return frustumAnyTestFrom(frustum_, *this, origin, user);

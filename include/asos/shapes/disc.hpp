@@ -5,6 +5,7 @@
 // Under a non-uniform scale, a shear or a matrix the disc's record is placed
 // as an EllipticDisc instead (place, below): the disc's room is this file,
 // disc.cpp and elliptic_disc.hpp/.cpp.
+#include <cmath>
 #include <optional>
 #include <variant>
 #include <vector>
@@ -16,6 +17,7 @@
 #include "asos/scene/description.hpp"
 #include "asos/shapes/cone_geometry.hpp"
 #include "asos/shapes/elliptic_disc.hpp"
+#include "asos/shapes/holding_planes.hpp"
 #include "asos/shapes/local_cone.hpp"
 #include "asos/shapes/local_hit.hpp"
 #include "asos/shapes/local_rays.hpp"
@@ -35,6 +37,8 @@ public:
     bool convex() const { return !(hole_ > 0.0); }
     bool canShadowItself() const { return false; }  // flat
     bool raysLeave(const LocalRays& rays) const { return rays.leaveZPlane(); }
+    HoldingPlanes holdingPlanes(const Vec3&) const { return zPlaneHolding(); }
+    double support(const Vec3& dir) const { return radius_ * std::sqrt(dir.x * dir.x + dir.y * dir.y); }
     template <class User>
     decltype(auto) withAnyTestFrom(const Vec3& origin, User&& user) const {
         return user(exactAnyTestFrom(*this, origin));

@@ -7,10 +7,12 @@
 // fraction of the outer ellipse). Its cones then stay circular, and are
 // classified in the stretched coordinates (x / ax, y / ay), where the annulus
 // is circular and the cone's footprint is another ellipse; no bounding cone.
+#include <cmath>
 #include <optional>
 
 #include "asos/geometry/bounds.hpp"
 #include "asos/geometry/ray.hpp"
+#include "asos/shapes/holding_planes.hpp"
 #include "asos/shapes/local_cone.hpp"
 #include "asos/shapes/local_hit.hpp"
 #include "asos/shapes/local_rays.hpp"
@@ -28,6 +30,11 @@ public:
     bool convex() const { return !(hole_ > 0.0); }
     bool canShadowItself() const { return false; }  // flat
     bool raysLeave(const LocalRays& rays) const { return rays.leaveZPlane(); }
+    HoldingPlanes holdingPlanes(const Vec3&) const { return zPlaneHolding(); }
+    double support(const Vec3& dir) const {
+        const double x = ax_ * dir.x, y = ay_ * dir.y;
+        return std::sqrt(x * x + y * y);
+    }
     template <class User>
     decltype(auto) withAnyTestFrom(const Vec3& origin, User&& user) const {
         return user(exactAnyTestFrom(*this, origin));

@@ -4,11 +4,14 @@
 // z = 0 to r1 at z = length, with caps (discs) at both ends unless open.
 // Cylinder and TruncatedCone own their ray tests; the cone classification
 // and the answers about rays from one origin, the same for both, live here.
+#include <algorithm>
+#include <cmath>
 #include <optional>
 
 #include "asos/geometry/bounds.hpp"
 #include "asos/geometry/cone.hpp"
 #include "asos/geometry/ray.hpp"
+#include "asos/shapes/holding_planes.hpp"
 #include "asos/shapes/local_cone.hpp"
 #include "asos/shapes/local_hit.hpp"
 #include "asos/shapes/local_rays.hpp"
@@ -43,6 +46,14 @@ public:
     // is beyond, or the plane tangent to the side along the generator
     // facing the origin.
     bool raysLeave(const LocalRays& rays) const;
+    // The two cap planes (they hold an open surface too); an open surface
+    // is curved, a capped one a solid seen from outside or not.
+    HoldingPlanes holdingPlanes(const Vec3& point) const;
+    // The solid is the hull of its rims.
+    double support(const Vec3& dir) const {
+        const double across = std::sqrt(dir.x * dir.x + dir.y * dir.y);
+        return std::max(r0_ * across, dir.z * length_ + r1_ * across);
+    }
 
 private:
 public:
@@ -89,6 +100,11 @@ private:
     double depthInside(double rho, double z) const;
 
     ConeClass classifyInside(const LocalCone& cone, double rho, double dFar) const;
+    // A Full answer with the creases the cone may hold: the rims of a
+    // capped solid's caps it sees (where the side meets them), and a tip
+    // not hidden behind a cap (from outside).
+    ConeClass withCreases(const LocalCone& cone, ConeClass full, bool seesBase, bool seesTop,
+                          bool inside = false) const;
     ConeClass classifyOnSurface(const LocalCone& cone, double rho, double tol, double dFar,
                                 bool nearSide, bool nearBottom, bool nearTop) const;
     // far2: the squared distance to the farthest point of the object.

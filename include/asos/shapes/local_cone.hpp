@@ -32,9 +32,12 @@ struct PreparedCone {
     // False for input that is not a cone (NaN, zero axis): such a cone is
     // answered Marginal over its whole range, which is always conservative.
     bool valid = true;
+    // Whether a Full answer should name the creases in the cone
+    // (ConeClass::creaseParts): eye pyrays ask, shadow cones need not.
+    bool creases = false;
 
     PreparedCone() = default;
-    explicit PreparedCone(const Cone& cone) {
+    explicit PreparedCone(const Cone& cone, bool withCreases = false) : creases(withCreases) {
         apex = cone.apex;
         tMin = std::max(cone.tMin, 0.0);
         tMax = cone.tMax;
@@ -117,6 +120,7 @@ struct LocalCone {
     double tMinOuter = 0.0, tMinInner = 0.0;
     double tMaxOuter = kInfinity, tMaxInner = kInfinity;
     double absTol = 0.0;  // absolute distance tolerance in local units
+    bool creases = false;  // PreparedCone::creases
 
     // Sets the range and its tolerant forms; absTol covers rounding of
     // distances of the size of the scene around the apex.

@@ -1,4 +1,5 @@
 #pragma once
+#include <cstdint>
 #include <optional>
 
 #include "asos/geometry/ray.hpp"
@@ -13,6 +14,7 @@ struct LocalHit {
     double t = kInfinity;
     Vec3 point{0.0};
     Vec3 normal{0.0, 0.0, 1.0};
+    std::uint8_t part = 0;  // SurfaceHit::part
 };
 
 // A sphere holding the whole primitive, in its local frame.

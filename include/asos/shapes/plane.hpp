@@ -9,6 +9,7 @@
 #include "asos/geometry/ray.hpp"
 #include "asos/geometry/transform.hpp"
 #include "asos/scene/description.hpp"
+#include "asos/shapes/holding_planes.hpp"
 #include "asos/shapes/local_cone.hpp"
 #include "asos/shapes/local_hit.hpp"
 #include "asos/shapes/local_rays.hpp"
@@ -44,6 +45,16 @@ public:
     bool convex() const { return false; }
     bool raysLeave(const LocalRays&) const { return false; }
     bool canShadowItself() const { return false; }  // flat
+    // Its own plane, both ways; unbounded across its normal (and the
+    // support along it is never asked for exactly).
+    HoldingPlanes holdingPlanes(const Vec3&) const {
+        HoldingPlanes h;
+        h.add(normal_, distance_);
+        h.add(-normal_, -distance_);
+        h.flat = true;
+        return h;
+    }
+    double support(const Vec3&) const { return kInfinity; }
     template <class User>
     decltype(auto) withAnyTestFrom(const Vec3& origin, User&& user) const {
         return user(exactAnyTestFrom(*this, origin));

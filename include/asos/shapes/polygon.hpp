@@ -13,6 +13,7 @@
 #include "asos/geometry/ray.hpp"
 #include "asos/geometry/transform.hpp"
 #include "asos/scene/description.hpp"
+#include "asos/shapes/holding_planes.hpp"
 #include "asos/shapes/local_cone.hpp"
 #include "asos/shapes/local_hit.hpp"
 #include "asos/shapes/local_rays.hpp"
@@ -35,6 +36,9 @@ public:
     bool convex() const { return convex_; }
     bool canShadowItself() const { return false; }  // flat
     bool raysLeave(const LocalRays& rays) const { return rays.leaveZPlane(); }
+    HoldingPlanes holdingPlanes(const Vec3&) const { return zPlaneHolding(); }
+    // The farthest vertex.
+    double support(const Vec3& dir) const;
     template <class User>
     decltype(auto) withAnyTestFrom(const Vec3& origin, User&& user) const {
         return user(exactAnyTestFrom(*this, origin));

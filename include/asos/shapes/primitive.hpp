@@ -21,6 +21,7 @@
 #include "asos/shapes/cylinder.hpp"
 #include "asos/shapes/disc.hpp"
 #include "asos/shapes/elliptic_disc.hpp"
+#include "asos/shapes/holding_planes.hpp"
 #include "asos/shapes/local_cone.hpp"
 #include "asos/shapes/local_frame.hpp"
 #include "asos/shapes/placed.hpp"
@@ -105,6 +106,14 @@ public:
     // light: a surface neither convex nor flat (an open cylinder or cone).
     // The shadow tests leave the shaded object out otherwise.
     bool canShadowItself() const;
+
+    // What the depth order of two objects over a cone asks
+    // (shapes/depth_order.hpp), in the world: the planes (unit normals) the
+    // primitive lies behind, as seen from `worldPoint` (holding_planes.hpp),
+    // and its support, the largest dir.x over it (+inf where unbounded that
+    // way), to rounding.
+    HoldingPlanes holdingPlanes(const Vec3& worldPoint) const;
+    double support(const Vec3& worldDir) const;
 
     // The POV-Ray keyword of the shape ("sphere", "cone", ...).
     const char* kindName() const;

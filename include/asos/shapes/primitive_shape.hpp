@@ -14,6 +14,7 @@
 #include "asos/geometry/cone.hpp"
 #include "asos/geometry/ray.hpp"
 #include "asos/geometry/transform.hpp"
+#include "asos/shapes/holding_planes.hpp"
 #include "asos/shapes/local_cone.hpp"
 #include "asos/shapes/local_hit.hpp"
 #include "asos/shapes/local_rays.hpp"
@@ -58,6 +59,12 @@ concept PrimitiveShape = requires(const S& shape, const Mat3& worldFromLocal, co
     // Whether it can cast a shadow on itself where it faces a light: a
     // surface neither convex nor flat.
     { shape.canShadowItself() } -> std::same_as<bool>;
+    // For the depth order of two objects over a cone (depth_order.hpp): the
+    // planes it lies behind as seen from a point (holding_planes.hpp), and
+    // its support, the largest dir.x over it (+inf where it is unbounded
+    // that way), to rounding.
+    { shape.holdingPlanes(point) } -> std::same_as<HoldingPlanes>;
+    { shape.support(point) } -> std::same_as<double>;
     // Calls user(test) once with its any-hit test for rays from one local
     // origin, test(dir, tMin, tMax) == intersectAny(Ray{origin, dir}, tMin,
     // tMax), what does not depend on the direction computed once where the

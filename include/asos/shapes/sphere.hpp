@@ -13,6 +13,7 @@
 #include "asos/geometry/transform.hpp"
 #include "asos/scene/description.hpp"
 #include "asos/shapes/cone_geometry.hpp"
+#include "asos/shapes/holding_planes.hpp"
 #include "asos/shapes/local_cone.hpp"
 #include "asos/shapes/local_frame.hpp"
 #include "asos/shapes/local_hit.hpp"
@@ -104,6 +105,13 @@ public:
 
     bool convex() const { return true; }
     bool canShadowItself() const { return false; }
+    // No plane holds it flat; curved, it touches a plane at one point.
+    HoldingPlanes holdingPlanes(const Vec3&) const {
+        HoldingPlanes h;
+        h.thinContact = true;
+        return h;
+    }
+    double support(const Vec3& dir) const { return radius_ * glm::length(dir); }
     // The plane across the ball facing the origin: n . x = r with
     // n = origin / |origin| holds the ball.
     bool raysLeave(const LocalRays& rays) const {

@@ -5,6 +5,7 @@
 // `asos bench intersect` (the spurious-marginal rate: a Marginal cone whose
 // rays all hit or all miss).
 #include <string>
+#include <vector>
 
 #include "asos/geometry/cone.hpp"
 #include "asos/shapes/primitive.hpp"
@@ -27,9 +28,16 @@ struct ProbeResult {
     bool allMiss() const { return hits == 0; }
 };
 
-// Rays are apex + t d for the directions d of the cone (its half-angle as
-// given, not widened), traced over [max(tMin, 0), tMax].
+// The unit directions of the probe's rays: the axis, the rings (the cone's
+// half-angle as given, not widened), the rim.
+std::vector<Vec3> probeDirections(const Cone& cone, const ProbeDensity& density = {});
+
+// Rays are apex + t d for the directions d, traced over [max(tMin, 0),
+// tMax]. Besides hit or miss and the depths, with `creases` (the answer was
+// asked for them: PreparedCone::creases) a Full answer's creases: the rays
+// of a cone it calls crease-free all see one part of the surface
+// (SurfaceHit::part), and those of one with creases only the parts it names.
 ProbeResult probeCone(const Primitive& primitive, const Cone& cone, const ConeClass& answer,
-                      const ProbeDensity& density = {});
+                      const ProbeDensity& density = {}, bool creases = false);
 
 }  // namespace asos
