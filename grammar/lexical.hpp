@@ -181,6 +181,8 @@ struct lbrace : tok<one<'{'>> {};
 struct rbrace : tok<one<'}'>> {};
 struct lparen : tok<one<'('>> {};
 struct rparen : tok<one<')'>> {};
+struct lbracket : tok<one<'['>> {};
+struct rbracket : tok<one<']'>> {};
 struct vector_open : tok<one<'<'>> {};
 struct vector_close : tok<one<'>'>> {};
 struct comma : tok<one<','>> {};
