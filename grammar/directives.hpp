@@ -106,7 +106,7 @@ struct string_start
 // the ';', or anything else, which does not: the interpreter decides, from the
 // value, whether a missing ';' (marked in the declaration's flags) is an error.
 struct macro_value : seq<lone_macro_call, macro_call> {};
-struct lone_name : seq<at<indexed_name, not_at<expression_continues>>, indexed_name> {};
+struct lone_name : seq<at<indexed_name, not_at<sor<expression_continues, one<'('>>>>, indexed_name> {};
 struct missing_semicolon : success {};
 struct declared_value
     : sor<seq<declarable_block, opt<semicolon>>, seq<array_value, opt<semicolon>>,
