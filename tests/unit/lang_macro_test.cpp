@@ -2,6 +2,8 @@
 // 3.7 with #debug (the scenes of the comments print the same values there).
 #include <catch2/catch.hpp>
 
+#include <filesystem>
+
 #include "asos/lang/parse.hpp"
 #include "interpret_text.hpp"
 
@@ -157,4 +159,35 @@ TEST_CASE("#break leaves #while and #for; #for compares with POV-Ray's epsilon",
     CHECK(floatOf("N", "#declare N = 0;\n#for (I, 0, 0.3, 0.1) #declare N = N + 1; #end") == 4);
     CHECK(floatOf("N", "#declare N = 0;\n#for (I, 1, 1 - 1e-11) #declare N = N + 1; #end") == 1);
     CHECK(floatOf("N", "#declare N = 0;\n#for (I, 1, 0) #declare N = N + 1; #end") == 0);
+}
+
+TEST_CASE("POV-Ray's own macros give POV-Ray's numbers", "[lang][macro]") {
+    // rand.inc, strings.inc, arrays.inc and colors.inc, as installed with POV-Ray
+    // (scripts/setup.sh); povray 3.7 prints the same lines.
+    const std::filesystem::path includes = "/usr/share/povray-3.7/include";
+    REQUIRE(std::filesystem::is_directory(includes));
+    InterpreterOptions options;
+    options.libraryPaths = {includes};
+    Run r = run(R"(
+        #include "colors.inc"
+        #include "strings.inc"
+        #include "rand.inc"
+        #include "arrays.inc"
+        #declare R = seed(7);
+        #debug concat(Str(RRand(1, 2, R)), " ", VStr(VRand(R)), " ", Str(Rand_Normal(0, 1, R)))
+        #debug CRGBStr(CHSL2RGB(<200, 0.5, 0.5>), 0, 4)
+        #declare A = array[5] {5, 3, 9, 1, 7};
+        Sort_Array(A)
+        #debug concat(Str(A[0]), Str(A[1]), Str(A[4]))
+        #debug VStr(VRand_In_Sphere(R))
+        #debug CRGBFTStr(Red, 0, 2)
+        sphere { 0, 1 }
+    )", options);
+    ok(r);
+    std::vector<std::string> lines;
+    for (const auto& d : r.diagnostics.all()) lines.push_back(d.message);
+    CHECK(lines == std::vector<std::string>{"1.953933 <0.610466,0.166852,0.034867> -0.271535",
+                                            "color rgb <   0.2500, 0.5833, 0.7500>", "1.0000003.0000009.000000",
+                                            "<0.189713,-0.563139,0.511525>",
+                                            "color rgbft < 1.00, 0.00, 0.00, 0.00, 0.00>"});
 }
