@@ -152,7 +152,7 @@ TEST_CASE("#switch runs on from the clause that holds until #break", "[lang][swi
     CHECK(pickOf("0") == "e");
 }
 
-TEST_CASE("#break leaves #while and #for; #for compares with POV-Ray's epsilon", "[lang][switch]") {
+TEST_CASE("#break leaves #while and #for, and #for compares with POV-Ray's epsilon", "[lang][switch]") {
     CHECK(floatOf("I", "#declare I = 0;\n#while (1) #if (I = 3) #break #end #declare I = I + 1; #end") == 3);
     CHECK(floatOf("N", "#declare N = 0;\n#for (J, 0, 9) #declare N = N + 1; #if (J = 4) #break #end #end") == 5);
     // povray: 0, 0.1, 0.2, 0.30000000000000004; and a loop ending 1e-11 short still runs.
