@@ -175,19 +175,9 @@ struct macro_body_text {
                 if (p < end && *p == '"') ++p;
             } else if (c == '/' && p + 1 < end && p[1] == '/') {
                 while (p < end && *p != '\n') ++p;
-            } else if (c == '/' && p + 1 < end && p[1] == '*') {  // block comments nest
-                int nesting = 0;
-                for (; p + 1 < end; ++p) {
-                    if (p[0] == '/' && p[1] == '*') {
-                        ++nesting;
-                        ++p;
-                    } else if (p[0] == '*' && p[1] == '/') {
-                        ++p;
-                        if (--nesting == 0) break;
-                    }
-                }
-                if (nesting != 0) return false;
-                ++p;
+            } else if (c == '/' && p + 1 < end && p[1] == '*') {
+                p = blockCommentEnd(p, end);
+                if (!p) return false;
             } else if (c == '#') {
                 const char* q = p + 1;
                 while (q < end && (*q == ' ' || *q == '\t' || *q == '\r' || *q == '\n')) ++q;

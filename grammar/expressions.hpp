@@ -4,8 +4,6 @@
 // #declare); comparisons, logic and `?:` live inside parentheses. Precedence
 // ladder, loosest first:
 //   ?:   |   &   < <= = != >= >   + -   * /   unary - + !   .member   primary
-#include <algorithm>
-
 #include "grammar/keywords.hpp"
 
 namespace asos::grammar {
@@ -198,17 +196,8 @@ struct lone_macro_call {
                 } else if (*p == '/' && p + 1 < end && p[1] == '/') {
                     while (p < end && *p != '\n') ++p;
                 } else if (*p == '/' && p + 1 < end && p[1] == '*') {
-                    int nesting = 0;
-                    for (; p + 1 < end; ++p) {
-                        if (p[0] == '/' && p[1] == '*') {
-                            ++nesting;
-                            ++p;
-                        } else if (p[0] == '*' && p[1] == '/') {
-                            ++p;
-                            if (--nesting == 0) break;
-                        }
-                    }
-                    p = std::min(p + 1, end);
+                    const char* after = blockCommentEnd(p, end);
+                    p = after ? after : end;
                 } else {
                     return;
                 }

@@ -42,6 +42,19 @@ Interpreter::Interpreter(const InterpreterOptions& options, Diagnostics& diagnos
     defaultTexture_ = std::make_shared<const Texture>();
 }
 
+Interpreter::Entered::Entered(Interpreter& self, Frame frame, Scope scope)
+    : self_(self), file_(self.file_), ast_(self.ast_) {
+    self_.frames_.push_back(std::move(frame));
+    self_.scopes_.push_back(std::move(scope));
+}
+
+Interpreter::Entered::~Entered() {
+    self_.scopes_.pop_back();
+    self_.frames_.pop_back();
+    self_.file_ = file_;
+    self_.ast_ = ast_;
+}
+
 Interpreter::Nested::Nested(Interpreter& self, const Node& at) : self_(self) {
     if (++self_.depth_ <= kMaxNesting) return;
     self_.error(at, "nested too deep: parentheses, operators, blocks, directives, includes and macro calls "
@@ -138,7 +151,6 @@ std::optional<SceneDescription> Interpreter::runText(std::string text, const std
 std::optional<SceneDescription> Interpreter::run(SourceFile& f) {
     file_ = &f;
     objects_.reserve(static_cast<std::size_t>(std::count(f.text.begin(), f.text.end(), '{')));
-    includeStack_.push_back(f.path);
     auto top = [this](const Node& n) { runTopEntry(n); };
     const EntryHandler handler(top);
     try {
@@ -446,7 +458,11 @@ void Interpreter::runInclude(const Node& n, EntryHandler handle) {
         error(at, std::move(message));
         throw Stop{};
     };
-    if (includeStack_.size() > kMaxIncludeDepth)
+    // The files being included, the scene first.
+    std::vector<std::filesystem::path> includes{files_.front().path};
+    for (const Frame& frame : frames_)
+        if (!frame.include.empty()) includes.push_back(frame.include);
+    if (includes.size() > kMaxIncludeDepth)
         fatal(n, "#include nested more than " + std::to_string(kMaxIncludeDepth) + " deep");
 
     // Beside the including file, beside the scene, in each -L folder, then in
@@ -481,9 +497,9 @@ void Interpreter::runInclude(const Node& n, EntryHandler handle) {
         for (const auto& dir : folders) where += (where.empty() ? "" : ", ") + dir.string();
         fatal(n[0], "cannot find include file '" + name + "'" + (where.empty() ? "" : " (looked in " + where + ")"));
     }
-    if (std::find(includeStack_.begin(), includeStack_.end(), found) != includeStack_.end()) {
+    if (std::find(includes.begin(), includes.end(), found) != includes.end()) {
         std::string chain;
-        for (const auto& p : includeStack_) chain += p.filename().string() + " -> ";
+        for (const auto& p : includes) chain += p.filename().string() + " -> ";
         fatal(n, "#include cycle: " + chain + found.filename().string());
     }
     // A file included again (say, in a loop) is read once.
@@ -500,24 +516,8 @@ void Interpreter::runInclude(const Node& n, EntryHandler handle) {
     SourceFile& f = *cached;
 
     const Nested nested(*this, n);
-    frames_.push_back({"included from", locOf(n)});
-    SourceFile* const savedFile = file_;
-    const Ast* const savedAst = ast_;
+    const Entered entered(*this, Frame{"included from", locOf(n), found}, Scope{});
     file_ = &f;
-    includeStack_.push_back(found);
-    scopes_.emplace_back();
-    struct Restore {
-        Interpreter& self;
-        SourceFile* file;
-        const Ast* ast;
-        ~Restore() {
-            self.scopes_.pop_back();
-            self.includeStack_.pop_back();
-            self.frames_.pop_back();
-            self.file_ = file;
-            self.ast_ = ast;
-        }
-    } restore{*this, savedFile, savedAst};
     Diagnostics syntax;
     const bool parsed = parseSceneEntries(
         f.text, f.name, names_, syntax,

@@ -317,15 +317,29 @@ private:
     std::unordered_map<std::string, SourceFile*> filesByPath_;  // included files, by canonical path
     SourceFile* file_ = nullptr;    // the file being run
     const Ast* ast_ = nullptr;      // its tree (for string literals)
-    std::vector<std::filesystem::path> includeStack_;
 
     // The includes and macro calls the run is inside, outermost first: the
-    // context of every diagnostic.
+    // context of every diagnostic, and the chain of includes.
     struct Frame {
         std::string what;  // "included from", "in macro Foo called at"
         SourceLoc at;
+        std::filesystem::path include;  // the file an include entered; empty for a macro
     };
     std::vector<Frame> frames_;
+    // Holds an include's or a macro call's frame, scope, file and tree while
+    // its body runs, and puts back the caller's when it is left.
+    class Entered {
+    public:
+        Entered(Interpreter& self, Frame frame, Scope scope);
+        ~Entered();
+        Entered(const Entered&) = delete;
+        Entered& operator=(const Entered&) = delete;
+
+    private:
+        Interpreter& self_;
+        SourceFile* file_;
+        const Ast* ast_;
+    };
     std::size_t depth_ = 0;  // nesting, for Nested
     std::vector<std::uint32_t> randomStreams_;  // seed(): POV-Ray's generators, by number
 

@@ -83,21 +83,8 @@ void Interpreter::invokeMacro(const Node& call, BodyContext context, EntryHandle
     }
 
     const Nested nested(*this, call);
-    frames_.push_back({"in macro " + nameOf(name) + " called at", locOf(call)});
-    scopes_.push_back(std::move(parameters));
-    SourceFile* const savedFile = file_;
-    const Ast* const savedAst = ast_;
-    struct Restore {
-        Interpreter& self;
-        SourceFile* file;
-        const Ast* ast;
-        ~Restore() {
-            self.scopes_.pop_back();
-            self.frames_.pop_back();
-            self.file_ = file;
-            self.ast_ = ast;
-        }
-    } restore{*this, savedFile, savedAst};
+    const Entered entered(*this, Frame{"in macro " + nameOf(name) + " called at", locOf(call), {}},
+                          std::move(parameters));
     const Ast& body = macroBody(*macro, context);
     file_ = macro->file;
     ast_ = &body;
