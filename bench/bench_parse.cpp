@@ -1,6 +1,7 @@
 // asos-bench parse [--max-exponent 6] [--povray] [--dir DIR]
-// Writes scenes of 10^3 … 10^N spheres, written out one by one ("explicit")
-// and made by a #while loop ("loop"), then times scene text → description for
+// Writes scenes of 10^3 … 10^N spheres, written out one by one ("explicit"),
+// made by a #while loop ("loop") and by a macro called from a #for loop for
+// each sphere ("macro"), then times scene text → description for
 // each: wall time, CPU time (user + system: steadier when the machine is
 // shared) and peak memory. Each case runs in a forked child so that its peak
 // memory (the child's getrusage maxrss) is its own. With --povray, POV-Ray 3.7
@@ -85,6 +86,21 @@ void writeLoop(const fs::path& path, long n) {
         << "           0.1 + mod(I, 300) / 1000\n"
         << "           pigment { rgb <mod(I, 7) / 7, 0.5, mod(I, 11) / 11> } }\n"
         << "  #declare I = I + 1;\n"
+        << "#end\n";
+}
+
+void writeMacro(const fs::path& path, long n) {
+    std::ofstream out(path);
+    out << "// " << n << " spheres made by a macro, called from a #for loop\n"
+        << "camera { location <50, 50, -150> look_at <50, 50, 50> }\n"
+        << "light_source { <0, 200, -100>, rgb 1 }\n"
+        << "#macro Ball(I)\n"
+        << "  sphere { <mod(I, 100) + 0.25, mod(div(I, 100), 100) + 0.5, div(I, 10000) + 0.75>,\n"
+        << "           0.1 + mod(I, 300) / 1000\n"
+        << "           pigment { rgb <mod(I, 7) / 7, 0.5, mod(I, 11) / 11> } }\n"
+        << "#end\n"
+        << "#for (I, 0, " << n - 1 << ")\n"
+        << "  Ball(I)\n"
         << "#end\n";
 }
 
@@ -192,16 +208,18 @@ int runBench(const BenchArgs& args) {
     int failures = 0;
     for (int e = 3; e <= args.maxExponent; ++e) {
         const long n = std::lround(std::pow(10.0, e));
-        for (const bool loop : {false, true}) {
-            const fs::path file = dir / ((loop ? "loop-1e" : "explicit-1e") + std::to_string(e) + ".pov");
-            if (loop)
+        for (const std::string kind : {"explicit", "loop", "macro"}) {
+            const fs::path file = dir / (kind + "-1e" + std::to_string(e) + ".pov");
+            if (kind == "loop")
                 writeLoop(file, n);
+            else if (kind == "macro")
+                writeMacro(file, n);
             else
                 writeExplicit(file, n);
             const Measure m = measureInChild(file);
             const bool ok = m.ok && m.objects == static_cast<std::size_t>(n);
             if (!ok) ++failures;
-            std::cout << std::left << std::setw(10) << (loop ? "loop" : "explicit") << std::right
+            std::cout << std::left << std::setw(10) << kind << std::right
                       << std::setw(10) << n << std::setw(10) << std::fixed << std::setprecision(1)
                       << static_cast<double>(fs::file_size(file, ec)) / 1048576.0 << std::setw(10) << std::setprecision(3)
                       << m.seconds << std::setw(10) << m.cpuSeconds << std::setw(10) << std::setprecision(1)
@@ -226,7 +244,8 @@ int runBench(const BenchArgs& args) {
 
 void addParseBenchmark(CLI::App& app, CommandResult& result) {
     auto args = std::make_shared<BenchArgs>();
-    CLI::App* cmd = app.add_subcommand("parse", "Parse time and peak memory, 10^3 to 10^6 spheres");
+    CLI::App* cmd = app.add_subcommand("parse", "Parse time and peak memory, 10^3 to 10^6 spheres, written out, "
+                                                "by #while, by a macro");
     cmd->add_option("--max-exponent", args->maxExponent, "Largest case is 10^N spheres (3 to 7)");
     cmd->add_flag("--povray", args->povray, "Also time POV-Ray 3.7 on the same files");
     cmd->add_option("--dir", args->dir, "Keep the generated scenes in this folder");

@@ -10,9 +10,38 @@
 // The second table, `rejection_message<Rule>`, holds what the parser reports
 // when Rule MATCHES: the POV-Ray constructs asos does not support, named at
 // their keyword. "{}" stands for the word that was met.
+#include "asos/lang/parse.hpp"
 #include "grammar/scene.hpp"
 
 namespace asos::grammar {
+
+// Which kind of entries each block body holds (a macro called among them reads
+// its body as such entries), and what a body that does not fit is told. Every
+// `entries<Entry>` needs its line here: the parser's actions refuse, at
+// compile time, an Entry without one.
+template <typename Entry>
+struct body_context;
+#define ASOS_BODY_CONTEXT(Entry, Context, Misfit)                        \
+    template <>                                                          \
+    struct body_context<Entry> {                                         \
+        static constexpr lang::BodyContext value = lang::BodyContext::Context; \
+        static constexpr const char* misfit = Misfit;                    \
+    };
+// clang-format off
+ASOS_BODY_CONTEXT(value_entry, Value, "expected one value (an expression, an object, a light_source, a camera, a pigment, a finish, a texture or an array), as the macro is called for its value")
+ASOS_BODY_CONTEXT(top_entry, Top, "expected a scene item (camera, light_source, an object, global_settings, background) or a directive, as the macro is called at the top of the scene")
+ASOS_BODY_CONTEXT(object_modifier, ObjectModifier, "expected an object modifier, as the macro is called among an object's modifiers")
+ASOS_BODY_CONTEXT(union_entry, Union, "expected an object, a light_source or an object modifier, as the macro is called in a union")
+ASOS_BODY_CONTEXT(light_entry, Light, "expected a light_source item, as the macro is called in a light_source")
+ASOS_BODY_CONTEXT(camera_entry, Camera, "expected a camera item, as the macro is called in a camera")
+ASOS_BODY_CONTEXT(pigment_entry, Pigment, "expected a colour, checker, brick, a transform, brick_size or mortar, as the macro is called in a pigment")
+ASOS_BODY_CONTEXT(finish_entry, Finish, "expected a finish item, as the macro is called in a finish")
+ASOS_BODY_CONTEXT(texture_entry, Texture, "expected pigment, finish or a transform, as the macro is called in a texture")
+ASOS_BODY_CONTEXT(global_entry, GlobalSettings, "expected a global setting, as the macro is called in global_settings")
+ASOS_BODY_CONTEXT(asos_entry, Asos, "expected eps, max or jitter, as the macro is called in an asos block")
+ASOS_BODY_CONTEXT(default_entry, Default, "expected texture, pigment or finish, as the macro is called in #default")
+// clang-format on
+#undef ASOS_BODY_CONTEXT
 
 namespace detail {
 template <typename RuleT>
@@ -68,13 +97,32 @@ template <> inline constexpr auto error_message<for_open> = "expected '(' after 
 template <> inline constexpr auto error_message<for_variable> = "expected the name of the loop variable";
 template <> inline constexpr auto error_message<for_comma> = "expected ','";
 template <> inline constexpr auto error_message<for_value> = "expected an expression";
-template <> inline constexpr auto error_message<declared_name> = "expected an identifier to declare";
+template <> inline constexpr auto error_message<declared_target> = "expected an identifier to declare";
 template <> inline constexpr auto error_message<declare_equals> = "expected '='";
-template <> inline constexpr auto error_message<declared_value> = "expected a value to declare: an expression, an object, a light_source, a camera, a pigment, a finish or a texture";
+template <> inline constexpr auto error_message<declared_value> = "expected a value to declare: an expression, an object, a light_source, a camera, a pigment, a finish, a texture or an array";
 template <> inline constexpr auto error_message<declare_semicolon> = "expected ';' after the declared value";
 template <> inline constexpr auto error_message<undefined_name> = "expected an identifier";
 template <> inline constexpr auto error_message<included_file> = "expected the name of the file to include";
 template <> inline constexpr auto error_message<version_value> = "expected a version number";
+template <> inline constexpr auto error_message<subscript_index> = "expected an array index";
+template <> inline constexpr auto error_message<subscript_close> = "expected ']' after the array index";
+template <> inline constexpr auto error_message<array_first_dimension> = "expected '[' and the size of the array after 'array'";
+template <> inline constexpr auto error_message<array_size> = "expected the size of the array";
+template <> inline constexpr auto error_message<array_size_close> = "expected ']' after the size of the array";
+template <> inline constexpr auto error_message<initialiser_end> = "expected an element, ',' or '}' in the array's initialiser";
+template <> inline constexpr auto error_message<macro_open> = "expected '(' after the name of the macro";
+template <> inline constexpr auto error_message<macro_argument> = "expected an argument of the macro";
+template <> inline constexpr auto error_message<macro_close> = "expected ',' or ')' after an argument of the macro";
+template <> inline constexpr auto error_message<macro_defined_name> = "expected the name of the macro";
+template <> inline constexpr auto error_message<macro_parameters_open> = "expected '(' and the macro's parameters";
+template <> inline constexpr auto error_message<macro_parameters_close> = "expected a parameter name, ',' or ')'";
+template <> inline constexpr auto error_message<macro_body_text> = "no #end closes the body of this #macro";
+template <> inline constexpr auto error_message<macro_end> = "expected #end to close #macro";
+template <> inline constexpr auto error_message<range_condition> = "expected '(', the low and the high end of the range, and ')'";
+template <> inline constexpr auto error_message<range_comma> = "expected ',' between the ends of the range";
+template <> inline constexpr auto error_message<switch_end> = "expected #case, #range, #else or #end in the #switch";
+template <> inline constexpr auto error_message<default_end> = "expected texture, pigment, finish or '}' in #default";
+template <typename Entry> inline constexpr const char* error_message<switch_first_clause<Entry>> = "expected #case or #range after #switch";
 template <> inline constexpr auto error_message<message_value> = "expected a message";
 // modifiers
 template <> inline constexpr auto error_message<float_value> = "expected a float expression";
@@ -123,6 +171,8 @@ template <> inline constexpr auto error_message<background_end> = "expected '}' 
 // top
 template <> inline constexpr auto error_message<end_of_file> = "expected a scene item (camera, light_source, an object, global_settings, background) or a directive";
 template <> inline constexpr auto error_message<lone_expression> = "expected an expression";
+// A macro's body that does not fit where the macro is called.
+template <typename Entry> inline constexpr const char* error_message<macro_body_end<Entry>> = body_context<Entry>::misfit;
 template <> inline constexpr auto error_message<end_of_expression> = "expected the end of the expression";
 
 template <typename Rule> inline constexpr const char* rejection_message = nullptr;

@@ -132,11 +132,108 @@ struct colour_tail_start : success {};  // makes the expression the colour's bas
 struct colour_tail : seq<at<colour_component_name>, colour_tail_start, plus<colour_component>> {};
 struct colour_in_place : seq<expression, opt<colour_tail>> {};
 
+// --- arrays and macro calls ---------------------------------------------------------
+// Values that are blocks (directives.hpp): an object, a light, a camera, a pigment, ….
+struct declarable_block;
+
+// A[i][j]: the elements of a declared array. Only after a name: a '[' after any
+// other value opens something else (a colour_map's entry).
+struct subscript_index : seq<expression> {};
+struct subscript_close : rbracket {};
+struct subscript : if_must<lbracket, subscript_index, subscript_close> {};
 struct name_reference : name {};
+struct indexed_name : seq<name_reference, star<subscript>> {};
+
+// array[N][M]… { initialiser }: a declared array's value. The initialiser nests one
+// level of braces per dimension; commas between elements are optional (POV-Ray's).
+struct array_start : success {};  // opens the array's node
+struct array_size : seq<expression> {};
+struct array_size_close : rbracket {};
+struct array_size_open : lbracket {};
+struct array_first_dimension : if_must<array_size_open, array_size, array_size_close> {};
+struct array_dimension : if_must<lbracket, array_size, array_size_close> {};
+struct array_initialiser;
+struct array_element : sor<array_initialiser, declarable_block, expression> {};
+struct initialiser_open : lbrace {};
+struct initialiser_end : rbrace {};
+struct array_initialiser : if_must<initialiser_open, star<array_element, opt<comma>>, initialiser_end> {};
+struct array_value
+    : if_must<kw_array, array_start, array_first_dimension, star<array_dimension>, opt<array_initialiser>> {};
+
+// Name(arguments): a macro call (POV-Ray has no other `name (`). An argument is
+// any value: an expression, a block or an array. The look-ahead keeps the
+// name's action from firing for a plain name.
+struct macro_name : name {};
+struct macro_open : lparen {};
+struct macro_first_argument : sor<declarable_block, array_value, expression> {};
+struct macro_argument : seq<macro_first_argument> {};  // after a comma: must be there
+struct macro_arguments : opt<macro_first_argument, star<comma, macro_argument>> {};
+struct macro_close : rparen {};
+struct macro_call : seq<at<name, one<'('>>, if_must<macro_name, macro_open, macro_arguments, macro_close>> {};
+// What may follow a value to make it part of a longer expression.
+struct expression_continues : one<'*', '/', '+', '-', '.'> {};
+
+// A macro call that stands alone: `Name (…)` not followed by an operator that
+// would make it an operand (* / + - .). Checked by scanning the text to the
+// balancing ')' (strings and comments skipped), not by parsing the arguments:
+// a look-ahead runs no actions, so an unsupported keyword among them would go
+// unnamed.
+struct lone_macro_call {
+    using rule_t = lone_macro_call;
+    using subs_t = empty_list;
+
+    template <typename ParseInput>
+    static bool match(ParseInput& in) {
+        const char* p = in.current();
+        const char* const end = in.end();
+        auto wordChar = [](char c) {
+            return (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || c == '_' || (c >= '0' && c <= '9');
+        };
+        auto skipBlanks = [&] {
+            while (p < end) {
+                if (*p == ' ' || *p == '\t' || *p == '\n' || *p == '\r' || *p == '\f' || *p == '\v') {
+                    ++p;
+                } else if (*p == '/' && p + 1 < end && p[1] == '/') {
+                    while (p < end && *p != '\n') ++p;
+                } else if (*p == '/' && p + 1 < end && p[1] == '*') {
+                    const char* after = blockCommentEnd(p, end);
+                    p = after ? after : end;
+                } else {
+                    return;
+                }
+            }
+        };
+        const char* word = p;
+        while (p < end && wordChar(*p)) ++p;
+        if (p == word || (*word >= '0' && *word <= '9') || !accept_name::accept(std::string_view(word, static_cast<std::size_t>(p - word))))
+            return false;
+        skipBlanks();
+        if (p == end || *p != '(') return false;
+        int depth = 0;
+        for (; p < end; ++p) {
+            if (*p == '"') {
+                for (++p; p < end && *p != '"' && *p != '\n'; ++p)
+                    if (*p == '\\' && p + 1 < end) ++p;
+            } else if (*p == '/' && p + 1 < end && (p[1] == '/' || p[1] == '*')) {
+                skipBlanks();
+                --p;
+            } else if (*p == '(') {
+                ++depth;
+            } else if (*p == ')' && --depth == 0) {
+                ++p;
+                break;
+            }
+        }
+        if (depth != 0) return true;  // unbalanced: let the call's own rules say what is wrong
+        skipBlanks();
+        return p == end || !(*p == '*' || *p == '/' || *p == '+' || *p == '-' || *p == '.');
+    }
+};
+
 struct unsupported_in_expression : unsupported_keyword {};
 
 struct primary : sor<number_literal, string_literal, parenthesized, plain_vector, vector_literal, function_call,
-                     colour_expression, constant, name_reference, unsupported_in_expression> {};
+                     colour_expression, constant, macro_call, indexed_name, unsupported_in_expression> {};
 
 // --- operators, tightest first -------------------------------------------------------
 struct unary;
@@ -184,4 +281,6 @@ struct logical_expression : seq<logical_or, opt<conditional_tail>> {};
 namespace tao::pegtl {
 template <typename Name>
 struct analyze_traits<Name, asos::grammar::plain_vector_text> : analyze_any_traits<> {};
+template <typename Name>
+struct analyze_traits<Name, asos::grammar::lone_macro_call> : analyze_opt_traits<> {};
 }  // namespace tao::pegtl

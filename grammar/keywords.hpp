@@ -92,6 +92,14 @@ ASOS_KEYWORD(kw_version, "version")
 ASOS_KEYWORD(kw_debug, "debug")
 ASOS_KEYWORD(kw_warning, "warning")
 ASOS_KEYWORD(kw_error, "error")
+ASOS_KEYWORD(kw_macro, "macro")
+ASOS_KEYWORD(kw_switch, "switch")
+ASOS_KEYWORD(kw_case, "case")
+ASOS_KEYWORD(kw_range, "range")
+ASOS_KEYWORD(kw_break, "break")
+ASOS_KEYWORD(kw_default, "default")
+// values
+ASOS_KEYWORD(kw_array, "array")
 
 #undef ASOS_KEYWORD
 

@@ -41,8 +41,25 @@ struct blank_run {
         return true;
     }
 };
-// Block comments nest, as in POV-Ray. An unterminated one is reported where
-// it starts, not at the end of the file.
+// Block comments nest, as in POV-Ray: the end of the comment that opens at
+// `p` ("/*"), or null when none closes it. (Shared with the rules that scan
+// text by hand: a macro's body, the look-ahead for a lone macro call.)
+inline const char* blockCommentEnd(const char* p, const char* end) {
+    int depth = 0;
+    for (; p + 1 < end; ++p) {
+        if (p[0] == '/' && p[1] == '*') {
+            ++depth;
+            ++p;
+        } else if (p[0] == '*' && p[1] == '/') {
+            ++p;
+            if (--depth == 0) return p + 1;
+        }
+    }
+    return nullptr;
+}
+
+// An unterminated block comment is reported where it starts, not at the end
+// of the file.
 struct unterminated_comment {
     using rule_t = unterminated_comment;
     using subs_t = empty_list;
@@ -61,18 +78,9 @@ struct block_comment {
         const char* const begin = in.current();
         const char* const end = in.end();
         if (end - begin < 2 || begin[0] != '/' || begin[1] != '*') return false;
-        int depth = 0;
-        for (const char* p = begin; p + 1 < end; ++p) {
-            if (p[0] == '/' && p[1] == '*') {
-                ++depth;
-                ++p;
-            } else if (p[0] == '*' && p[1] == '/') {
-                ++p;
-                if (--depth == 0) {
-                    in.bump(static_cast<std::size_t>(p + 1 - begin));  // counts the lines
-                    return true;
-                }
-            }
+        if (const char* after = blockCommentEnd(begin, end)) {
+            in.bump(static_cast<std::size_t>(after - begin));  // counts the lines
+            return true;
         }
         Control<unterminated_comment>::raise(static_cast<const ParseInput&>(in), st...);
     }
@@ -181,6 +189,8 @@ struct lbrace : tok<one<'{'>> {};
 struct rbrace : tok<one<'}'>> {};
 struct lparen : tok<one<'('>> {};
 struct rparen : tok<one<')'>> {};
+struct lbracket : tok<one<'['>> {};
+struct rbracket : tok<one<']'>> {};
 struct vector_open : tok<one<'<'>> {};
 struct vector_close : tok<one<'>'>> {};
 struct comma : tok<one<','>> {};

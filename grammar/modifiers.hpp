@@ -68,7 +68,7 @@ struct phong_size_item : if_must<kw_phong_size, float_value> {};
 struct specular_item : if_must<kw_specular, float_value> {};
 struct roughness_item : if_must<kw_roughness, float_value> {};
 struct reflection_item : if_must<kw_reflection, reflection_value> {};
-struct finish_name : name {};
+struct finish_name : indexed_name {};  // a declared finish
 struct finish_entry
     : sor<ambient_item, diffuse_item, brilliance_item, phong_item, phong_size_item, specular_item,
           roughness_item, reflection_item, finish_name, unsupported_item> {};
@@ -78,7 +78,7 @@ struct finish_block : if_must<kw_finish, block_open, entries<finish_entry>, fini
 // --- texture { Name  pigment {…}  finish {…}  transforms } ------------------------
 // A pattern of textures (`texture { checker texture {…} … }`) is not ours.
 struct texture_pattern : sor<kw_checker, kw_brick> {};
-struct texture_name : name {};
+struct texture_name : indexed_name {};  // a declared texture
 struct texture_entry
     : sor<pigment_block, finish_block, transform_item, texture_pattern, texture_name, unsupported_item> {};
 struct texture_end : rbrace {};

@@ -60,8 +60,9 @@ struct union_entry;
 struct union_end : rbrace {};
 struct union_block : if_must<kw_union, block_open, arguments_end, entries<union_entry>, union_end> {};
 
-// object { Name | an object,  modifiers… }
-struct object_base : sor<object_statement, name> {};
+// object { Name | A[i] | M(…) | an object,  modifiers… }
+struct object_reference : seq<expression> {};
+struct object_base : sor<object_statement, object_reference> {};
 struct object_block : if_must<kw_object, block_open, object_base, arguments_end, object_body,
                               object_end> {};
 
@@ -102,7 +103,7 @@ struct up_item : if_must<kw_up, vector_value> {};
 struct direction_item : if_must<kw_direction, vector_value> {};
 struct sky_item : if_must<kw_sky, vector_value> {};
 struct cylinder_camera : kw_cylinder {};  // POV-Ray's cylindrical projection: not ours
-struct camera_name : name {};
+struct camera_name : indexed_name {};  // a declared camera
 struct camera_entry
     : sor<perspective_item, orthographic_item, location_item, look_at_item, angle_item, right_item,
           up_item, direction_item, sky_item, transform_item, cylinder_camera, camera_name,

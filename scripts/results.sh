@@ -141,7 +141,7 @@ table_parse() {
       /^case / { pov = index($0, "|") > 0
                  printf "| case | spheres | file MiB | wall s | CPU s | peak MiB |%s\n", pov ? " POV-Ray wall s | POV-Ray CPU s | POV-Ray peak MiB |" : ""
                  printf "| --- | ---: | ---: | ---: | ---: | ---: |%s\n", pov ? " ---: | ---: | ---: |" : ""; next }
-      /^(explicit|loop) / { out = "|"; for (i = 1; i <= NF; i++) if ($i != "|") out = out " " $i " |"; print out }' \
+      /^(explicit|loop|macro) / { out = "|"; for (i = 1; i <= NF; i++) if ($i != "|") out = out " " $i " |"; print out }' \
       "$work/parse.log"
   } >"$content"
   replace_block parse "$content"

@@ -2,14 +2,16 @@
 # Installs the Debian 12 packages asos needs (only those missing), then
 # configures and builds a Release tree in ./build. Safe to run repeatedly.
 #   scripts/setup.sh            library, command line and tests
-#   ASOS_EXTRA_PACKAGES="..."   more packages to install (the test script adds
-#                               povray-examples, povray and gnuplot-nox)
+#   ASOS_EXTRA_PACKAGES="..."   more packages to install
+# POV-Ray comes too: its include files are what `#include "colors.inc"` finds,
+# the tests compare with it, and its example scenes are the corpus test's.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
 packages=(build-essential cmake ninja-build pkg-config
           tao-pegtl-dev libglm-dev libopenimageio-dev openimageio-tools
-          catch2 libtbb-dev libcli11-dev ${ASOS_EXTRA_PACKAGES:-})
+          catch2 libtbb-dev libcli11-dev povray povray-includes povray-examples
+          ${ASOS_EXTRA_PACKAGES:-})
 missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q 'install ok installed' || missing+=("$p")

@@ -2,6 +2,6 @@
 # Sets up, builds and runs the whole test suite through CTest.
 set -euo pipefail
 cd "$(dirname "$0")/.."
-ASOS_EXTRA_PACKAGES="povray-examples" scripts/setup.sh
+scripts/setup.sh
 build=${ASOS_BUILD_DIR:-build}
 ctest --test-dir "$build" --output-on-failure -j "$(nproc)" "$@"

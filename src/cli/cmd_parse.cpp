@@ -22,6 +22,7 @@ struct ParseArgs {
     std::vector<std::string> includePaths;
     std::vector<std::string> defines;
     double clock = 0.0;
+    bool clockGiven = false;  // `clock_on` is 1 when --clock is given, as with POV-Ray's +K
     bool stats = false;
     bool noLocations = false;
 };
@@ -39,7 +40,9 @@ int runParse(const ParseArgs& args) {
         }
         options.defines.push_back(std::move(*define));
     }
+    options.libraryPaths = lang::povrayLibraryPaths();
     options.clock = args.clock;
+    options.clockOn = args.clockGiven;
 
     Diagnostics diagnostics;
     const auto start = std::chrono::steady_clock::now();
@@ -70,9 +73,11 @@ void addParseCommand(CLI::App& app, CommandResult& result) {
     CLI::App* cmd = app.add_subcommand("parse", "Parse a scene and print its canonical description");
     cmd->add_option("scene", args->scene, "Scene file (.pov)")->required();
     cmd->add_option("-L,--library-path", args->includePaths,
-                    "Folder searched by #include after the including file's own");
+                    "Folder searched by #include after the including file's and the scene's, before POV-Ray's own");
     cmd->add_option("-D,--define", args->defines, "NAME=VALUE declared before the scene runs");
-    cmd->add_option("--clock", args->clock, "Value of `clock`");
+    cmd->add_option("--clock", args->clock, "Value of `clock`")->each([args](const std::string&) {
+        args->clockGiven = true;
+    });
     cmd->add_flag("--stats", args->stats, "Print object count, time and peak memory instead of the dump");
     cmd->add_flag("--no-locations", args->noLocations, "Leave the source-location comments out of the dump");
     cmd->callback([args, &result] { result.exitCode = runParse(*args); });

@@ -55,6 +55,7 @@ struct RenderArgs {
     std::uint64_t seed = 0;
     std::optional<std::string> region;
     double clock = 0.0;
+    bool clockGiven = false;  // `clock_on` is 1 when --clock is given, as with POV-Ray's +K
     std::vector<std::string> defines;
     std::vector<std::string> includePaths;
     bool stats = false;
@@ -173,7 +174,9 @@ int runRender(const RenderArgs& args) {
             problems.push_back("-D wants NAME=VALUE with NAME an identifier that is not a keyword, not '" +
                                text + "'");
     }
+    options.libraryPaths = lang::povrayLibraryPaths();
     options.clock = args.clock;
+    options.clockOn = args.clockGiven;
     options.imageWidth = settings.width;
     options.imageHeight = settings.height;
     if (!problems.empty()) {
@@ -283,10 +286,12 @@ void addRenderCommand(CLI::App& app, CommandResult& result) {
     cmd->add_option("--seed", args->seed, "Seed of the random numbers (default 0)");
     cmd->add_option("--region", args->region,
                     "x0,y0,x1,y1: render columns x0..x1-1 and rows y0..y1-1 only, and write that part");
-    cmd->add_option("--clock", args->clock, "Value of `clock`");
+    cmd->add_option("--clock", args->clock, "Value of `clock`")->each([args](const std::string&) {
+        args->clockGiven = true;
+    });
     cmd->add_option("-D,--define", args->defines, "NAME=VALUE declared before the scene runs");
     cmd->add_option("-L,--library-path", args->includePaths,
-                    "Folder searched by #include after the including file's own");
+                    "Folder searched by #include after the including file's and the scene's, before POV-Ray's own");
     cmd->add_flag("--stats", args->stats, "Print the render statistics");
     cmd->add_option("--stats-json", args->statsJson, "Write the render statistics as JSON");
     cmd->add_option("--aov", args->aovs,

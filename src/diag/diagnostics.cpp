@@ -14,16 +14,18 @@ const char* severityName(Severity s) {
 }
 }  // namespace
 
+std::string formatLocation(const SourceLoc& loc) {
+    std::string out = loc.fileName();
+    if (loc.line > 0) {
+        out += ':' + std::to_string(loc.line);
+        if (loc.column > 0) out += ':' + std::to_string(loc.column);
+    }
+    return out;
+}
+
 std::string formatDiagnostic(const Diagnostic& d) {
     std::string out;
-    if (d.loc.file) {
-        out += *d.loc.file;
-        if (d.loc.line > 0) {
-            out += ':' + std::to_string(d.loc.line);
-            if (d.loc.column > 0) out += ':' + std::to_string(d.loc.column);
-        }
-        out += ": ";
-    }
+    if (d.loc.file) out += formatLocation(d.loc) + ": ";
     out += severityName(d.severity);
     out += ": ";
     out += d.message;
@@ -35,6 +37,12 @@ std::string formatDiagnostic(const Diagnostic& d) {
         for (int i = 1; i < d.loc.column && i - 1 < static_cast<int>(d.sourceLine.size()); ++i)
             out += d.sourceLine[i - 1] == '\t' ? '\t' : ' ';
         out += "^\n";
+    }
+    for (const DiagnosticContext& c : d.context) {
+        out += "  ";
+        out += c.what;
+        if (c.loc.file) out += ' ' + formatLocation(c.loc);
+        out += '\n';
     }
     return out;
 }

@@ -72,16 +72,27 @@ std::string describe(const Value& v) {
         std::string operator()(const std::shared_ptr<const Finish>&) const { return "a finish"; }
         std::string operator()(const std::shared_ptr<const Texture>&) const { return "a texture"; }
         std::string operator()(const std::shared_ptr<const CameraValue>&) const { return "a camera"; }
+        std::string operator()(const std::shared_ptr<ArrayValue>&) const { return "an array"; }
+        std::string operator()(const std::shared_ptr<const MacroDef>&) const { return "a macro"; }
         std::string operator()(const Poison&) const { return "an erroneous value"; }
+        std::string operator()(const Unset&) const { return "an element without a value"; }
     };
     return std::visit(Visitor{}, v);
 }
 
+std::string Interpreter::referenceText(const Node& n) const {
+    const Node* base = &n;
+    while (base->kind == NodeKind::Index) base = &(*base)[0];
+    if (base->kind != NodeKind::Name) return "this value";
+    return quote(nameOf(*base) + (base == &n ? "" : "[…]"));
+}
+
 const Value* Interpreter::lookup(std::uint32_t id) const {
-    for (auto scope = scopes_.rbegin(); scope != scopes_.rend(); ++scope) {
-        if (auto it = scope->find(id); it != scope->end()) return &it->second;
-    }
-    return nullptr;
+    const Slot* slot = findSlot(id, nullptr);
+    if (!slot || slot->refScope < 0) return slot ? &slot->value : nullptr;
+    const Scope& scope = scopes_[static_cast<std::size_t>(slot->refScope)];
+    auto it = scope.find(slot->refId);
+    return it == scope.end() ? nullptr : &it->second.value;
 }
 
 Num Interpreter::evalNum(const Node& n) {
@@ -184,6 +195,25 @@ namespace {
 
 double component(const Num& a, int i) { return a.isFloat() ? a.v[0] : a.v[i]; }
 
+// POV-Ray's str() and vstr() format: printf("%<w>.<p>f"), a negative width
+// padding with zeros, a negative precision leaving printf's (6 digits). Widths
+// beyond 256 and precisions beyond 64 are clipped (POV-Ray's buffer is 256).
+std::string formatStr(double value, int width, int precision) {
+    const std::string format = std::string("%") + (width < 0 ? "0" : "") + "*.*f";
+    const int w = std::min(std::abs(width), 256);
+    const int p = precision < 0 ? 6 : std::min(precision, 64);
+    const int size = std::snprintf(nullptr, 0, format.c_str(), w, p, value);
+    std::string s(static_cast<std::size_t>(std::max(size, 0)), '\0');
+    std::snprintf(s.data(), s.size() + 1, format.c_str(), w, p, value);
+    return s;
+}
+
+// Arithmetic and logic of two floats or vectors, POV-Ray's way.
+bool isComparison(Word op) {
+    return op == Word::OpLess || op == Word::OpLessEqual || op == Word::OpEqual || op == Word::OpNotEqual ||
+           op == Word::OpGreaterEqual || op == Word::OpGreater;
+}
+
 }  // namespace
 
 // `color X red R …`: a whole colour (with `color`, any expression), then
@@ -233,6 +263,66 @@ Num Interpreter::evalColourNode(const Node& n, ColourChannels channels) {
     return c;
 }
 
+// A float made a C int where POV-Ray makes one (a width, a position, a
+// generator's number): truncated, but refused when it cannot be one.
+int Interpreter::toInt(double v, const Node& at, const char* what) {
+    if (!(v > -2147483649.0 && v < 2147483648.0))
+        fail(at, std::string(what) + " must be a whole number between -2147483648 and 2147483647, not " +
+                     formatNumber(v));
+    return static_cast<int>(v);
+}
+
+// One step of a chain of binary operators: `acc op n[1]`. & and | leave their
+// right side alone once the left decides (POV-Ray's domains are wider than
+// ours: `(X >= 0 & sqrt(X) < 2)` must not fail for X < 0).
+Num Interpreter::binaryStep(const Node& n, const Num& acc) {
+    const Word op = n.word;
+    if (op == Word::OpAnd) return Num::scalar(std::abs(acc.v[0]) > kPovEpsilon && evalBool(n[1]) ? 1.0 : 0.0);
+    if (op == Word::OpOr) return Num::scalar(std::abs(acc.v[0]) > kPovEpsilon || evalBool(n[1]) ? 1.0 : 0.0);
+    if (isComparison(op)) {
+        const double x = acc.v[0];
+        const double y = evalFloat(n[1]);
+        bool r = false;
+        switch (op) {
+        case Word::OpLess: r = x < y; break;
+        case Word::OpLessEqual: r = x < y || std::abs(x - y) < kPovEpsilon; break;
+        case Word::OpEqual: r = std::abs(x - y) < kPovEpsilon; break;
+        case Word::OpNotEqual: r = !(std::abs(x - y) < kPovEpsilon); break;
+        case Word::OpGreaterEqual: r = x > y || std::abs(x - y) < kPovEpsilon; break;
+        default: r = x > y; break;
+        }
+        return Num::scalar(r ? 1.0 : 0.0);
+    }
+    Num a = acc;
+    Num b = evalNum(n[1]);
+    if (!(a.isFloat() && b.isFloat())) {
+        const bool colour = a.colour || b.colour;
+        const int dim = colour ? 5 : std::max<int>(a.dim, b.dim);
+        a = widen(a, dim, colour);
+        b = widen(b, dim, colour);
+    }
+    Num r = a;
+    for (int i = 0; i < a.dim; ++i) {
+        const double x = a.v[i];
+        const double y = b.v[i];
+        switch (op) {
+        case Word::OpAdd: r.v[i] = x + y; break;
+        case Word::OpSub: r.v[i] = x - y; break;
+        case Word::OpMul: r.v[i] = x * y; break;
+        default:
+            if (y == 0.0) fail(n, "division by zero");
+            r.v[i] = x / y;
+        }
+    }
+    return r;
+}
+
+// The left operand of `op`: logic and comparisons take floats, arithmetic numbers.
+Num Interpreter::operand(Word op, const Node& n) {
+    if (op == Word::OpAnd || op == Word::OpOr || isComparison(op)) return Num::scalar(evalFloat(n));
+    return evalNum(n);
+}
+
 Value Interpreter::eval(const Node& n) {
     switch (n.kind) {
     case NodeKind::Number:
@@ -243,6 +333,8 @@ Value Interpreter::eval(const Node& n) {
         const Value* v = lookup(n.id);
         if (!v) fail(n, "'" + nameOf(n) + "' is not declared");
         if (std::holds_alternative<Poison>(*v)) throw Abandon{};
+        if (std::holds_alternative<std::shared_ptr<const MacroDef>>(*v))
+            fail(n, "'" + nameOf(n) + "' is a macro: call it with its arguments, " + nameOf(n) + "(…)");
         return *v;
     }
     case NodeKind::Constant: {
@@ -264,8 +356,11 @@ Value Interpreter::eval(const Node& n) {
         }
         case Word::Pi: return Num::scalar(3.1415926535897932384626);
         case Word::Clock: return Num::scalar(options_.clock);
-        case Word::ClockDelta: return Num::scalar(0.0);
-        case Word::ClockOn: return Num::scalar(0.0);
+        case Word::ClockOn: return Num::scalar(options_.clockOn ? 1.0 : 0.0);
+        // No animation: POV-Ray's values for a single frame.
+        case Word::ClockDelta: case Word::FrameNumber: case Word::InitialFrame: case Word::FinalFrame:
+        case Word::InitialClock: case Word::FinalClock:
+            return Num::scalar(0.0);
         case Word::Version: return Num::scalar(versionHundredths_ / 100.0);
         case Word::True: case Word::On: case Word::Yes: return Num::scalar(1.0);
         case Word::False: case Word::Off: case Word::No: return Num::scalar(0.0);
@@ -274,6 +369,32 @@ Value Interpreter::eval(const Node& n) {
         default: fail(n, quote(wordText(n.word)) + " is not a value");
         }
     }
+    case NodeKind::Binary: {
+        // A chain `a + b - c …` is a tree leaning left, as deep as it is long:
+        // its left side is walked here rather than by recursion.
+        const Nested nested(*this, n);
+        if (n[0].kind != NodeKind::Binary) return binaryStep(n, operand(n.word, n[0]));
+        std::vector<const Node*> chain;
+        const Node* left = &n;
+        while (left->kind == NodeKind::Binary) {
+            chain.push_back(left);
+            left = &(*left)[0];
+        }
+        Num acc = operand(chain.back()->word, *left);
+        for (auto it = chain.rbegin(); it != chain.rend(); ++it) acc = binaryStep(**it, acc);
+        return acc;
+    }
+    case NodeKind::Index:
+        return arrayElement(n);
+    case NodeKind::MacroCall:
+        return evalMacroValue(n);
+    case NodeKind::Array:
+        return makeArray(n);
+    default:
+        break;
+    }
+    const Nested nested(*this, n);
+    switch (n.kind) {
     case NodeKind::Vector: {
         Num r;
         r.dim = static_cast<std::uint8_t>(n.count);
@@ -286,48 +407,6 @@ Value Interpreter::eval(const Node& n) {
         if (n.word == Word::OpSub)
             for (double& c : a.v) c = -c;
         return a;
-    }
-    case NodeKind::Binary: {
-        const Word op = n.word;
-        if (op == Word::OpAnd) return Num::scalar(evalBool(n[0]) && evalBool(n[1]) ? 1.0 : 0.0);
-        if (op == Word::OpOr) return Num::scalar(evalBool(n[0]) || evalBool(n[1]) ? 1.0 : 0.0);
-        if (op == Word::OpLess || op == Word::OpLessEqual || op == Word::OpEqual ||
-            op == Word::OpNotEqual || op == Word::OpGreaterEqual || op == Word::OpGreater) {
-            const double a = evalFloat(n[0]);
-            const double b = evalFloat(n[1]);
-            bool r = false;
-            switch (op) {
-            case Word::OpLess: r = a < b; break;
-            case Word::OpLessEqual: r = a < b || std::abs(a - b) < kPovEpsilon; break;
-            case Word::OpEqual: r = std::abs(a - b) < kPovEpsilon; break;
-            case Word::OpNotEqual: r = !(std::abs(a - b) < kPovEpsilon); break;
-            case Word::OpGreaterEqual: r = a > b || std::abs(a - b) < kPovEpsilon; break;
-            default: r = a > b; break;
-            }
-            return Num::scalar(r ? 1.0 : 0.0);
-        }
-        Num a = evalNum(n[0]);
-        Num b = evalNum(n[1]);
-        if (!(a.isFloat() && b.isFloat())) {
-            const bool colour = a.colour || b.colour;
-            const int dim = colour ? 5 : std::max<int>(a.dim, b.dim);
-            a = widen(a, dim, colour);
-            b = widen(b, dim, colour);
-        }
-        Num r = a;
-        for (int i = 0; i < a.dim; ++i) {
-            const double x = a.v[i];
-            const double y = b.v[i];
-            switch (op) {
-            case Word::OpAdd: r.v[i] = x + y; break;
-            case Word::OpSub: r.v[i] = x - y; break;
-            case Word::OpMul: r.v[i] = x * y; break;
-            default:
-                if (y == 0.0) fail(n, "division by zero");
-                r.v[i] = x / y;
-            }
-        }
-        return r;
     }
     case NodeKind::Conditional:
         return evalBool(n[0]) ? eval(n[1]) : eval(n[2]);
@@ -354,12 +433,13 @@ Value Interpreter::eval(const Node& n) {
     case NodeKind::Colour:
         return evalColourNode(n, ColourChannels::Rgbft);
     case NodeKind::Call:
-        break;
+        return call(n);
     default:
         fail(n, "this is not an expression");
     }
+}
 
-    // Functions.
+Value Interpreter::call(const Node& n) {
     const auto args = n.children();
     auto f = [&](std::size_t i) { return evalFloat(args[i]); };
     auto check = [&](bool ok, const char* what) {
@@ -435,17 +515,24 @@ Value Interpreter::eval(const Node& n) {
         return s;
     }
     case Word::Str: {
-        // POV-Ray: printf("%*.*f"); a negative width pads with zeros, a
-        // negative precision means six digits.
         const double value = f(0);
-        const int width = static_cast<int>(f(1));
-        const int precision = static_cast<int>(f(2));
-        const std::string format = std::string("%") + (width < 0 ? "0" : "") + "*.*f";
-        const int w = std::min(std::abs(width), 256);
-        const int p = precision < 0 ? 6 : std::min(precision, 64);
-        const int size = std::snprintf(nullptr, 0, format.c_str(), w, p, value);
-        std::string s(static_cast<std::size_t>(std::max(size, 0)), '\0');
-        std::snprintf(s.data(), s.size() + 1, format.c_str(), w, p, value);
+        const int width = toInt(f(1), args[1], "the width of str()");
+        const int precision = toInt(f(2), args[2], "the precision of str()");
+        return formatStr(value, width, precision);
+    }
+    case Word::Vstr: {
+        // vstr(N, V, separator, width, precision): N components (2 to 5) of V;
+        // a float is its first component, the others 0 (POV-Ray's).
+        const int count = std::clamp(toInt(f(0), args[0], "the number of components of vstr()"), 2, 5);
+        const Num v = evalNum(args[1]);
+        const std::string separator = evalString(args[2]);
+        const int width = toInt(f(3), args[3], "the width of vstr()");
+        const int precision = toInt(f(4), args[4], "the precision of vstr()");
+        std::string s;
+        for (int i = 0; i < count; ++i) {
+            if (i > 0) s += separator;
+            s += formatStr(i < v.dim || v.colour ? v.v[i] : 0.0, width, precision);
+        }
         return s;
     }
     case Word::Chr: {
@@ -453,7 +540,38 @@ Value Interpreter::eval(const Node& n) {
         check(c >= 1 && c <= 0x10FFFF, "the character code is outside 1 to 0x10FFFF");
         return utf8(static_cast<std::uint32_t>(c));
     }
+    case Word::Asc: {
+        const std::string s = evalString(args[0]);
+        return Num::scalar(s.empty() ? 0.0 : static_cast<double>(static_cast<unsigned char>(s[0])));
+    }
     case Word::Strlen: return Num::scalar(static_cast<double>(evalString(args[0]).size()));
+    case Word::Strcmp: {
+        // POV-Ray: the difference of the first characters that differ.
+        const std::string a = evalString(args[0]);
+        const std::string b = evalString(args[1]);
+        std::size_t i = 0;
+        while (i < a.size() && i < b.size() && a[i] == b[i]) ++i;
+        const int x = i < a.size() ? static_cast<unsigned char>(a[i]) : 0;
+        const int y = i < b.size() ? static_cast<unsigned char>(b[i]) : 0;
+        return Num::scalar(static_cast<double>(x - y));
+    }
+    case Word::Substr: {
+        // substr(S, P, L): L characters from position P (the first is 1).
+        const std::string s = evalString(args[0]);
+        const int position = toInt(f(1), args[1], "the position of substr()");
+        const int length = toInt(f(2), args[2], "the length of substr()");
+        if (position < 1 || length < 0 || static_cast<std::int64_t>(position) + length - 1 > static_cast<std::int64_t>(s.size()))
+            fail(n, "substr: " + countOf(static_cast<std::size_t>(std::max(length, 0)), "character") + " from position " +
+                        std::to_string(position) + " are not within the string's " + countOf(s.size(), "character"));
+        return s.substr(static_cast<std::size_t>(position - 1), static_cast<std::size_t>(length));
+    }
+    case Word::Strupr: case Word::Strlwr: {
+        std::string s = evalString(args[0]);
+        for (char& c : s)
+            c = static_cast<char>(n.word == Word::Strupr ? std::toupper(static_cast<unsigned char>(c))
+                                                         : std::tolower(static_cast<unsigned char>(c)));
+        return s;
+    }
     case Word::Val: {
         const std::string s = evalString(args[0]);
         std::size_t start = s.find_first_not_of(" \t");
@@ -465,9 +583,33 @@ Value Interpreter::eval(const Node& n) {
         check(r.ec == std::errc(), "the string does not start with a number");
         return Num::scalar(v);
     }
-    case Word::Defined: {
-        if (args[0].kind != NodeKind::Name) fail(args[0], "defined() takes an identifier");
-        return Num::scalar(lookup(args[0].id) ? 1.0 : 0.0);
+    case Word::Defined:
+        return Num::scalar(isDefined(args[0]) ? 1.0 : 0.0);
+    case Word::Seed: {
+        // POV-Ray: a new generator, started at the seed; its value is the
+        // generator's number, which rand() takes.
+        const int seed = toInt(f(0), args[0], "the seed");
+        randomStreams_.push_back(static_cast<std::uint32_t>(seed));
+        return Num::scalar(static_cast<double>(randomStreams_.size() - 1));
+    }
+    case Word::Rand: {
+        // POV-Ray's generator: a 32-bit linear congruence, scaled to [0, 1].
+        const int stream = toInt(f(0), args[0], "the generator given to rand()");
+        if (stream < 0 || static_cast<std::size_t>(stream) >= randomStreams_.size())
+            fail(args[0], "rand(" + std::to_string(stream) + "): no such generator; make one with seed()");
+        std::uint32_t& state = randomStreams_[static_cast<std::size_t>(stream)];
+        state = state * 1812433253u + 12345u;
+        return Num::scalar(static_cast<double>(state) / 4294967295.0);
+    }
+    case Word::Dimensions: case Word::DimensionSize: {
+        const Value a = eval(args[0]);
+        const auto* array = std::get_if<std::shared_ptr<ArrayValue>>(&a);
+        if (!array) fail(args[0], std::string(wordText(n.word)) + " takes an array, not " + describe(a));
+        const auto& sizes = (*array)->sizes;
+        if (n.word == Word::Dimensions) return Num::scalar(static_cast<double>(sizes.size()));
+        // A dimension that the array does not have has size 0 (POV-Ray's).
+        const int d = toInt(f(1), args[1], "the dimension of dimension_size()");
+        return Num::scalar(d >= 1 && static_cast<std::size_t>(d) <= sizes.size() ? sizes[static_cast<std::size_t>(d - 1)] : 0.0);
     }
     default:
         fail(n, quote(wordText(n.word)) + " is not a function");

@@ -13,6 +13,9 @@ namespace asos::lang {
 namespace {
 
 constexpr std::size_t kMaxIncludeDepth = 64;
+// A diagnostic's context shows this many innermost and outermost steps of a
+// longer chain (a runaway recursion has hundreds).
+constexpr std::size_t kContextEnds = 5;
 
 std::optional<std::string> readFile(const std::filesystem::path& path) {
     std::ifstream in(path, std::ios::binary | std::ios::ate);
@@ -40,6 +43,42 @@ Interpreter::Interpreter(const InterpreterOptions& options, Diagnostics& diagnos
     defaultTexture_ = std::make_shared<const Texture>();
 }
 
+Interpreter::Entered::Entered(Interpreter& self, Frame frame, Scope scope)
+    : self_(self), file_(self.file_), ast_(self.ast_) {
+    self_.frames_.push_back(std::move(frame));
+    self_.scopes_.push_back(std::move(scope));
+}
+
+Interpreter::Entered::~Entered() {
+    self_.scopes_.pop_back();
+    self_.frames_.pop_back();
+    self_.file_ = file_;
+    self_.ast_ = ast_;
+}
+
+Interpreter::Nested::Nested(Interpreter& self, const Node& at) : self_(self) {
+    if (++self_.depth_ <= kMaxNesting) return;
+    self_.error(at, "nested too deep: parentheses, operators, blocks, directives, includes and macro calls "
+                    "together go over " + std::to_string(kMaxNesting) + " levels");
+    --self_.depth_;
+    throw Stop{};
+}
+
+std::vector<DiagnosticContext> Interpreter::context() const {
+    std::vector<DiagnosticContext> steps;
+    const std::size_t n = frames_.size();
+    for (std::size_t k = 0; k < n; ++k) {
+        const Frame& f = frames_[n - 1 - k];  // innermost first
+        if (n > 2 * kContextEnds + 1 && k == kContextEnds) {
+            steps.push_back({"... " + std::to_string(n - 2 * kContextEnds) + " more ...", SourceLoc{}});
+            k = n - kContextEnds - 1;
+            continue;
+        }
+        steps.push_back({f.what, f.at});
+    }
+    return steps;
+}
+
 void Interpreter::report(Severity severity, const Node& at, std::string message, bool withSource) {
     if (quiet_) return;
     Diagnostic d;
@@ -61,6 +100,7 @@ void Interpreter::report(Severity severity, const Node& at, std::string message,
             d.sourceLine = f.text.substr(start, end - start);
         }
     }
+    if (severity != Severity::Debug) d.context = context();
     diagnostics_.report(std::move(d));
     if (severity == Severity::Error && ++errorCount_ >= options_.maxErrors) {
         Diagnostic stop;
@@ -69,6 +109,16 @@ void Interpreter::report(Severity severity, const Node& at, std::string message,
         stop.message = "too many errors (" + std::to_string(errorCount_) + "), stopping here";
         diagnostics_.report(std::move(stop));
         throw Stop{};
+    }
+}
+
+// Syntax errors of an include or a macro's body, found by a parse of their
+// own: reported with the context of the run.
+void Interpreter::forwardSyntaxErrors(Diagnostics& syntax) {
+    for (Diagnostic d : syntax.all()) {
+        d.context = context();
+        diagnostics_.report(std::move(d));
+        ++errorCount_;
     }
 }
 
@@ -102,7 +152,6 @@ std::optional<SceneDescription> Interpreter::runText(std::string text, const std
 std::optional<SceneDescription> Interpreter::run(SourceFile& f) {
     file_ = &f;
     objects_.reserve(static_cast<std::size_t>(std::count(f.text.begin(), f.text.end(), '{')));
-    includeStack_.push_back(f.path);
     auto top = [this](const Node& n) { runTopEntry(n); };
     const EntryHandler handler(top);
     try {
@@ -137,7 +186,7 @@ void Interpreter::applyDefines() {
             quiet_ = false;
             ast_ = saved;
         }
-        scopes_[0][names_.intern(define.name)] = std::move(value);
+        scopes_[0][names_.intern(define.name)] = Slot{std::move(value)};
     }
 }
 
@@ -182,16 +231,23 @@ void Interpreter::applyVersionRules() {
 
 // --- entries and directives -----------------------------------------------------------
 
-void Interpreter::runEntries(std::span<const Node> entries, EntryHandler handle) {
+BreakNode Interpreter::runBody(std::span<const Node> entries, EntryHandler handle) {
+    if (entries.empty()) return nullptr;
+    const Nested nested(*this, entries.front());
     for (const Node& n : entries) {
         if (n.kind != NodeKind::Version) statementRun_ = true;
         try {
             switch (n.kind) {
-            case NodeKind::If: case NodeKind::While: case NodeKind::For: case NodeKind::Declare:
-            case NodeKind::Local: case NodeKind::Undef: case NodeKind::Include:
-            case NodeKind::Version: case NodeKind::Debug: case NodeKind::Warning:
-            case NodeKind::Error:
-                runDirective(n, handle);
+            case NodeKind::If: case NodeKind::While: case NodeKind::For: case NodeKind::Switch:
+            case NodeKind::Declare: case NodeKind::Local: case NodeKind::Undef: case NodeKind::Include:
+            case NodeKind::Macro: case NodeKind::Default: case NodeKind::Version: case NodeKind::Debug:
+            case NodeKind::Warning: case NodeKind::Error:
+                if (const BreakNode b = runDirective(n, handle)) return b;
+                break;
+            case NodeKind::Break:
+                return &n;
+            case NodeKind::MacroCall:
+                invokeMacro(n, static_cast<BodyContext>(n.flags), handle);
                 break;
             default:
                 handle(n);
@@ -200,10 +256,16 @@ void Interpreter::runEntries(std::span<const Node> entries, EntryHandler handle)
             // Reported; go on with the next entry so that every error is found.
         }
     }
+    return nullptr;
 }
 
-void Interpreter::runSequence(const Node& seq, EntryHandler handle) {
-    runEntries(seq.children(), handle);
+void Interpreter::runEntries(std::span<const Node> entries, EntryHandler handle) {
+    if (const BreakNode b = runBody(entries, handle))
+        error(*b, "#break outside a #switch, a #while, a #for or a macro");
+}
+
+BreakNode Interpreter::runSequence(const Node& seq, EntryHandler handle) {
+    return runBody(seq.children(), handle);
 }
 
 bool Interpreter::truth(const Node& condition) {
@@ -218,76 +280,81 @@ void Interpreter::countIteration(const Node& at) {
     }
 }
 
-void Interpreter::declare(const Node& nameNode, Value value, bool local) {
-    auto& scope = local ? scopes_.back() : scopes_.front();
-    scope[nameNode.id] = std::move(value);
-}
-
-void Interpreter::runDirective(const Node& n, EntryHandler handle) {
+BreakNode Interpreter::runDirective(const Node& n, EntryHandler handle) {
     switch (n.kind) {
     case NodeKind::If: {
         const auto parts = n.children();
         const std::size_t pairs = parts.size() / 2;
         for (std::size_t i = 0; i < pairs; ++i) {
-            if (truth(parts[2 * i])) {
-                runSequence(parts[2 * i + 1], handle);
-                return;
-            }
+            if (truth(parts[2 * i])) return runSequence(parts[2 * i + 1], handle);
         }
-        if (n.flags) runSequence(parts.back(), handle);
-        return;
+        if (n.flags) return runSequence(parts.back(), handle);
+        return nullptr;
     }
     case NodeKind::While: {
         while (truth(n[0])) {
             countIteration(n);
-            runSequence(n[1], handle);
+            if (runSequence(n[1], handle)) break;
         }
-        return;
+        return nullptr;
     }
     case NodeKind::For: {
-        // POV-Ray re-reads the variable each time round: the body may change it.
+        // POV-Ray re-reads the variable each time round (the body may change
+        // it), and compares with its epsilon: #for (I, 0, 0.3, 0.1) runs 4 times.
         const Node& var = n[0];
         const double end = evalFloat(n[2]);
         const double step = n.flags ? evalFloat(n[3]) : 1.0;
         if (step == 0.0) fail(n[3], "the step of #for is zero: the loop would never end");
-        declare(var, Num::scalar(evalFloat(n[1])), true);
+        slotToAssign(var.id, true).value = Num::scalar(evalFloat(n[1]));
         const Node& body = n.children().back();
-        while (true) {
+        auto current = [&] {
             const Value* v = lookup(var.id);
             if (!v || !std::holds_alternative<Num>(*v) || !std::get<Num>(*v).isFloat())
                 fail(var, "the #for variable '" + nameOf(var) + "' is no longer a float");
-            const double i = std::get<Num>(*v).v[0];
-            if (step > 0 ? i > end : i < end) break;
+            return std::get<Num>(*v).v[0];
+        };
+        while (true) {
+            const double i = current();
+            if (step > 0 ? i > end + kPovEpsilon : i < end - kPovEpsilon) break;
             countIteration(n);
-            runSequence(body, handle);
-            const Value* after = lookup(var.id);
-            if (!after || !std::holds_alternative<Num>(*after) || !std::get<Num>(*after).isFloat())
-                fail(var, "the #for variable '" + nameOf(var) + "' is no longer a float");
-            declare(var, Num::scalar(std::get<Num>(*after).v[0] + step), true);
+            if (runSequence(body, handle)) break;
+            slotToAssign(var.id, true).value = Num::scalar(current() + step);
         }
-        return;
+        return nullptr;
     }
+    case NodeKind::Switch:
+        return runSwitch(n, handle);
     case NodeKind::Declare:
     case NodeKind::Local: {
         Value value = Poison{};
         try {
             value = evalDeclarable(n[1]);
+            if (n.flags && std::holds_alternative<Num>(value))
+                fail(n[1], "expected ';' after the declared value: POV-Ray wants one after a float, a vector "
+                           "or a colour, and this is " + describe(value));
         } catch (const Abandon&) {
             // Declared anyway, as poison, so that its uses do not each report
             // "not declared" after the real error.
+            if (n[0].kind != NodeKind::Name) throw;
         }
         declare(n[0], std::move(value), n.kind == NodeKind::Local);
-        return;
+        return nullptr;
     }
     case NodeKind::Undef: {
         for (auto scope = scopes_.rbegin(); scope != scopes_.rend(); ++scope)
-            if (scope->erase(n[0].id)) return;
+            if (scope->erase(n[0].id)) return nullptr;
         report(Severity::Warning, n[0], "#undef of '" + nameOf(n[0]) + "', which is not declared");
-        return;
+        return nullptr;
     }
     case NodeKind::Include:
         runInclude(n, handle);
-        return;
+        return nullptr;
+    case NodeKind::Macro:
+        defineMacro(n);
+        return nullptr;
+    case NodeKind::Default:
+        runDefault(n);
+        return nullptr;
     case NodeKind::Version: {
         // POV-Ray 3.7 expects #version first; one after anything else (an
         // #include that holds it included) is late, and it says so.
@@ -305,7 +372,7 @@ void Interpreter::runDirective(const Node& n, EntryHandler handle) {
             report(Severity::Warning, n,
                    "other statements come before the first #version: POV-Ray 3.7 expects #version "
                    "as the first statement of a scene");
-        return;
+        return nullptr;
     }
     case NodeKind::Debug:
     case NodeKind::Warning:
@@ -320,12 +387,114 @@ void Interpreter::runDirective(const Node& n, EntryHandler handle) {
             report(Severity::Error, n, "#error: " + message);
             throw Stop{};
         }
-        return;
+        return nullptr;
     }
     default:
         handle(n);
+        return nullptr;
     }
 }
+
+// As POV-Ray: the first #case (|V - A| < epsilon) or #range (Lo <= V <= Hi)
+// that holds starts the run, which goes on through the following clauses and
+// the #else until a #break; with none holding, the #else runs.
+BreakNode Interpreter::runSwitch(const Node& n, EntryHandler handle) {
+    const double value = evalFloat(n[0]);
+    const auto parts = n.children();
+    const std::size_t clauses = parts.size() - 1 - (n.flags ? 1 : 0);
+    bool running = false;
+    for (std::size_t i = 1; i <= clauses; ++i) {
+        const Node& clause = parts[i];
+        if (!running) {
+            if (clause.kind == NodeKind::Case)
+                running = std::abs(value - evalFloat(clause[0])) < kPovEpsilon;
+            else
+                running = value >= evalFloat(clause[0]) && value <= evalFloat(clause[1]);
+        }
+        if (running && runSequence(clause.children().back(), handle)) return nullptr;
+    }
+    if (n.flags) runSequence(parts.back(), handle);
+    return nullptr;
+}
+
+// #default { texture {…} pigment {…} finish {…} }: what later textures,
+// pigments and finishes start from, and the texture of objects without one.
+void Interpreter::runDefault(const Node& n) {
+    auto entry = [&](const Node& e) {
+        switch (e.word) {
+        case Word::Texture:
+            defaultTexture_ = evalTexture(e);
+            break;
+        case Word::Pigment: {
+            auto t = std::make_shared<Texture>(*defaultTexture_);
+            t->pigment = *evalPigment(e, t->pigment);
+            defaultTexture_ = std::move(t);
+            break;
+        }
+        case Word::Finish: {
+            auto t = std::make_shared<Texture>(*defaultTexture_);
+            t->finish = *evalFinish(e, t->finish);
+            defaultTexture_ = std::move(t);
+            break;
+        }
+        default:
+            fail(e, "#default takes texture, pigment and finish");
+        }
+    };
+    runEntries(n.children(), EntryHandler(entry));
+}
+
+// --- names and scopes ---------------------------------------------------------------------
+
+Slot* Interpreter::resolve(Slot& slot) {
+    if (slot.refScope < 0) return &slot;
+    auto& scope = scopes_[static_cast<std::size_t>(slot.refScope)];
+    auto it = scope.find(slot.refId);
+    return it == scope.end() ? nullptr : &it->second;
+}
+
+// The innermost entry of `id` (a parameter's own entry, not what it stands for).
+const Slot* Interpreter::findSlot(std::uint32_t id, std::size_t* scope) const {
+    for (std::size_t i = scopes_.size(); i-- > 0;) {
+        if (auto it = scopes_[i].find(id); it != scopes_[i].end()) {
+            if (scope) *scope = i;
+            return &it->second;
+        }
+    }
+    return nullptr;
+}
+
+// Where `#declare` (local: `#local`) puts a value, as POV-Ray: `#declare` into
+// the innermost entry of the name, wherever it is (global when there is none);
+// `#local` into the current scope's. A parameter that stands for an entry
+// passes the value on to it.
+Slot& Interpreter::slotToAssign(std::uint32_t id, bool local) {
+    Slot* slot = nullptr;
+    if (local) {
+        auto it = scopes_.back().find(id);
+        if (it != scopes_.back().end()) slot = &it->second;
+    } else {
+        std::size_t scope = 0;
+        slot = const_cast<Slot*>(findSlot(id, &scope));
+    }
+    if (!slot) return (local ? scopes_.back() : scopes_.front())[id];
+    if (slot->refScope >= 0) {
+        Slot& own = *slot;
+        if (Slot* target = resolve(own)) return *target;
+        own = Slot{};  // what it stood for is gone (#undef): it is a name of its own again
+    }
+    return *slot;
+}
+
+void Interpreter::declare(const Node& target, Value value, bool local) {
+    if (target.kind == NodeKind::Name) {
+        slotToAssign(target.id, local).value = std::move(value);
+        return;
+    }
+    assignElement(target, std::move(value));  // #local or #declare: the array wherever it is
+}
+
+// --- includes ----------------------------------------------------------------------------
 
 void Interpreter::runInclude(const Node& n, EntryHandler handle) {
     const std::string name = evalString(n[0]);
@@ -334,35 +503,48 @@ void Interpreter::runInclude(const Node& n, EntryHandler handle) {
         error(at, std::move(message));
         throw Stop{};
     };
-    if (includeStack_.size() > kMaxIncludeDepth)
+    // The files being included, the scene first.
+    std::vector<std::filesystem::path> includes{files_.front().path};
+    for (const Frame& frame : frames_)
+        if (!frame.include.empty()) includes.push_back(frame.include);
+    if (includes.size() > kMaxIncludeDepth)
         fatal(n, "#include nested more than " + std::to_string(kMaxIncludeDepth) + " deep");
 
-    // Beside the including file first, then each -L folder in order.
-    std::vector<std::filesystem::path> candidates;
+    // Beside the including file, beside the scene, in each -L folder, then in
+    // POV-Ray's library folders.
+    std::vector<std::filesystem::path> folders;
     const std::filesystem::path asked(name);
-    if (asked.is_absolute()) {
-        candidates.push_back(asked);
-    } else {
-        candidates.push_back(file_->path.parent_path() / asked);
-        for (const auto& dir : options_.includePaths) candidates.push_back(dir / asked);
+    if (!asked.is_absolute()) {
+        auto add = [&](const std::filesystem::path& dir) {
+            if (std::find(folders.begin(), folders.end(), dir) == folders.end()) folders.push_back(dir);
+        };
+        add(file_->path.parent_path());
+        add(files_.front().path.parent_path());
+        for (const auto& dir : options_.includePaths) add(dir);
+        for (const auto& dir : options_.libraryPaths) add(dir);
     }
     std::filesystem::path found;
     std::error_code ec;
-    for (const auto& c : candidates) {
-        if (std::filesystem::is_regular_file(c, ec)) {
-            found = std::filesystem::weakly_canonical(c, ec);
-            if (ec) found = c;
-            break;
-        }
+    auto tryPath = [&](const std::filesystem::path& candidate) {
+        if (!std::filesystem::is_regular_file(candidate, ec)) return false;
+        found = std::filesystem::weakly_canonical(candidate, ec);
+        if (ec) found = candidate;
+        return true;
+    };
+    if (asked.is_absolute()) {
+        tryPath(asked);
+    } else {
+        for (const auto& dir : folders)
+            if (tryPath(dir / asked)) break;
     }
     if (found.empty()) {
         std::string where;
-        for (const auto& c : candidates) where += (where.empty() ? "" : ", ") + c.parent_path().string();
-        fatal(n[0], "cannot find include file '" + name + "' (looked in " + where + ")");
+        for (const auto& dir : folders) where += (where.empty() ? "" : ", ") + dir.string();
+        fatal(n[0], "cannot find include file '" + name + "'" + (where.empty() ? "" : " (looked in " + where + ")"));
     }
-    if (std::find(includeStack_.begin(), includeStack_.end(), found) != includeStack_.end()) {
+    if (std::find(includes.begin(), includes.end(), found) != includes.end()) {
         std::string chain;
-        for (const auto& p : includeStack_) chain += p.filename().string() + " -> ";
+        for (const auto& p : includes) chain += p.filename().string() + " -> ";
         fatal(n, "#include cycle: " + chain + found.filename().string());
     }
     // A file included again (say, in a loop) is read once.
@@ -378,29 +560,19 @@ void Interpreter::runInclude(const Node& n, EntryHandler handle) {
     }
     SourceFile& f = *cached;
 
-    SourceFile* const savedFile = file_;
-    const Ast* const savedAst = ast_;
+    const Nested nested(*this, n);
+    const Entered entered(*this, Frame{"included from", locOf(n), found}, Scope{});
     file_ = &f;
-    includeStack_.push_back(found);
-    scopes_.emplace_back();
-    struct Restore {
-        Interpreter& self;
-        SourceFile* file;
-        const Ast* ast;
-        ~Restore() {
-            self.scopes_.pop_back();
-            self.includeStack_.pop_back();
-            self.file_ = file;
-            self.ast_ = ast;
-        }
-    } restore{*this, savedFile, savedAst};
-    const bool parsed = parseSceneEntries(f.text, f.name, names_, diagnostics_,
-                                          [&](const Ast& ast, const Node& entry) {
-                                              ast_ = &ast;
-                                              runEntries(std::span<const Node>(&entry, 1), handle);
-                                          });
+    Diagnostics syntax;
+    const bool parsed = parseSceneEntries(
+        f.text, f.name, names_, syntax,
+        [&](const Ast& ast, const Node& entry) {
+            ast_ = &ast;
+            runEntries(std::span<const Node>(&entry, 1), handle);
+        },
+        depth_);
     if (!parsed) {
-        ++errorCount_;
+        forwardSyntaxErrors(syntax);
         throw Stop{};  // a syntax error: what follows cannot be trusted
     }
 }

@@ -14,6 +14,7 @@
 #include "asos/diag/format_number.hpp"
 #include "asos/lang/ast.hpp"
 #include "asos/lang/interpreter.hpp"
+#include "asos/lang/parse.hpp"
 #include "asos/scene/pov_tolerances.hpp"  // kPovEpsilon: how the language compares
 #include "asos/util/function_ref.hpp"
 
@@ -70,10 +71,58 @@ struct CameraValue {
 };
 
 struct Poison {};  // the value of a declaration whose right side failed (already reported)
+struct Unset {};   // an array's element not given a value yet
+
+// A file read: the scene or an include. Kept to the end of the run, for the
+// source lines of errors and for the macros defined in it.
+struct SourceFile {
+    std::shared_ptr<const std::string> name;
+    std::string text;
+    std::filesystem::path path;             // canonical when it came from disk; empty for text
+    std::vector<std::uint32_t> lineStarts;  // built on the first error
+};
+
+struct ArrayValue;
+struct MacroDef;
 
 using Value = std::variant<Num, std::string, std::shared_ptr<const ObjectTree>,
                            std::shared_ptr<const Pigment>, std::shared_ptr<const Finish>,
-                           std::shared_ptr<const Texture>, std::shared_ptr<const CameraValue>, Poison>;
+                           std::shared_ptr<const Texture>, std::shared_ptr<const CameraValue>,
+                           std::shared_ptr<ArrayValue>, std::shared_ptr<const MacroDef>, Poison, Unset>;
+
+// A declared array: up to 5 dimensions, its elements all of one kind (the first
+// one given sets it, as in POV-Ray). Arrays are values: names share one until
+// an element is changed through one of them, which then gets its own copy.
+struct ArrayValue {
+    std::vector<std::uint32_t> sizes;
+    std::vector<Value> elements;  // the last index varies fastest; Unset until given
+    int kind = -1;                // kindOf() of the elements; -1 before the first
+};
+
+// The kind of a value that an array holds: a float, a vector of each size, a
+// colour, a string, an object, …
+int kindOf(const Value& v);
+
+// A macro: its parameters and where its body is in its file. The body is read
+// (parsed) on the first call from each kind of place (BodyContext) and kept.
+inline constexpr std::size_t kBodyContexts = static_cast<std::size_t>(BodyContext::Default) + 1;
+struct MacroDef {
+    std::uint32_t name = 0;
+    std::vector<std::uint32_t> parameters;
+    SourceFile* file = nullptr;  // where the body is (and its source lines)
+    TextSpan body;
+    mutable std::array<std::shared_ptr<const Ast>, kBodyContexts> bodies;
+};
+
+// A name's entry in a scope: a value, or, for a macro's parameter given a bare
+// identifier, the entry it stands for (POV-Ray passes such an argument by
+// reference: assigning to the parameter assigns to it).
+struct Slot {
+    Value value;
+    std::int32_t refScope = -1;  // the scope of the entry it stands for; -1: none
+    std::uint32_t refId = 0;
+};
+using Scope = std::unordered_map<std::uint32_t, Slot>;
 
 // 'word', for messages.
 inline std::string quote(std::string_view word) {
@@ -82,6 +131,14 @@ inline std::string quote(std::string_view word) {
     s += '\'';
     s += word;
     s += '\'';
+    return s;
+}
+
+// "1 element", "3 elements": a count with its noun, for messages.
+inline std::string countOf(std::size_t n, std::string_view noun) {
+    std::string s = std::to_string(n) + ' ';
+    s += noun;
+    if (n != 1) s += 's';
     return s;
 }
 
@@ -97,6 +154,8 @@ enum class ColourChannels : std::uint8_t { Rgbft, Rgb };
 
 // The current statement is dropped; its error has been reported.
 struct Abandon {};
+// What a body's run ended with: null, or the #break that ended it.
+using BreakNode = const Node*;
 // Interpretation stops (#error, too many errors, a syntax error in an include).
 struct Stop {};
 
@@ -142,13 +201,6 @@ public:
     std::optional<SceneDescription> runText(std::string text, const std::string& fileName);
 
     // --- used across the implementation files ---
-    struct SourceFile {
-        std::shared_ptr<const std::string> name;
-        std::string text;
-        std::filesystem::path path;  // canonical when it came from disk; empty for text
-        std::vector<std::uint32_t> lineStarts;  // built on the first error
-    };
-
     SourceLoc locOf(const Node& n) const {
         return SourceLoc{file_->name, static_cast<int>(n.line), static_cast<int>(n.column)};
     }
@@ -159,9 +211,15 @@ public:
         throw Abandon{};
     }
     const std::string& nameOf(const Node& n) const { return names_.name(n.id); }
+    // How a message names a value's expression: 'Name', 'Name[…]', or "this value".
+    std::string referenceText(const Node& n) const;
 
     // evaluate.cpp
     Value eval(const Node& n);
+    Value call(const Node& n);
+    Num binaryStep(const Node& n, const Num& acc);
+    Num operand(Word op, const Node& n);
+    int toInt(double v, const Node& at, const char* what);
     Num evalNum(const Node& n);
     double evalFloat(const Node& n);
     int evalInt(const Node& n, int min);
@@ -174,6 +232,9 @@ public:
     Color checkOpaque(const Color& c, const Node& at);
     std::string evalString(const Node& n);
     const Value* lookup(std::uint32_t id) const;
+    Value evalMacroValue(const Node& call);
+    bool isDefined(const Node& n);
+    Value arrayElement(const Node& index);
 
     // items.cpp
     void runTopEntry(const Node& n);
@@ -185,14 +246,53 @@ public:
     Value evalDeclarable(const Node& n);
 
     // interpreter.cpp
+    // Runs the entries of a block; a #break among them (outside a loop, a
+    // #switch or a macro) is an error.
     void runEntries(std::span<const Node> entries, EntryHandler handle);
+    // Interpretation that nests (a block, a directive's body, an operand, an
+    // include, a macro call) holds one of these: past kMaxNesting levels all
+    // together, a located error ends the run.
+    class Nested {
+    public:
+        Nested(Interpreter& self, const Node& at);
+        ~Nested() { --self_.depth_; }
+        Nested(const Nested&) = delete;
+        Nested& operator=(const Nested&) = delete;
+
+    private:
+        Interpreter& self_;
+    };
 
 private:
     std::optional<SceneDescription> run(SourceFile& file);
-    void runDirective(const Node& n, EntryHandler handle);
-    void runSequence(const Node& seq, EntryHandler handle);
+    BreakNode runBody(std::span<const Node> entries, EntryHandler handle);
+    BreakNode runDirective(const Node& n, EntryHandler handle);
+    BreakNode runSequence(const Node& seq, EntryHandler handle);
+    BreakNode runSwitch(const Node& n, EntryHandler handle);
     void runInclude(const Node& n, EntryHandler handle);
-    void declare(const Node& nameNode, Value value, bool local);
+    void runDefault(const Node& n);
+    void defineMacro(const Node& n);
+    void invokeMacro(const Node& call, BodyContext context, EntryHandler handle);
+    const Ast& macroBody(const MacroDef& macro, BodyContext context);
+    void forwardSyntaxErrors(Diagnostics& syntax);
+    std::vector<DiagnosticContext> context() const;
+    void declare(const Node& target, Value value, bool local);
+    Slot* resolve(Slot& slot);
+    const Slot* findSlot(std::uint32_t id, std::size_t* scope) const;
+    Slot& slotToAssign(std::uint32_t id, bool local);
+    // A[i][j]: the array's name, and the subscripts (evaluated) outermost first.
+    struct ElementRef {
+        const Node* name = nullptr;
+        std::array<const Node*, 5> subscripts{};
+        std::array<double, 5> values{};
+        std::size_t count = 0;
+    };
+    ElementRef elementRef(const Node& index);
+    std::size_t elementOffset(const ArrayValue& array, const ElementRef& ref, const Node& at);
+    void assignElement(const Node& index, Value value);
+    void storeElement(ArrayValue& array, std::size_t offset, Value value, const Node& at);
+    void fillArray(ArrayValue& array, const Node& initialiser, std::size_t dimension, std::size_t offset);
+    Value makeArray(const Node& n);
     void applyDefines();
     bool truth(const Node& condition);
     void countIteration(const Node& at);
@@ -217,8 +317,10 @@ private:
     std::size_t iterations_ = 0;
 
     NameTable names_;
-    // scopes_[0] is global; each #include adds one for its #local names.
-    std::vector<std::unordered_map<std::uint32_t, Value>> scopes_;
+    // scopes_[0] is global; each #include and each macro call adds one for its
+    // #local names. A name is looked up from the innermost scope out (POV-Ray's
+    // scopes are dynamic: a macro sees its caller's locals).
+    std::vector<Scope> scopes_;
     // POV-Ray's language version, in hundredths as it keeps it. `version`
     // reads 3.7 until a #version sets it; a scene without one is read as 3.62.
     int versionHundredths_ = 370;
@@ -226,11 +328,35 @@ private:
     bool statementRun_ = false;    // something ran before: a #version now is late
     bool assumedGammaSet_ = false;
 
-    std::deque<SourceFile> files_;  // every file read, kept for error lines
+    std::deque<SourceFile> files_;  // every file read, kept for error lines and macros
     std::unordered_map<std::string, SourceFile*> filesByPath_;  // included files, by canonical path
     SourceFile* file_ = nullptr;    // the file being run
     const Ast* ast_ = nullptr;      // its tree (for string literals)
-    std::vector<std::filesystem::path> includeStack_;
+
+    // The includes and macro calls the run is inside, outermost first: the
+    // context of every diagnostic, and the chain of includes.
+    struct Frame {
+        std::string what;  // "included from", "in macro Foo called at"
+        SourceLoc at;
+        std::filesystem::path include;  // the file an include entered; empty for a macro
+    };
+    std::vector<Frame> frames_;
+    // Holds an include's or a macro call's frame, scope, file and tree while
+    // its body runs, and puts back the caller's when it is left.
+    class Entered {
+    public:
+        Entered(Interpreter& self, Frame frame, Scope scope);
+        ~Entered();
+        Entered(const Entered&) = delete;
+        Entered& operator=(const Entered&) = delete;
+
+    private:
+        Interpreter& self_;
+        SourceFile* file_;
+        const Ast* ast_;
+    };
+    std::size_t depth_ = 0;  // nesting, for Nested
+    std::vector<std::uint32_t> randomStreams_;  // seed(): POV-Ray's generators, by number
 
     SceneDescription scene_;
     ObjectStore objects_;

@@ -29,6 +29,9 @@ bool isObjectBlock(const Node& n) {
     }
 }
 
+// A declared value named where a block's entry may stand: Name or Name[i]….
+bool isReference(const Node& n) { return n.kind == NodeKind::Name || n.kind == NodeKind::Index; }
+
 bool isTransform(const Node& n) {
     return n.kind == NodeKind::Item && (n.word == Word::Translate || n.word == Word::Rotate ||
                                         n.word == Word::Scale || n.word == Word::Matrix);
@@ -72,8 +75,8 @@ Value Interpreter::evalDeclarable(const Node& n) {
     if (n.kind != NodeKind::Block) return eval(n);
     switch (n.word) {
     case Word::Camera: return std::make_shared<const CameraValue>(evalCamera(n));
-    case Word::Pigment: return evalPigment(n, Pigment{});
-    case Word::Finish: return evalFinish(n, Finish{});
+    case Word::Pigment: return evalPigment(n, defaultTexture_->pigment);
+    case Word::Finish: return evalFinish(n, defaultTexture_->finish);
     case Word::Texture: return evalTexture(n);
     default: return std::make_shared<const ObjectTree>(evalObject(n));
     }
@@ -194,10 +197,10 @@ ObjectTree Interpreter::evalObject(const Node& block) {
     }
     case Word::Object: {
         const Node& base = args[0];
-        if (base.kind == NodeKind::Name) {
+        if (base.kind != NodeKind::Block) {  // a declared object, an array's element, a macro's value
             const Value v = eval(base);
             const auto* o = std::get_if<std::shared_ptr<const ObjectTree>>(&v);
-            if (!o) fail(base, "'" + nameOf(base) + "' is " + describe(v) + ", not an object");
+            if (!o) fail(base, referenceText(base) + " is " + describe(v) + ", not an object");
             t = **o;
         } else {
             t = evalObject(base);
@@ -281,7 +284,7 @@ void Interpreter::applyObjectModifier(ObjectTree& tree, const Node& n, bool isSh
         }
         // pigment {} and finish {} change the texture the object has, or a
         // copy of the default one.
-        auto texture = std::make_shared<Texture>(tree.texture ? *tree.texture : Texture{});
+        auto texture = std::make_shared<Texture>(tree.texture ? *tree.texture : *defaultTexture_);
         if (n.word == Word::Pigment)
             texture->pigment = *evalPigment(n, texture->pigment);
         else
@@ -390,10 +393,10 @@ std::shared_ptr<const Pigment> Interpreter::evalPigment(const Node& block, const
 std::shared_ptr<const Finish> Interpreter::evalFinish(const Node& block, const Finish& start) {
     auto f = std::make_shared<Finish>(start);
     auto entry = [&](const Node& n) {
-        if (n.kind == NodeKind::Name) {
+        if (isReference(n)) {
             const Value v = eval(n);
             const auto* declared = std::get_if<std::shared_ptr<const Finish>>(&v);
-            if (!declared) fail(n, "'" + nameOf(n) + "' is " + describe(v) + ", not a finish");
+            if (!declared) fail(n, referenceText(n) + " is " + describe(v) + ", not a finish");
             *f = **declared;
             return;
         }
@@ -419,12 +422,12 @@ std::shared_ptr<const Finish> Interpreter::evalFinish(const Node& block, const F
 }
 
 std::shared_ptr<const Texture> Interpreter::evalTexture(const Node& block) {
-    auto t = std::make_shared<Texture>();
+    auto t = std::make_shared<Texture>(*defaultTexture_);
     auto entry = [&](const Node& n) {
-        if (n.kind == NodeKind::Name) {
+        if (isReference(n)) {
             const Value v = eval(n);
             const auto* declared = std::get_if<std::shared_ptr<const Texture>>(&v);
-            if (!declared) fail(n, "'" + nameOf(n) + "' is " + describe(v) + ", not a texture");
+            if (!declared) fail(n, referenceText(n) + " is " + describe(v) + ", not a texture");
             *t = **declared;
         } else if (isTransform(n)) {
             t->pigment.worldFromPattern = compose(evalTransformItem(n), t->pigment.worldFromPattern);
@@ -535,10 +538,10 @@ CameraValue Interpreter::evalCamera(const Node& block) {
     const Node* lookAtNode = nullptr;
     Transform transform;
     auto entry = [&](const Node& n) {
-        if (n.kind == NodeKind::Name) {
+        if (isReference(n)) {
             const Value v = eval(n);
             const auto* declared = std::get_if<std::shared_ptr<const CameraValue>>(&v);
-            if (!declared) fail(n, "'" + nameOf(n) + "' is " + describe(v) + ", not a camera");
+            if (!declared) fail(n, referenceText(n) + " is " + describe(v) + ", not a camera");
             cv = **declared;
             cv.camera.loc = locOf(block);
             return;

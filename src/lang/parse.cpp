@@ -22,10 +22,6 @@ namespace {
 namespace pegtl = tao::pegtl;
 namespace g = asos::grammar;
 
-// Deeper nesting (parentheses, unary operators, objects, directives) is
-// refused rather than risking the stack: POV-Ray scenes nest a dozen deep.
-constexpr std::size_t kMaxNesting = 200;
-
 // Thrown by an action: a construct we refuse, with its final message.
 struct Rejection {
     std::string message;
@@ -79,7 +75,10 @@ std::string fillWord(std::string_view pattern, std::string_view word) {
 // where the children of a construct with a variable number of them begin.
 class Builder {
 public:
-    Builder(Ast& ast, NameTable& names) : ast_(ast), names_(names) { stack_.reserve(1024); }
+    // `base`: the start of the file's text, which a macro's body is an offset into.
+    Builder(Ast& ast, NameTable& names, const char* base) : ast_(ast), names_(names), base_(base) {
+        stack_.reserve(1024);
+    }
 
     struct Frame {
         std::size_t start = 0;
@@ -119,6 +118,14 @@ public:
         n.word = w;
         push(n);
     }
+    void pushSpan(const char* begin, std::size_t length, Pos p) {
+        Node n = leaf(NodeKind::MacroBody, p);
+        n.id = static_cast<std::uint32_t>(begin - base_);
+        n.count = static_cast<std::uint32_t>(length);
+        push(n);
+    }
+    Node& top() { return stack_.back(); }
+    Pos topPos() const { return {stack_.back().line, stack_.back().column}; }
 
     // Replaces the top `count` nodes by one node that owns them.
     void reduce(NodeKind kind, Word w, std::size_t count, Pos p, std::uint8_t flags = 0) {
@@ -153,6 +160,7 @@ public:
     }
 
     Word pendingWord = Word::None;
+    bool missingSemicolon = false;  // for the declaration being read
     const EntryConsumer* consume = nullptr;  // set: hand over each top-level entry
 
     // A top-level entry is complete: give it away and forget its nodes.
@@ -180,6 +188,7 @@ private:
 
     Ast& ast_;
     NameTable& names_;
+    const char* base_;
     std::vector<Node> stack_;
     std::vector<Frame> frames_;
 };
@@ -205,6 +214,8 @@ template <>
 struct action<g::object_statement> : pegtl::limit_depth<kMaxNesting> {};
 template <typename Entry>
 struct action<g::directive<Entry>> : pegtl::limit_depth<kMaxNesting> {};
+template <>
+struct action<g::array_element> : pegtl::limit_depth<kMaxNesting> {};
 
 // Literals and names.
 template <>
@@ -254,14 +265,14 @@ struct PushName {
         b.pushName(leadingWord(in.string_view()), posOf(in));
     }
 };
-template <> struct action<g::name> : PushName {};
 template <> struct action<g::name_reference> : PushName {};
 template <> struct action<g::declared_name> : PushName {};
 template <> struct action<g::undefined_name> : PushName {};
 template <> struct action<g::for_variable> : PushName {};
-template <> struct action<g::finish_name> : PushName {};
-template <> struct action<g::texture_name> : PushName {};
-template <> struct action<g::camera_name> : PushName {};
+template <> struct action<g::tested_name> : PushName {};
+template <> struct action<g::macro_name> : PushName {};
+template <> struct action<g::macro_defined_name> : PushName {};
+template <> struct action<g::macro_parameter> : PushName {};
 
 template <>
 struct action<g::constant> {
@@ -321,6 +332,53 @@ template <> struct action<g::not_equal> : Reduce<NodeKind::Binary, Word::OpNotEq
 template <> struct action<g::conjunction> : Reduce<NodeKind::Binary, Word::OpAnd, 2> {};
 template <> struct action<g::disjunction> : Reduce<NodeKind::Binary, Word::OpOr, 2> {};
 template <> struct action<g::conditional_tail> : Reduce<NodeKind::Conditional, Word::None, 3> {};
+template <> struct action<g::subscript> : Reduce<NodeKind::Index, Word::None, 2> {};
+
+// Arrays: array[N]… { … }.
+template <>
+struct action<g::array_start> {
+    static void apply0(Builder& b) { b.open(); }
+};
+template <>
+struct action<g::array_value> {
+    template <typename Input>
+    static void apply(const Input& in, Builder& b) {
+        std::size_t sizes = b.frameSize();
+        if (b.top().kind == NodeKind::Initialiser) --sizes;
+        if (sizes > 5) reject(in, "an array has at most 5 dimensions, this one has " + std::to_string(sizes));
+        b.close(NodeKind::Array, Word::None, posOf(in), static_cast<std::uint8_t>(sizes));
+    }
+};
+template <>
+struct action<g::initialiser_open> {
+    static void apply0(Builder& b) { b.open(); }
+};
+template <>
+struct action<g::array_initialiser> {
+    template <typename Input>
+    static void apply(const Input& in, Builder& b) {
+        b.close(NodeKind::Initialiser, Word::None, posOf(in));
+    }
+};
+
+// Macro calls: Name(arguments); an entry's call records the block it stands in.
+template <>
+struct action<g::macro_open> {
+    static void apply0(Builder& b) { b.openAroundLast(); }
+};
+template <>
+struct action<g::macro_call> {
+    template <typename Input>
+    static void apply(const Input& in, Builder& b) {
+        b.close(NodeKind::MacroCall, Word::None, posOf(in));
+    }
+};
+template <typename Entry>
+struct action<g::macro_entry<Entry>> {
+    static void apply0(Builder& b) {
+        b.top().flags = static_cast<std::uint8_t>(g::body_context<Entry>::value);
+    }
+};
 
 template <>
 struct action<g::member_word> {
@@ -397,10 +455,12 @@ struct Arity {
 Arity arityOf(Word w) {
     switch (w) {
     case Word::Pow: case Word::Atan2: case Word::Mod: case Word::Div: case Word::Vcross:
-    case Word::Vdot: case Word::Vrotate:
+    case Word::Vdot: case Word::Vrotate: case Word::Strcmp: case Word::DimensionSize:
         return {2, 2};
-    case Word::VaxisRotate:
+    case Word::VaxisRotate: case Word::Substr:
         return {3, 3};
+    case Word::Vstr:
+        return {5, 5};
     case Word::Select:
         return {3, 4};
     case Word::Min: case Word::Max:
@@ -619,11 +679,9 @@ template <typename Entry> struct action<g::ifndef_directive<Entry>> : CloseIf {}
 
 // #ifdef (N) is #if (defined(N)); #ifndef (N) is #if (!defined(N)).
 template <>
-struct action<g::tested_name> {
-    template <typename Input>
-    static void apply(const Input& in, Builder& b) {
-        const Pos p = posOf(in);
-        b.pushName(leadingWord(in.string_view()), p);
+struct action<g::ifdef_condition> {
+    static void apply0(Builder& b) {
+        const Pos p = b.topPos();
         b.reduce(NodeKind::Call, Word::Defined, 1, p);
         if (b.frame().word == Word::Ifndef) b.reduce(NodeKind::Unary, Word::OpNot, 1, p);
     }
@@ -644,8 +702,78 @@ struct action<g::for_directive<Entry>> {
         b.close(NodeKind::For, Word::None, posOf(in), hasStep);
     }
 };
-template <> struct action<g::declare_directive> : Reduce<NodeKind::Declare, Word::Declare, 2> {};
-template <> struct action<g::local_directive> : Reduce<NodeKind::Local, Word::Local, 2> {};
+template <> struct action<g::switch_start> : OpenDirective<Word::Switch> {};
+template <> struct action<g::case_start> : OpenDirective<Word::Case> {};
+template <> struct action<g::range_start> : OpenDirective<Word::Range> {};
+template <typename Entry>
+struct action<g::case_clause<Entry>> {
+    template <typename Input>
+    static void apply(const Input& in, Builder& b) {
+        b.close(NodeKind::Case, Word::Case, posOf(in));
+    }
+};
+template <typename Entry>
+struct action<g::range_clause<Entry>> {
+    template <typename Input>
+    static void apply(const Input& in, Builder& b) {
+        b.close(NodeKind::Range, Word::Range, posOf(in));
+    }
+};
+template <typename Entry>
+struct action<g::switch_directive<Entry>> {
+    template <typename Input>
+    static void apply(const Input& in, Builder& b) {
+        const std::uint8_t hasElse = b.top().kind == NodeKind::Sequence ? 1 : 0;
+        b.close(NodeKind::Switch, Word::Switch, posOf(in), hasElse);
+    }
+};
+template <>
+struct action<g::break_directive> {
+    template <typename Input>
+    static void apply(const Input& in, Builder& b) {
+        b.pushWord(NodeKind::Break, Word::Break, posOf(in));
+    }
+};
+template <> struct action<g::default_start> : OpenDirective<Word::Default> {};
+template <> struct action<g::bare_default_start> : OpenDirective<Word::Default> {};
+struct CloseDefault {
+    template <typename Input>
+    static void apply(const Input& in, Builder& b) {
+        b.close(NodeKind::Default, Word::Default, posOf(in));
+    }
+};
+template <> struct action<g::default_directive> : CloseDefault {};
+template <> struct action<g::bare_default> : CloseDefault {};
+template <> struct action<g::macro_start> : OpenDirective<Word::Macro> {};
+template <>
+struct action<g::macro_body_text> {
+    template <typename Input>
+    static void apply(const Input& in, Builder& b) {
+        b.pushSpan(in.begin(), in.size(), posOf(in));
+    }
+};
+template <>
+struct action<g::macro_directive> {
+    template <typename Input>
+    static void apply(const Input& in, Builder& b) {
+        b.close(NodeKind::Macro, Word::Macro, posOf(in));
+    }
+};
+template <>
+struct action<g::missing_semicolon> {
+    static void apply0(Builder& b) { b.missingSemicolon = true; }
+};
+// flags: 1 when a lone name or macro call was declared without its ';'.
+template <NodeKind Kind, Word W>
+struct CloseDeclare {
+    template <typename Input>
+    static void apply(const Input& in, Builder& b) {
+        b.reduce(Kind, W, 2, posOf(in), b.missingSemicolon ? 1 : 0);
+        b.missingSemicolon = false;
+    }
+};
+template <> struct action<g::declare_directive> : CloseDeclare<NodeKind::Declare, Word::Declare> {};
+template <> struct action<g::local_directive> : CloseDeclare<NodeKind::Local, Word::Local> {};
 template <> struct action<g::undef_directive> : Reduce<NodeKind::Undef, Word::Undef, 1> {};
 template <> struct action<g::include_directive> : Reduce<NodeKind::Include, Word::Include, 1> {};
 template <> struct action<g::version_directive> : Reduce<NodeKind::Version, Word::Version, 1> {};
@@ -679,54 +807,81 @@ std::string foundAt(std::string_view text, std::size_t byte) {
     return quoted;
 }
 
-Diagnostic makeError(const std::shared_ptr<const std::string>& file, std::string_view text,
+Diagnostic makeError(const std::shared_ptr<const std::string>& file, std::string_view fileText,
                      std::size_t line, std::size_t column, std::string message) {
     Diagnostic d;
     d.severity = Severity::Error;
     d.loc = SourceLoc{file, static_cast<int>(line), static_cast<int>(column)};
     d.message = std::move(message);
-    d.sourceLine = std::string(sourceLine(text, static_cast<int>(line)));
+    d.sourceLine = std::string(sourceLine(fileText, static_cast<int>(line)));
     return d;
 }
 
+// What a parse reads: `span` of a file's text (all of it, or a macro's body).
+struct Source {
+    std::string_view fileText;
+    TextSpan span;
+
+    std::string_view text() const { return fileText.substr(span.offset, span.length); }
+};
+
+Source wholeText(std::string_view text) {
+    return {text, TextSpan{0, static_cast<std::uint32_t>(text.size()), 1, 1}};
+}
+
 // Parses with TopRule; `root` says what the tree's root is. Returns false after
-// a syntax error, which it reports.
+// a syntax error, which it reports. The nesting limit counts from `startDepth`.
 enum class Root { File, Expression };
 template <typename TopRule>
-bool parseWith(Ast& ast, std::string_view text, NameTable& names, Diagnostics& diagnostics, Root root,
-               const EntryConsumer* consume) {
-    Builder builder(ast, names);
+bool parseWith(Ast& ast, const Source& source, NameTable& names, Diagnostics& diagnostics, Root root,
+               const EntryConsumer* consume, std::size_t startDepth) {
+    const std::string_view text = source.text();
+    Builder builder(ast, names, source.fileText.data());
     builder.consume = consume;
-    pegtl::memory_input<pegtl::tracking_mode::eager> in(text.data(), text.size(),
-                                                        ast.file ? *ast.file : std::string());
+    pegtl::memory_input<pegtl::tracking_mode::eager> in(text.data(), text.data() + text.size(),
+                                                        ast.file ? *ast.file : std::string(), 0,
+                                                        source.span.line, source.span.column);
+    in.private_depth = startDepth;
     try {
         if (root == Root::File) builder.open();
         pegtl::parse<TopRule, action, g::control>(in, builder);
-        ast.root = root == Root::File ? builder.takeRoot({1, 1}) : builder.takeSingle();
+        ast.root = root == Root::File ? builder.takeRoot({source.span.line, source.span.column}) : builder.takeSingle();
         return true;
     } catch (const pegtl::parse_error& e) {
         const pegtl::position& p = e.positions().front();
         std::string message(e.message());
         if (message.rfind("expected", 0) == 0) message += ", found " + foundAt(text, p.byte);
         if (message == "maximum parser rule nesting depth exceeded")  // limit_depth's words
-            message = "nested too deep (parentheses, operators, objects or directives, over " +
-                      std::to_string(kMaxNesting) + " levels)";
+            message = "nested too deep: parentheses, operators, blocks, directives, includes and macro calls "
+                      "together go over " + std::to_string(kMaxNesting) + " levels";
         std::size_t line = p.line;
         std::size_t column = p.column;
         if (p.byte >= text.size()) {
-            // At the end of the file: point just after the last token, on a
+            // At the end of the text: point just after the last token, on a
             // line that can be shown.
             std::size_t end = text.size();
             while (end > 0 && std::isspace(static_cast<unsigned char>(text[end - 1]))) --end;
-            const std::size_t lineStart = text.rfind('\n', end == 0 ? 0 : end - 1);
-            line = 1 + static_cast<std::size_t>(std::count(text.begin(), text.begin() + static_cast<std::ptrdiff_t>(end), '\n'));
-            column = end - (lineStart == std::string_view::npos || end == 0 ? 0 : lineStart + 1) + 1;
+            const std::size_t lineStart = end == 0 ? std::string_view::npos : text.rfind('\n', end - 1);
+            line = source.span.line +
+                   static_cast<std::size_t>(std::count(text.begin(), text.begin() + static_cast<std::ptrdiff_t>(end), '\n'));
+            column = lineStart == std::string_view::npos ? source.span.column + end : end - lineStart;
         }
-        diagnostics.report(makeError(ast.file, text, line, column, std::move(message)));
+        diagnostics.report(makeError(ast.file, source.fileText, line, column, std::move(message)));
     } catch (const Rejection& r) {
-        diagnostics.report(makeError(ast.file, text, r.line, r.column, r.message));
+        diagnostics.report(makeError(ast.file, source.fileText, r.line, r.column, r.message));
     }
     return false;
+}
+
+// The body of a macro read as entries of Entry.
+template <typename Entry>
+std::optional<Ast> parseBody(const Source& source, std::shared_ptr<const std::string> file, std::size_t startDepth,
+                             NameTable& names, Diagnostics& diagnostics) {
+    Ast ast;
+    ast.file = std::move(file);
+    if (!parseWith<g::macro_body<Entry>>(ast, source, names, diagnostics, Root::File, nullptr, startDepth))
+        return std::nullopt;
+    return ast;
 }
 
 }  // namespace
@@ -745,25 +900,50 @@ std::string_view sourceLine(std::string_view text, int line) {
 }
 
 bool parseSceneEntries(std::string_view text, std::shared_ptr<const std::string> file, NameTable& names,
-                       Diagnostics& diagnostics, const EntryConsumer& consume) {
+                       Diagnostics& diagnostics, const EntryConsumer& consume, std::size_t startDepth) {
     Ast ast;
     ast.file = std::move(file);
-    return parseWith<g::scene_file>(ast, text, names, diagnostics, Root::File, &consume);
+    return parseWith<g::scene_file>(ast, wholeText(text), names, diagnostics, Root::File, &consume, startDepth);
 }
 
 std::optional<Ast> parseScene(std::string_view text, std::shared_ptr<const std::string> file,
                               NameTable& names, Diagnostics& diagnostics) {
     Ast ast;
     ast.file = std::move(file);
-    if (!parseWith<g::scene_file>(ast, text, names, diagnostics, Root::File, nullptr)) return std::nullopt;
+    if (!parseWith<g::scene_file>(ast, wholeText(text), names, diagnostics, Root::File, nullptr, 0))
+        return std::nullopt;
     return ast;
+}
+
+std::optional<Ast> parseMacroBody(std::string_view fileText, TextSpan body, std::shared_ptr<const std::string> file,
+                                  BodyContext context, std::size_t startDepth, NameTable& names,
+                                  Diagnostics& diagnostics) {
+    const Source source{fileText, body};
+    auto parse = [&]<typename Entry>(Entry*) {
+        return parseBody<Entry>(source, std::move(file), startDepth, names, diagnostics);
+    };
+    switch (context) {
+    case BodyContext::Value: return parse(static_cast<g::value_entry*>(nullptr));
+    case BodyContext::Top: return parse(static_cast<g::top_entry*>(nullptr));
+    case BodyContext::ObjectModifier: return parse(static_cast<g::object_modifier*>(nullptr));
+    case BodyContext::Union: return parse(static_cast<g::union_entry*>(nullptr));
+    case BodyContext::Light: return parse(static_cast<g::light_entry*>(nullptr));
+    case BodyContext::Camera: return parse(static_cast<g::camera_entry*>(nullptr));
+    case BodyContext::Pigment: return parse(static_cast<g::pigment_entry*>(nullptr));
+    case BodyContext::Finish: return parse(static_cast<g::finish_entry*>(nullptr));
+    case BodyContext::Texture: return parse(static_cast<g::texture_entry*>(nullptr));
+    case BodyContext::GlobalSettings: return parse(static_cast<g::global_entry*>(nullptr));
+    case BodyContext::Asos: return parse(static_cast<g::asos_entry*>(nullptr));
+    case BodyContext::Default: return parse(static_cast<g::default_entry*>(nullptr));
+    }
+    return std::nullopt;
 }
 
 std::optional<Ast> parseExpression(std::string_view text, std::shared_ptr<const std::string> file,
                                    NameTable& names, Diagnostics& diagnostics) {
     Ast ast;
     ast.file = std::move(file);
-    if (!parseWith<g::expression_text>(ast, text, names, diagnostics, Root::Expression, nullptr))
+    if (!parseWith<g::expression_text>(ast, wholeText(text), names, diagnostics, Root::Expression, nullptr, 0))
         return std::nullopt;
     return ast;
 }

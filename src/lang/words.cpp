@@ -26,13 +26,17 @@ std::uint8_t classesOf(Word w) {
     case Word::Degrees: case Word::Exp: case Word::Log: case Word::Ln: case Word::Vlength:
     case Word::Vnormalize: case Word::Vcross: case Word::Vdot: case Word::Vrotate:
     case Word::VaxisRotate: case Word::Select: case Word::Concat: case Word::Str:
-    case Word::Chr: case Word::Strlen: case Word::Val: case Word::Defined:
+    case Word::Chr: case Word::Strlen: case Word::Val: case Word::Defined: case Word::Substr:
+    case Word::Strcmp: case Word::Vstr: case Word::Asc: case Word::Strupr: case Word::Strlwr:
+    case Word::Rand: case Word::Seed: case Word::Dimensions: case Word::DimensionSize:
         return kKeyword | kFunction;
     case Word::X: case Word::Y: case Word::Z: case Word::T: case Word::U: case Word::V:
         return kKeyword | kConstant | kMember;
     case Word::Pi: case Word::Clock: case Word::ClockDelta: case Word::ClockOn:
     case Word::Version: case Word::True: case Word::False: case Word::On: case Word::Off:
     case Word::Yes: case Word::No: case Word::ImageWidth: case Word::ImageHeight:
+    case Word::FrameNumber: case Word::InitialClock: case Word::FinalClock: case Word::InitialFrame:
+    case Word::FinalFrame:
         return kKeyword | kConstant;
     case Word::Rgb: case Word::Rgbf: case Word::Rgbt: case Word::Rgbft:
         return kKeyword | kColourWhole;
@@ -133,8 +137,7 @@ constexpr std::string_view kPovrayKeywords[] = {
 };
 
 constexpr std::string_view kUnsupportedDirectives[] = {
-    "break", "case", "default", "fclose", "fopen", "macro", "range", "read", "render",
-    "statistics", "switch", "write",
+    "fclose", "fopen", "read", "render", "statistics", "write",
 };
 
 // POV-Ray's keywords minus ours, sorted.

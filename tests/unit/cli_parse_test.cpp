@@ -82,3 +82,19 @@ TEST_CASE("asos parse on a missing file fails cleanly", "[cli]") {
     CHECK(r.exitCode == 1);
     CHECK(r.err == "no-such-file.pov: error: cannot read the scene file\n");
 }
+
+TEST_CASE("asos parse sets clock_on with --clock and finds POV-Ray's includes by itself", "[cli]") {
+    scene("clock_on.pov", "sphere { 0, 1 + clock_on }\n");
+    const Result off = runAsos({"parse", "clock_on.pov", "--no-locations"});
+    CHECK(off.out.find("sphere {\n  <0, 0, 0>, 1\n") != std::string::npos);
+    const Result on = runAsos({"parse", "clock_on.pov", "--clock", "0", "--no-locations"});
+    CHECK(on.out.find("sphere {\n  <0, 0, 0>, 2\n") != std::string::npos);
+
+    // POV-Ray's colors.inc, with no -L (scripts/setup.sh installs povray).
+    REQUIRE(fs::is_regular_file("/usr/share/povray-3.7/include/colors.inc"));
+    scene("colors.pov", "#include \"colors.inc\"\nsphere { 0, 1 pigment { CHSV2RGB(<120, 1, 1>) } }\n");
+    const Result colors = runAsos({"parse", "colors.pov", "--no-locations"});
+    INFO(colors.err);
+    CHECK(colors.exitCode == 0);
+    CHECK(colors.out.find("pigment { color rgbft <0, 1, 0, 0, 0> }") != std::string::npos);
+}

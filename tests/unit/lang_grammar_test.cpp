@@ -139,3 +139,34 @@ TEST_CASE("modifiers", "[lang][grammar]") {
          "sphere { 0, 1 texture { brick texture { T } texture { U } } }",
          "sphere { 0, 1 finish { phong } }",         "sphere { 0, 1 translate }", "sphere { 0, 1 asos { eps } }", "sphere { 0, 1 asos { foo 1 } }"});
 }
+
+TEST_CASE("macros, #switch, #break, #default", "[lang][grammar]") {
+    using top = g::entries<g::top_entry>;
+    checkTable<top>(
+        {"#macro M() #end", "#macro M(A, B) sphere { A, B } #end", "#macro M(A B) #end",
+         "#macro M() #if (1) #end #while (0) #end #end", "#macro M() \"#end\" // #end\n #end",
+         "#macro M() /* #end */ #end", "#macro Outer() #macro Inner() #end #end",
+         "M()", "M(1, <1,2,3>, \"s\")", "M(sphere { 0, 1 }, pigment { rgb 1 })", "M (1) M(2)",
+         "M(N(1))", "sphere { 0, 1 M() }", "sphere { M(), 1 }", "sphere { 0, 1 pigment { M() } }",
+         "sphere { 0, 1 pigment { M() * 0.5 } }", "#declare A = M();", "#declare A = M()",
+         "#declare A = M() + 1;", "object { M() scale 2 }", "#if (M(1)) #end",
+         "#switch (A) #case (1) #break #range (2, 3) #else #end", "#switch (A) #case (1) #case (2) #end",
+         "#while (1) #break #end", "#default { finish { phong 1 } pigment { rgb 1 } }",
+         "#default { texture { pigment { rgb 1 } } }", "default { finish { ambient 0 } }", "#default { }"},
+        {"#macro M(", "#macro M() sphere { 0, 1 }", "#macro (A) #end", "#macro M(1) #end", "M(1,)", "M(,1)",
+         "M(1", "#declare A = M() + ;", "#switch (A) #end", "#switch (A) #else #end", "#switch (A) #case 1 #end",
+         "#switch (A) #range (1) #end", "#switch (A) #case (1)", "#default { sphere { 0, 1 } }",
+         "#default finish { }"});
+}
+
+TEST_CASE("arrays and subscripts", "[lang][grammar]") {
+    using top = g::entries<g::top_entry>;
+    checkTable<top>(
+        {"#declare A = array[3];", "#declare A = array[3]", "#declare A = array[2][3];",
+         "#declare A = array[3] {1, 2, 3};", "#declare A = array[3] {1 2 3}", "#declare A = array[2][2] {{1,2},{3,4}}",
+         "#declare A = array[2] { sphere { 0, 1 }, box { 0, 1 } }", "#declare A[1] = 2;", "#declare A[I][J + 1] = x;",
+         "#local A[0] = 1;", "sphere { A[1], B[1][2] }", "#ifdef (A[1]) #end", "#declare D = defined(A[0]);",
+         "object { Shapes[2] }", "sphere { 0, 1 texture { T[1] } }", "#declare B = A", "#declare N = dimension_size(A, 1);"},
+        {"#declare A = array;", "#declare A = array[];", "#declare A = array[3;", "#declare A = array[2] {1, 2",
+         "#declare A[ = 1;", "#declare A[1 = 1;", "sphere { A[, 1 }", "#declare B = A + 1"});
+}

@@ -4,10 +4,12 @@
 #include <catch2/catch.hpp>
 
 #include <cmath>
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 
 #include "asos/lang/interpreter.hpp"
+#include "interpret_text.hpp"
 
 using namespace asos;
 using namespace asos::lang;
@@ -15,52 +17,9 @@ using Catch::Matchers::Contains;
 
 namespace {
 
-struct Run {
-    std::optional<SceneDescription> scene;
-    Diagnostics diagnostics;
-
-    std::string errors() const {
-        std::string s;
-        for (const auto& d : diagnostics.all())
-            s += std::to_string(d.loc.line) + ":" + std::to_string(d.loc.column) + ": " + d.message + "\n";
-        return s;
-    }
-};
-
-Run run(const std::string& text, const InterpreterOptions& options = {}) {
-    Run r;
-    r.scene = interpretText(text, "t.pov", options, r.diagnostics);
-    return r;
-}
-
-const SceneDescription& ok(const Run& r) {
-    INFO(r.errors());
-    REQUIRE(r.scene);
-    return *r.scene;
-}
-
-// The centre of the one sphere of `text`, which places `sphere { VALUE, 1 }`.
-Vec3 valueOf(const std::string& declarations, const std::string& value) {
-    Run r = run(declarations + "\nsphere { " + value + ", 1 }");
-    const auto& scene = ok(r);
-    REQUIRE(scene.objects.size() == 1);
-    return std::get<SphereShape>(scene.objects[0].shape).center;
-}
-double floatOf(const std::string& expression, const std::string& declarations = "") {
-    return valueOf(declarations + "\n#declare Value__ = " + expression + ";", "<Value__, 0, 0>").x;
-}
+using namespace asos::test;
 
 bool near(const Vec3& a, const Vec3& b) { return glm::length(a - b) < 1e-12; }
-
-std::filesystem::path scratchDir(const std::string& name) {
-    auto dir = std::filesystem::path(ASOS_BINARY_DIR) / "test-scratch" / name;
-    std::filesystem::remove_all(dir);
-    std::filesystem::create_directories(dir);
-    return dir;
-}
-void writeFile(const std::filesystem::path& path, const std::string& text) {
-    std::ofstream(path) << text;
-}
 
 }  // namespace
 
@@ -291,6 +250,80 @@ TEST_CASE("#include cycles and runaway depth are errors", "[lang][interpreter]")
     CHECK_FALSE(interpretFile(dir / "d0.inc", {}, deep));
     REQUIRE(deep.hasErrors());
     CHECK_THAT(deep.all()[0].message, Contains("nested more than 64 deep"));
+}
+
+TEST_CASE("#include looks beside the file, the scene, in -L, then in POV-Ray's folders", "[lang][interpreter]") {
+    const auto dir = scratchDir("include-order");
+    for (const char* sub : {"sub", "lib", "povray"}) std::filesystem::create_directories(dir / sub);
+    writeFile(dir / "scene.pov", "#include \"sub/a.inc\"\nsphere { <B, C, D>, E }\n");
+    writeFile(dir / "sub" / "a.inc", "#include \"b.inc\"\n#include \"c.inc\"\n#include \"d.inc\"\n#include \"e.inc\"\n");
+    writeFile(dir / "sub" / "b.inc", "#declare B = 1;\n");  // beside the including file: first
+    writeFile(dir / "b.inc", "#declare B = 2;\n");
+    writeFile(dir / "c.inc", "#declare C = 1;\n");          // beside the scene
+    writeFile(dir / "lib" / "c.inc", "#declare C = 2;\n");
+    writeFile(dir / "lib" / "d.inc", "#declare D = 1;\n");  // -L before POV-Ray's folders
+    writeFile(dir / "povray" / "d.inc", "#declare D = 2;\n");
+    writeFile(dir / "povray" / "e.inc", "#declare E = 1;\n");
+    InterpreterOptions options;
+    options.includePaths = {dir / "lib"};
+    options.libraryPaths = {dir / "povray"};
+    Diagnostics diagnostics;
+    auto scene = interpretFile(dir / "scene.pov", options, diagnostics);
+    REQUIRE(scene);
+    CHECK(std::get<SphereShape>(scene->objects[0].shape).center == Vec3(1, 1, 1));
+
+    writeFile(dir / "sub" / "a.inc", "#include \"nowhere.inc\"\n");
+    Diagnostics missing;
+    CHECK_FALSE(interpretFile(dir / "scene.pov", options, missing));
+    REQUIRE(missing.all().size() == 1);
+    CHECK(missing.all()[0].message == "cannot find include file 'nowhere.inc' (looked in " + (dir / "sub").string() +
+                                          ", " + dir.string() + ", " + (dir / "lib").string() + ", " +
+                                          (dir / "povray").string() + ")");
+    REQUIRE(missing.all()[0].context.size() == 1);
+    CHECK(missing.all()[0].context[0].what == "included from");
+}
+
+TEST_CASE("POV-Ray's include folders come from its configuration", "[lang][interpreter]") {
+    const auto dir = scratchDir("povray-ini");
+    std::filesystem::create_directories(dir / ".povray" / "3.7");
+    std::filesystem::create_directories(dir / "one");
+    std::filesystem::create_directories(dir / "two");
+    writeFile(dir / ".povray" / "3.7" / "povray.ini",
+              "; Library_Path=" + (dir / "commented").string() + "\nLibrary_Path=\"" + (dir / "one").string() +
+                  "\"\n+L" + (dir / "two").string() + "\nlibrary_path = " + (dir / "missing").string() +
+                  "\nWidth=800\n");
+    const char* savedHome = std::getenv("HOME");
+    const std::string home = savedHome ? savedHome : "";
+    setenv("HOME", dir.c_str(), 1);
+    const auto paths = povrayLibraryPaths();
+    if (savedHome) setenv("HOME", home.c_str(), 1); else unsetenv("HOME");
+    REQUIRE(paths.size() >= 2);
+    CHECK(paths[0] == dir / "one");
+    CHECK(paths[1] == dir / "two");
+    for (const auto& p : paths) CHECK(std::filesystem::is_directory(p));
+}
+
+TEST_CASE("nesting is bounded in total, across includes", "[lang][interpreter]") {
+    // Ten files, each nesting 150 #if deep and including the next: each file
+    // alone is shallow, together they are not (the stack once overflowed).
+    const auto dir = scratchDir("nesting");
+    for (int i = 0; i < 10; ++i) {
+        std::string text;
+        for (int k = 0; k < 150; ++k) text += "#if (1) ";
+        text += i < 9 ? "#include \"n" + std::to_string(i + 1) + ".inc\"" : std::string("sphere { 0, 1 }");
+        for (int k = 0; k < 150; ++k) text += " #end";
+        writeFile(dir / ("n" + std::to_string(i) + ".inc"), text + "\n");
+    }
+    writeFile(dir / "scene.pov", "#include \"n0.inc\"\n");
+    Diagnostics d;
+    CHECK_FALSE(interpretFile(dir / "scene.pov", {}, d));
+    REQUIRE(d.hasErrors());
+    CHECK_THAT(d.all()[0].message, Contains("nested too deep"));
+    CHECK(d.all()[0].context.size() >= 6);
+    // A long chain of one operator is not nesting: it is evaluated without recursion.
+    std::string sum = "1";
+    for (int i = 1; i < 100000; ++i) sum += "+1";
+    CHECK(floatOf(sum) == 100000);
 }
 
 TEST_CASE("command-line defines and the clock", "[lang][interpreter]") {

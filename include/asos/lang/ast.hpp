@@ -27,7 +27,9 @@ enum class NodeKind : std::uint8_t {
     Unary,        // word: OpSub, OpAdd or OpNot; one child
     Binary,       // word: the operator; two children
     Conditional,  // children: condition, then, else
-    Call,         // word: the function; children: arguments (defined(): one Name)
+    Call,         // word: the function; children: arguments (defined(): one Name or Index)
+    Index,        // children: the array (a Name or an Index), the subscript
+    MacroCall,    // children: Name, arguments; flags: the BodyContext of the call (parse.hpp)
     Member,       // word: x, red, gray, …; one child
     Colour,       // flags: 1 when children[0] is a base expression; the rest are ColourItems
     ColourItem,   // word: rgb, rgbf, red, filter, …; one child
@@ -35,8 +37,8 @@ enum class NodeKind : std::uint8_t {
     Block,     // word: sphere, pigment, camera, …; flags: leading positional children
     Item,      // word: translate, phong, open, area_light, …; children: its arguments
     Sequence,  // entries in order: a file, a directive's body
-    Declare,   // children: Name, value
-    Local,     // children: Name, value
+    Declare,   // children: Name (or Index), value; flags: 1 when a lone name or macro call has no ';'
+    Local,     // children: Name (or Index), value; flags: as Declare
     Undef,     // children: Name
     Include,   // children: file name expression
     If,        // children: (condition, Sequence)…, then an optional else Sequence; flags: has else
@@ -46,6 +48,15 @@ enum class NodeKind : std::uint8_t {
     Debug,     // children: message expression
     Warning,
     Error,
+    Switch,       // children: value, Case/Range clauses, then an optional else Sequence; flags: has else
+    Case,         // children: value, Sequence
+    Range,        // children: low, high, Sequence
+    Break,        // no children
+    Default,      // children: texture, pigment and finish blocks
+    Macro,        // children: Name, parameter Names, MacroBody
+    MacroBody,    // id: the body's byte offset in its file; count: its length in bytes
+    Array,        // children: the sizes, then an optional Initialiser; flags: number of sizes
+    Initialiser,  // children: elements, or Initialisers one level down
 };
 
 struct Node {
@@ -69,7 +80,7 @@ struct Node {
     const Node& operator[](std::size_t i) const { return first[i]; }
     bool hasChildren() const {
         return kind != NodeKind::Number && kind != NodeKind::String && kind != NodeKind::Name &&
-               kind != NodeKind::Constant && count > 0;
+               kind != NodeKind::Constant && kind != NodeKind::MacroBody && count > 0;
     }
 };
 static_assert(sizeof(Node) == 24, "keep syntax nodes small: a scene may have millions");

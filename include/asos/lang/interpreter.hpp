@@ -21,14 +21,27 @@ struct Define {
 };
 
 struct InterpreterOptions {
-    std::vector<std::filesystem::path> includePaths;  // -L, searched after the including file's folder
+    // #include looks beside the including file, beside the scene, in each of
+    // `includePaths` (-L), then in each of `libraryPaths` (POV-Ray's own
+    // include folders: povrayLibraryPaths()).
+    std::vector<std::filesystem::path> includePaths;
+    std::vector<std::filesystem::path> libraryPaths;
     std::vector<Define> defines;                      // -D, declared before the scene runs
     double clock = 0.0;                               // the value of `clock`
+    bool clockOn = false;                             // `clock_on`: the clock was given
     int imageWidth = 320;                             // `image_width` (POV-Ray's default size)
     int imageHeight = 240;                            // `image_height`
     std::size_t maxErrors = 100;                      // then stop: one mistake in a loop repeats
     std::size_t maxLoopIterations = 100'000'000;      // all #while/#for iterations together
+    std::size_t maxArrayElements = 10'000'000;        // in one array
 };
+
+// POV-Ray's include folders where POV-Ray is installed: the Library_Path
+// entries of its configuration (~/.povray/3.7/povray.ini, then
+// /etc/povray/3.7/povray.ini and /usr/local/etc/povray/3.7/povray.ini), then
+// its standard include folder (/usr/share/povray-3.7/include,
+// /usr/local/share/povray-3.7/include); only folders that exist, each once.
+std::vector<std::filesystem::path> povrayLibraryPaths();
 
 // Reads and runs a scene file. Returns nothing when an error was reported.
 std::optional<SceneDescription> interpretFile(const std::filesystem::path& scene,

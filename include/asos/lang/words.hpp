@@ -40,12 +40,16 @@ namespace asos::lang {
     WORD(Declare, "declare") WORD(Local, "local") WORD(Undef, "undef") WORD(Include, "include")             \
     WORD(If, "if") WORD(Ifdef, "ifdef") WORD(Ifndef, "ifndef") WORD(Elseif, "elseif") WORD(Else, "else")       \
     WORD(End, "end") WORD(While, "while") WORD(For, "for") WORD(Version, "version") WORD(Debug, "debug")       \
-    WORD(Warning, "warning") WORD(Error, "error")                                                     \
+    WORD(Warning, "warning") WORD(Error, "error") WORD(Macro, "macro") WORD(Switch, "switch")            \
+    WORD(Case, "case") WORD(Range, "range") WORD(Break, "break") WORD(Default, "default")                 \
+    /* arrays */                                                                                \
+    WORD(Array, "array")                                                                           \
     /* built-in constants */                                                                    \
     WORD(X, "x") WORD(Y, "y") WORD(Z, "z") WORD(T, "t") WORD(U, "u") WORD(V, "v") WORD(Pi, "pi") WORD(Clock, "clock")   \
     WORD(ClockDelta, "clock_delta") WORD(ClockOn, "clock_on") WORD(True, "true") WORD(False, "false")       \
     WORD(On, "on") WORD(Off, "off") WORD(Yes, "yes") WORD(No, "no") WORD(ImageWidth, "image_width")            \
-    WORD(ImageHeight, "image_height")                                                              \
+    WORD(ImageHeight, "image_height") WORD(FrameNumber, "frame_number") WORD(InitialClock, "initial_clock") \
+    WORD(FinalClock, "final_clock") WORD(InitialFrame, "initial_frame") WORD(FinalFrame, "final_frame")   \
     /* functions */                                                                             \
     WORD(Abs, "abs") WORD(Sqrt, "sqrt") WORD(Pow, "pow") WORD(Sin, "sin") WORD(Cos, "cos") WORD(Tan, "tan")       \
     WORD(Asin, "asin") WORD(Acos, "acos") WORD(Atan, "atan") WORD(Atan2, "atan2") WORD(Sinh, "sinh")           \
@@ -55,7 +59,9 @@ namespace asos::lang {
     WORD(Log, "log") WORD(Ln, "ln") WORD(Vlength, "vlength") WORD(Vnormalize, "vnormalize")                 \
     WORD(Vcross, "vcross") WORD(Vdot, "vdot") WORD(Vrotate, "vrotate") WORD(VaxisRotate, "vaxis_rotate")    \
     WORD(Select, "select") WORD(Concat, "concat") WORD(Str, "str") WORD(Chr, "chr") WORD(Strlen, "strlen")     \
-    WORD(Val, "val") WORD(Defined, "defined")                                                         \
+    WORD(Val, "val") WORD(Defined, "defined") WORD(Substr, "substr") WORD(Strcmp, "strcmp")              \
+    WORD(Vstr, "vstr") WORD(Asc, "asc") WORD(Strupr, "strupr") WORD(Strlwr, "strlwr") WORD(Rand, "rand")        \
+    WORD(Seed, "seed") WORD(Dimensions, "dimensions") WORD(DimensionSize, "dimension_size")            \
     /* operators (spelled as written) */                                                        \
     WORD(OpAdd, "+") WORD(OpSub, "-") WORD(OpMul, "*") WORD(OpDiv, "/") WORD(OpNot, "!") WORD(OpLess, "<")        \
     WORD(OpLessEqual, "<=") WORD(OpEqual, "=") WORD(OpNotEqual, "!=") WORD(OpGreaterEqual, ">=")            \

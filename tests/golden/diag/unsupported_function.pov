@@ -1,1 +1,1 @@
-#declare R = rand(seed(42));
+#declare V = vturbulence(2, 0.5, 6, <1, 2, 3>);
