@@ -156,47 +156,59 @@ FormCase randomForm(std::mt19937_64& rng, int kind) {
     return {sphere, apex};
 }
 
+// Runs f(i, seed, c, light, beam, hull) for `count` random beams, every form in
+// turn, each case with its own seed (so that a failing one can be replayed)
+// and random numbers in `rng`.
+template <class F>
+void forEachBeam(std::uint64_t base, int count, std::mt19937_64& rng, F&& f) {
+    for (int i = 0; i < count; ++i) {
+        const std::uint64_t seed = shapetest::splitmix(base + std::uint64_t(i));
+        rng.seed(seed);
+        const FormCase c = randomForm(rng, i % 3);
+        withAreaForm(c.form, [&](const auto& light) {
+            const auto beam = light.beamFrom(c.apex, kPovShadowTolerance);
+            if (!beam) return;
+            const std::optional<BeamHull> hull = beam->hull(kPovShadowTolerance);
+            REQUIRE(hull);
+            f(i, seed, c, light, *beam, *hull);
+        });
+    }
+}
+
 }  // namespace
 
-TEST_CASE("Beam hulls hold every ray of their light form's beam, up to the gap before the light", "[lights][hull][property]") {
+TEST_CASE("Beam hulls hold every ray of their light form's beam, up to the gap before the light",
+          "[lights][hull][property]") {
     std::mt19937_64 rng;
     std::uniform_real_distribution<double> u01(0.0, 1.0);
     const double gap = kPovShadowTolerance;
     int checked = 0;
-    for (int i = 0; i < 600; ++i) {
-        // Each case its own seed, so that a failing one can be replayed.
-        const std::uint64_t seed = shapetest::splitmix(0xbea4a11ull + std::uint64_t(i));
-        rng.seed(seed);
-        const FormCase c = randomForm(rng, i % 3);
-        withAreaForm(c.form, [&](const auto& light) {
-            const auto beam = light.beamFrom(c.apex, gap);
-            if (!beam) return;
-            const std::optional<BeamHull> hull = beam->hull(gap);
-            REQUIRE(hull);
-            // Rays of the whole beam and of its pieces two levels down, to
-            // their corners and inside: every point of each stretch inside
-            // (a box of rounding's size about it is never outside).
-            std::vector<LightPiece> pieces{beam->root()};
-            LightPiece children[4];
-            for (int level = 0; level < 2; ++level) {
-                std::vector<LightPiece> next;
-                for (const LightPiece& p : pieces) {
-                    const int n = beam->split(p, children);
-                    next.insert(next.end(), children, children + n);
-                }
-                pieces.insert(pieces.end(), next.begin(), next.end());
+    forEachBeam(0xbea4a11ull, 600, rng, [&](int i, std::uint64_t seed, const FormCase& c, const auto&,
+                                            const auto& beam, const BeamHull& hull) {
+        // Rays of the whole beam and of its pieces two levels down, to
+        // their corners and inside: every point of each stretch inside
+        // (a box of rounding's size about it is never outside).
+        std::vector<LightPiece> pieces{beam.root()};
+        LightPiece children[4];
+        for (int level = 0; level < 2; ++level) {
+            std::vector<LightPiece> next;
+            for (const LightPiece& p : pieces) {
+                const int n = beam.split(p, children);
+                next.insert(next.end(), children, children + n);
             }
-            for (const LightPiece& p : pieces)
-                for (int k = 0; k < 6; ++k) {
-                    const Vec2 xi = k < 4 ? Vec2(k & 1, k >> 1) : Vec2(u01(rng), u01(rng));
-                    forEachStretchPoint(k == 5 ? p.central : beam->sample(p, xi), gap, gap, 8, [&](const Vec3& x) {
-                        INFO("case " << i << " (seed " << seed << "), " << lightFormName(c.form) << ", piece level " << p.level);
-                        CHECK_FALSE(hull->missesBox(boxAbout(x, 1e-9 * (1.0 + glm::length(x)))));
-                        ++checked;
-                    });
-                }
-        });
-    }
+            pieces.insert(pieces.end(), next.begin(), next.end());
+        }
+        for (const LightPiece& p : pieces)
+            for (int k = 0; k < 6; ++k) {
+                const Vec2 xi = k < 4 ? Vec2(k & 1, k >> 1) : Vec2(u01(rng), u01(rng));
+                forEachStretchPoint(k == 5 ? p.central : beam.sample(p, xi), gap, gap, 8, [&](const Vec3& x) {
+                    INFO("case " << i << " (seed " << seed << "), " << lightFormName(c.form) << ", piece level "
+                                 << p.level);
+                    CHECK_FALSE(hull.missesBox(boxAbout(x, 1e-9 * (1.0 + glm::length(x)))));
+                    ++checked;
+                });
+            }
+    });
     CHECK(checked > 100000);
 }
 
@@ -233,41 +245,33 @@ TEST_CASE("Objects shown outside a beam's hull meet none of its rays (dense rays
     std::uniform_real_distribution<double> u(-1.0, 1.0), u01(0.0, 1.0);
     const double gap = kPovShadowTolerance;
     int outside = 0, beyond = 0, cases = 0;
-    for (int i = 0; i < 3000; ++i) {
-        const std::uint64_t seed = shapetest::splitmix(0xbea4b21ull + std::uint64_t(i));
-        rng.seed(seed);
-        const FormCase c = randomForm(rng, i % 3);
-        withAreaForm(c.form, [&](const auto& light) {
-            const auto beam = light.beamFrom(c.apex, gap);
-            if (!beam) return;
-            const std::optional<BeamHull> hull = beam->hull(gap);
-            REQUIRE(hull);
-            const LightPiece root = beam->root();
-            // The box of the cone, as the tracer takes it.
-            const Bounds3 reach = ConeBoxTest(root.cone).coneBounds();
-            // Objects about the light (just beyond it, just in front of it,
-            // beside it) and about the beam's rays.
-            const Bounds3 lb = light.bounds();
-            const Vec3 near = u01(rng) < 0.6 ? lb.center() + 0.7 * u(rng) * lb.diagonal() +
-                                                   randomUnit(rng) * (0.3 * glm::length(lb.diagonal()) * u01(rng))
-                                             : root.central.ray.at(root.central.distance * u01(rng)) +
-                                                   randomUnit(rng) * (0.5 * u01(rng));
-            const Primitive p = randomPrimitive(rng, near, 0.05 + 0.8 * u01(rng));
-            const bool whole = p.outside(*hull);
-            const bool past = p.outside(hull->beyondLight(reach));
-            ++cases;
-            outside += whole;
-            beyond += past;
-            if (!whole && !past) return;
-            for (int k = 0; k < 400; ++k) {
-                const BeamRay r = beam->sample(root, Vec2(u01(rng), u01(rng)));
-                const double t1 = r.distance - gap;
-                INFO("case " << i << " (seed " << seed << "), " << lightFormName(c.form) << " light, a " << p.kindName()
-                             << (whole ? ", outside the hull" : ", beyond the light"));
-                CHECK_FALSE((gap < t1 && p.intersectAny(r.ray, gap, t1)));
-            }
-        });
-    }
+    forEachBeam(0xbea4b21ull, 3000, rng, [&](int i, std::uint64_t seed, const FormCase& c, const auto& light,
+                                             const auto& beam, const BeamHull& hull) {
+        const LightPiece root = beam.root();
+        // The box of the cone, as the tracer takes it.
+        const Bounds3 reach = ConeBoxTest(root.cone).coneBounds();
+        // Objects about the light (just beyond it, just in front of it,
+        // beside it) and about the beam's rays.
+        const Bounds3 lb = light.bounds();
+        const Vec3 near = u01(rng) < 0.6 ? lb.center() + 0.7 * u(rng) * lb.diagonal() +
+                                               randomUnit(rng) * (0.3 * glm::length(lb.diagonal()) * u01(rng))
+                                         : root.central.ray.at(root.central.distance * u01(rng)) +
+                                               randomUnit(rng) * (0.5 * u01(rng));
+        const Primitive p = randomPrimitive(rng, near, 0.05 + 0.8 * u01(rng));
+        const bool whole = p.outside(hull);
+        const bool past = p.outside(hull.beyondLight(reach));
+        ++cases;
+        outside += whole;
+        beyond += past;
+        if (!whole && !past) return;
+        for (int k = 0; k < 400; ++k) {
+            const BeamRay r = beam.sample(root, Vec2(u01(rng), u01(rng)));
+            const double t1 = r.distance - gap;
+            INFO("case " << i << " (seed " << seed << "), " << lightFormName(c.form) << " light, a " << p.kindName()
+                         << (whole ? ", outside the hull" : ", beyond the light"));
+            CHECK_FALSE((gap < t1 && p.intersectAny(r.ray, gap, t1)));
+        }
+    });
     // Neither answer is vacuous.
     CHECK(outside > cases / 10);
     CHECK(beyond > cases / 20);
