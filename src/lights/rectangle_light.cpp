@@ -87,6 +87,13 @@ BeamRay RectangleLight::Beam::sample(const LightPiece& p, const Vec2& xi) const 
     return apex_.toward(point(p.a0 + xi.x * (p.a1 - p.a0), p.b0 + xi.y * (p.b1 - p.b0)));
 }
 
+std::optional<BeamHull> RectangleLight::Beam::hull(double endGap) const {
+    const Vec3 corners[4] = {point(0.0, 0.0), point(1.0, 0.0), point(1.0, 1.0), point(0.0, 1.0)};
+    double farthest2 = 0.0;
+    for (const Vec3& c : corners) farthest2 = std::max(farthest2, glm::dot(c - apex_.point, c - apex_.point));
+    return BeamHull::over(apex_.point, corners, 4, padUp(std::sqrt(farthest2)), endGap);
+}
+
 double RectangleLight::Beam::nearestLightDistance(const LightPiece& p) const {
     if (!rectangular_) return height_;
     const Vec3 nearest = point(std::clamp(footS_, p.a0, p.a1), std::clamp(footT_, p.b0, p.b1));

@@ -42,6 +42,18 @@ LightPiece SphereLight::Beam::root() const {
     return p;
 }
 
+std::optional<BeamHull> SphereLight::Beam::hull(double endGap) const {
+    // The tangent circle: at d cos^2 alpha along the axis, of radius
+    // d cos alpha sin alpha, padded against rounding.
+    const TangentCone& c = tangent_;
+    const double cosAlpha = std::sqrt(c.cos2Alpha);
+    const Vec3 centre = apex_.point + c.distance * c.cos2Alpha * c.frame.w;
+    const double rim = padUp(c.distance * cosAlpha * c.sinAlpha);
+    const Vec3 square[4] = {centre + rim * (c.frame.u + c.frame.v), centre + rim * (c.frame.v - c.frame.u),
+                            centre - rim * (c.frame.u + c.frame.v), centre + rim * (c.frame.u - c.frame.v)};
+    return BeamHull::over(apex_.point, square, 4, padUp(c.distance * cosAlpha), endGap);
+}
+
 Vec3 SphereLight::Beam::discOffset(double r, const DiscPieceTable::Trig& t) const {
     const double k = tangent_.tanAlpha * r;
     return tangent_.frame.toWorld(k * t.c, k * t.s, 1.0);

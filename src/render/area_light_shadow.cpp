@@ -4,6 +4,7 @@
 #include <cmath>
 #include <type_traits>
 
+#include "asos/accel/cone_box.hpp"
 #include "asos/geometry/beam.hpp"
 #include "asos/geometry/frame.hpp"
 #include "asos/geometry/margins.hpp"
@@ -132,12 +133,32 @@ public:
         rootItems.clear();
         const Cone rootCone = coneOf(root);
         const PreparedCone prepared = preparedCone(root, rootCone);
+        // The beam ends at the light: an object beyond the light wherever the
+        // beam's cone reaches it (within the cone's box) is no occluder
+        // (docs/lights.md, "Where a beam ends"); nor is one outside the
+        // cone's box, which the candidates of a wider cone may hold. Objects
+        // beside the beam are left to the cone, so that a verdict changes
+        // only where an object lies beyond the light. Made for the first
+        // candidate.
+        std::optional<BeamHull> hull;
+        bool hullMade = false;
+        const auto beyondLight = [&](const Primitive& primitive) {
+            if (!hullMade) {
+                hullMade = true;
+                const Bounds3 reach = ConeBoxTest(rootCone).coneBounds();
+                const std::optional<BeamHull> h = beams_.hull(kTolerance);
+                if (h && std::isfinite(l1Norm(reach.lo) + l1Norm(reach.hi))) hull = h->beyondLight(reach);
+            }
+            return hull && primitive.outside(*hull);
+        };
         if (s_.beamCandidates.size() <= q_.lightIndex) s_.beamCandidates.resize(q_.lightIndex + 1);
         s_.beamCandidates[q_.lightIndex].visit(scene_, rootCone, prepared, [&](std::uint32_t object) {
             if (scene_.object(object).noShadow) return;
             if (object == q_.shadedObject && !q_.shadedCanSelfShadow) return;
+            const Primitive& primitive = scene_.primitive(object);
+            if (beyondLight(primitive)) return;
             ++c_.coneTests;
-            const ConeClass k = scene_.primitive(object).classify(prepared);
+            const ConeClass k = primitive.classify(prepared);
             if (k.coverage != Coverage::Miss) rootItems.push_back({object, k});
         });
         // In object order, wherever the candidates came from.
@@ -284,7 +305,11 @@ private:
         // rest, or else from the pyramid about the piece's cone (a sphere's
         // pieces). Detection cannot tell so where the point lies next to the
         // occluder (a box or cone standing on the ground), nor from the
-        // piece's cone, which reaches past a lattice's samples.
+        // piece's cone, which reaches past a lattice's samples. So is an
+        // occluder outside the hull of the point and the lattice's corner
+        // points (BeamHull), where the samples' rays run: beside the piece
+        // within its cone (a circle about an oblong piece holds twice its
+        // area), or beyond the light.
         const std::optional<LightLattice> lattice = beams_.lattice(piece, depth);
         const bool latticed = lattice.has_value();
         Vec3 corners[4];
@@ -300,11 +325,27 @@ private:
         } else {
             cornerCount = pyramidAbout(piece.cone, corners);
         }
+        std::optional<BeamHull> hull;
+        bool hullMade = !latticed;
+        const auto outsideHull = [&](const Primitive& primitive) {
+            if (!hullMade) {
+                hullMade = true;
+                // The corner points in order around the lattice.
+                const Vec3& a = origin_.apex;
+                const Vec3 base[4] = {a + corners[0], a + corners[1], a + corners[cornerCount - 1],
+                                      a + corners[cornerCount - 2]};
+                double reach2 = 0.0;
+                for (int k = 0; k < cornerCount; ++k) reach2 = std::max(reach2, dot3(corners[k], corners[k]));
+                hull = BeamHull::over(a, base, cornerCount, padUp(std::sqrt(reach2)), kTolerance);
+            }
+            return hull && primitive.outside(*hull);
+        };
         std::vector<AreaLightScratch::SampleOccluder>& list = s_.sampleOccluders;
         list.clear();
         for (std::uint32_t i = 0; i < count; ++i) {
             const Primitive& primitive = scene_.primitive(occluders[i].object);
             if (cornerCount > 0 && primitive.raysLeave(origin_.apex, corners, cornerCount)) continue;
+            if (outsideHull(primitive)) continue;
             list.push_back({&primitive, primitive.originToLocal(origin_.apex)});
         }
         count = static_cast<std::uint32_t>(list.size());

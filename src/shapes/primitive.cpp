@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <type_traits>
 
 #include "asos/geometry/margins.hpp"
 
@@ -216,6 +217,18 @@ bool Primitive::raysLeave(const Vec3& worldOrigin, const Vec3* directions, int c
         rays.directions[i] =
             frame_.kind == LocalFrame::Kind::Translate ? directions[i] : frame_.localFromWorld * directions[i];
     return visit([&](const auto& shape) { return shape.raysLeave(rays); });
+}
+
+bool Primitive::outside(const BeamHull& hull) const {
+    if (bounded()) return hull.missesBox(worldBounds_);
+    return visit([&]<class S>(const S& shape) {
+        if constexpr (std::is_same_v<S, Plane>) {
+            return hull.missesPlane(frame_.normalToWorld(shape.normal()),
+                                    frame_.pointToWorld(shape.distance() * shape.normal()));
+        } else {
+            return false;
+        }
+    });
 }
 
 bool Primitive::canShadowItself() const {

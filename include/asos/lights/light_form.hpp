@@ -18,6 +18,7 @@
 #include <utility>
 #include <variant>
 
+#include "asos/geometry/beam_hull.hpp"
 #include "asos/geometry/bounds.hpp"
 #include "asos/lights/light_lattice.hpp"
 #include "asos/lights/light_piece.hpp"
@@ -38,7 +39,7 @@ struct LightPieceSink {
 // is about a piece the beam made.
 template <class B>
 concept AreaLightBeam = requires(const B& beam, const LightPiece& piece, LightPiece* out, const Vec2& xi,
-                                 const Vec3& direction, BeamRay* rays, int level) {
+                                 const Vec3& direction, BeamRay* rays, int level, double gap) {
     // How many pieces one split makes.
     { B::kChildren } -> std::convertible_to<int>;
     // Whether the paper's "Proximity to One Edge" halving holds for a split.
@@ -59,6 +60,9 @@ concept AreaLightBeam = requires(const B& beam, const LightPiece& piece, LightPi
     { beam.lattice(piece, level) } -> std::same_as<std::optional<LightLattice>>;
     // A ray inside the piece from two numbers in [0, 1), uniform over it.
     { beam.sample(piece, xi) } -> std::same_as<BeamRay>;
+    // The region its rays run through, each stopping this far before the
+    // light (BeamHull; none where it is degenerate).
+    { beam.hull(gap) } -> std::same_as<std::optional<BeamHull>>;
     // A piece's share of the light at a level, exactly. Inline: it is asked
     // for every sample.
     { beam.share(level) } -> std::same_as<double>;

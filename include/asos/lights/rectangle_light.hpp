@@ -18,6 +18,7 @@
 #include <optional>
 #include <utility>
 
+#include "asos/geometry/beam_hull.hpp"
 #include "asos/geometry/bounds.hpp"
 #include "asos/geometry/margins.hpp"
 #include "asos/lights/beam_apex.hpp"
@@ -74,6 +75,8 @@ public:
     }
 
     BeamRay sample(const LightPiece& piece, const Vec2& xi) const;
+    // The pyramid over its corners.
+    std::optional<BeamHull> hull(double endGap) const;
     double share(int level) const { return exactShare(2 * level); }  // 4^-level
     // The distance to the apex's foot clamped to the piece; for other
     // parallelograms a lower bound, the height above the plane.

@@ -14,6 +14,7 @@
 #include <optional>
 #include <utility>
 
+#include "asos/geometry/beam_hull.hpp"
 #include "asos/geometry/bounds.hpp"
 #include "asos/geometry/margins.hpp"
 #include "asos/lights/beam_apex.hpp"
@@ -75,6 +76,12 @@ public:
     // From the first number.
     BeamRay sample(const LightPiece& piece, const Vec2& xi) const {
         return apex_.toward(corner_ + (piece.a0 + xi.x * (piece.a1 - piece.a0)) * edgeA_);
+    }
+    // The triangle of its ends.
+    std::optional<BeamHull> hull(double endGap) const {
+        const Vec3 ends[2] = {corner_, corner_ + edgeA_};
+        const double reach = std::max(glm::length(ends[0] - apex_.point), glm::length(ends[1] - apex_.point));
+        return BeamHull::over(apex_.point, ends, 2, padUp(reach), endGap);
     }
     double share(int level) const { return exactShare(level); }  // 2^-level
     double nearestLightDistance(const LightPiece& piece) const {

@@ -19,6 +19,7 @@
 #include <optional>
 #include <utility>
 
+#include "asos/geometry/beam_hull.hpp"
 #include "asos/geometry/bounds.hpp"
 #include "asos/geometry/concentric_disc.hpp"
 #include "asos/geometry/margins.hpp"
@@ -89,6 +90,10 @@ public:
         return tangent_.ray(apex_.point,
                             concentricDisc(piece.a0 + xi.x * (piece.a1 - piece.a0), piece.b0 + xi.y * (piece.b1 - piece.b0)));
     }
+    // The rays end on the sphere's near side, the cap inside the tangent
+    // circle, within the tangent length of the apex: the pyramid over the
+    // square about that circle holds them.
+    std::optional<BeamHull> hull(double endGap) const;
     double share(int level) const { return exactShare(2 * level); }  // 4^-level
     double nearestLightDistance(const LightPiece& piece) const {
         const double r = innerRadius(DiscCell{piece.a0, piece.a1, piece.b0, piece.b1});

@@ -11,6 +11,7 @@
 #include <optional>
 #include <variant>
 
+#include "asos/geometry/beam_hull.hpp"
 #include "asos/geometry/bounds.hpp"
 #include "asos/geometry/cone.hpp"
 #include "asos/geometry/hit.hpp"
@@ -101,6 +102,11 @@ public:
     // plane is found. (The point samples of an area light's piece:
     // area_light_shadow.cpp.)
     bool raysLeave(const Vec3& worldOrigin, const Vec3* directions, int count) const;
+
+    // Whether the primitive lies outside the region a shadow beam's rays run
+    // through (BeamHull): its world box does, or, for a plane, the region
+    // lies on one side of it. Conservative: false where neither shows it.
+    bool outside(const BeamHull& hull) const;
 
     // Whether the primitive can cast a shadow on itself where it faces a
     // light: a surface neither convex nor flat (an open cylinder or cone).
