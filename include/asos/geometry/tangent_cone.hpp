@@ -20,6 +20,8 @@ struct TangentCone {
     double cos2Alpha = 1.0;       // cos^2 alpha, as (d - r)(d + r) / d^2
     // Requires distance > radius > 0.
     static TangentCone make(const Vec3& point, const Vec3& centre, double radius);
+    // The cone's half-angle, alpha.
+    double halfAngle() const { return std::asin(sinAlpha); }
     // The ray from `origin` (the point) through the disc point (x, y), with
     // rho2 = x^2 + y^2 <= 1 and rim = sqrt(1 - rho2) given: the direction
     // (w + tan alpha (x u + y v)) cos psi, cos psi = 1 / sqrt(1 + tan^2 alpha
