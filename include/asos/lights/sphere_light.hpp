@@ -1,8 +1,9 @@
 #pragma once
 // A spherical light (paper: "Spherical Light Sources", Figure 5b): a sphere
-// of `radius` about `centre` (`area_light` with `circular orient`: POV-Ray's
-// disc that always faces the point, here the sphere of its diameter). As
-// every light form (lights/light_form.hpp) it answers:
+// of `radius` about `centre` (`area_light` with `circular orient` and the
+// paper's emitter, `asos { emitter panel }`: the sphere of the diameter of
+// POV-Ray's disc, lights/oriented_disc_light.hpp). As every light form
+// (lights/light_form.hpp) it answers:
 //   - its beam from a point: the cone tangent to the sphere, split into four
 //     pieces of equal area of its apparent disc (the concentric images of a
 //     square cell's quarters, geometry/concentric_disc.hpp), each bounded by
