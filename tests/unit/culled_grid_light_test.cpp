@@ -16,6 +16,29 @@
 using namespace asos;
 using namespace asos::testing;
 
+namespace {
+
+// A floor, a sphere of radius 0.8 at height 3 and an area light at height 6
+// with first axis (2, 0, 0), `axis2` and counts n1 x n2, circular orient or
+// not.
+SceneDescription sphereOverFloor(const Vec3& axis2, int n1, int n2, bool orient) {
+    SceneDescription d;
+    d.objects.push_back(makeObject(PlaneShape{{0, 1, 0}, 0.0}, litTexture(Vec3(1.0))));
+    d.objects.push_back(makeObject(SphereShape{{0, 3, 0}, 0.8}, litTexture(Vec3(1.0))));
+    Light light = pointLight({0, 6, 0});
+    AreaLight area;
+    area.axis1 = {2, 0, 0};
+    area.axis2 = axis2;
+    area.size1 = n1;
+    area.size2 = n2;
+    area.circular = area.orient = orient;
+    light.area = area;
+    d.lights.push_back(light);
+    return d;
+}
+
+}  // namespace
+
 TEST_CASE("The culled grid: the grid's samples, without the rays one cone test decides", "[lights]") {
     const Vec3 up(0, 1, 0);
     // Axes for a rectangle, a segment (second axis of zero length) and a sphere (orient).
@@ -25,19 +48,10 @@ TEST_CASE("The culled grid: the grid's samples, without the rays one cone test d
     };
     const Form forms[] = {{{0, 0, 2}, false}, {{0, 0, 0}, false}, {{0, 0, 2}, true}};
     for (const Form& form : forms) {
-        SceneDescription d;
-        d.objects.push_back(makeObject(PlaneShape{{0, 1, 0}, 0.0}, litTexture(Vec3(1.0))));
-        d.objects.push_back(makeObject(SphereShape{{0, 3, 0}, 0.8}, litTexture(Vec3(1.0))));
-        Light light = pointLight({0, 6, 0});
-        AreaLight area;
-        area.axis1 = {2, 0, 0};
-        area.axis2 = form.axis2;
-        area.size1 = area.size2 = 6;
-        area.jitter = true;
-        area.circular = area.orient = form.orient;
-        light.area = area;
+        SceneDescription d = sphereOverFloor(form.axis2, 6, 6, form.orient);
+        Light& light = d.lights[0];
+        light.area->jitter = true;
         light.asos.emitter = LightEmitter::Panel;
-        d.lights.push_back(light);
         const std::unique_ptr<Scene> scene = buildScene(d);
         const LightModel model = makeLightModel(light, AsosSettings{});
         REQUIRE(model.isArea());
@@ -78,18 +92,7 @@ TEST_CASE("The culled reference of POV-Ray's emitter: its converged model, witho
     };
     const Form forms[] = {{{0, 0, 2}, 64, false}, {{0, 0, 0}, 1, false}, {{0, 0, 2}, 64, true}};
     for (const Form& form : forms) {
-        SceneDescription d;
-        d.objects.push_back(makeObject(PlaneShape{{0, 1, 0}, 0.0}, litTexture(Vec3(1.0))));
-        d.objects.push_back(makeObject(SphereShape{{0, 3, 0}, 0.8}, litTexture(Vec3(1.0))));
-        Light light = pointLight({0, 6, 0});
-        AreaLight area;
-        area.axis1 = {2, 0, 0};
-        area.axis2 = form.axis2;
-        area.size1 = form.n2 == 1 ? 1024 : 64;
-        area.size2 = form.n2;
-        area.circular = area.orient = form.orient;
-        light.area = area;
-        d.lights.push_back(light);
+        const SceneDescription d = sphereOverFloor(form.axis2, form.n2 == 1 ? 1024 : 64, form.n2, form.orient);
         const std::unique_ptr<Scene> scene = buildScene(d);
         const AsosSettings fine{1.0 / 256.0, 8, false};
         LightSetup setup;
