@@ -44,6 +44,7 @@ ASOS_KEYWORD(kw_orient, "orient")
 ASOS_KEYWORD(kw_fade_distance, "fade_distance")
 ASOS_KEYWORD(kw_fade_power, "fade_power")
 ASOS_KEYWORD(kw_shadowless, "shadowless")
+ASOS_KEYWORD(kw_area_illumination, "area_illumination")
 // modifiers
 ASOS_KEYWORD(kw_open, "open")
 ASOS_KEYWORD(kw_pigment, "pigment")
@@ -73,6 +74,9 @@ ASOS_KEYWORD(kw_ambient_light, "ambient_light")
 ASOS_KEYWORD(kw_asos, "asos")
 ASOS_KEYWORD(kw_eps, "eps")
 ASOS_KEYWORD(kw_max, "max")
+ASOS_KEYWORD(kw_emitter, "emitter")
+ASOS_KEYWORD(kw_povray, "povray")
+ASOS_KEYWORD(kw_panel, "panel")
 // colours
 struct kw_color : tok<sor<TAO_PEGTL_KEYWORD("color"), TAO_PEGTL_KEYWORD("colour")>> {};
 // directives (after '#')

@@ -26,11 +26,16 @@ struct matrix_values : if_must<vector_open, matrix_components, matrix_close> {};
 struct matrix_item : if_must<kw_matrix, matrix_values> {};
 struct transform_item : sor<translate_item, rotate_item, scale_item, matrix_item> {};
 
-// --- asos { eps E  max M  jitter on|off } ----------------------------------------
+// --- asos { eps E  max M  jitter on|off  emitter povray|panel } -------------------
+// `emitter` is a light's (the interpreter refuses it elsewhere).
 struct eps_item : if_must<kw_eps, float_value> {};
 struct max_item : if_must<kw_max, float_value> {};
 struct asos_jitter_item : if_must<kw_jitter, float_value> {};
-struct asos_entry : sor<eps_item, max_item, asos_jitter_item> {};
+struct emitter_povray : kw_povray {};
+struct emitter_panel : kw_panel {};
+struct emitter_kind : sor<emitter_povray, emitter_panel> {};
+struct emitter_item : if_must<kw_emitter, emitter_kind> {};
+struct asos_entry : sor<eps_item, max_item, asos_jitter_item, emitter_item> {};
 struct asos_end : rbrace {};
 struct asos_block : if_must<kw_asos, block_open, entries<asos_entry>, asos_end> {};
 

@@ -81,10 +81,15 @@ struct orient_item : kw_orient {};
 struct fade_distance_item : if_must<kw_fade_distance, float_value> {};
 struct fade_power_item : if_must<kw_fade_power, float_value> {};
 struct shadowless_item : kw_shadowless {};
+// area_illumination [on|off]: POV-Ray's Allow_Float(1.0). Our `asos` is no
+// reserved word, so it is not taken for the value.
+struct area_illumination_start : kw_area_illumination {};
+struct area_illumination_value : seq<expression> {};  // optional: no message of its own
+struct area_illumination_item : seq<area_illumination_start, opt<not_at<kw_asos>, area_illumination_value>> {};
 struct cylinder_light : kw_cylinder {};  // POV-Ray's cylindrical light: not ours
 struct light_entry
     : sor<area_light_item, adaptive_item, jitter_item, circular_item, orient_item, fade_distance_item,
-          fade_power_item, shadowless_item, transform_item, asos_block, cylinder_light,
+          fade_power_item, shadowless_item, area_illumination_item, transform_item, asos_block, cylinder_light,
           unsupported_item> {};
 struct light_end : rbrace {};
 struct light_source_block : if_must<kw_light_source, block_open, light_position, light_colour,

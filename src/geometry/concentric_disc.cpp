@@ -19,6 +19,13 @@ Vec2 concentricDisc(double s, double t) {
     return {r * std::cos(phi), r * std::sin(phi)};
 }
 
+Vec2 povrayDisc(double s, double t) {
+    const double a = 2.0 * s - 1.0, b = 2.0 * t - 1.0;
+    if (a == 0.0 && b == 0.0) return Vec2(0.0);
+    const double scale = std::max(std::abs(a), std::abs(b)) / std::sqrt(a * a + b * b);
+    return {a * scale, b * scale};
+}
+
 double innerRadius(const DiscCell& c) {
     // The radius is the largest coordinate's size (square rings to circles),
     // least at the cell's nearest point to the centre.
@@ -26,7 +33,7 @@ double innerRadius(const DiscCell& c) {
     return std::max(gap(2.0 * c.s0 - 1.0, 2.0 * c.s1 - 1.0), gap(2.0 * c.t0 - 1.0, 2.0 * c.t1 - 1.0));
 }
 
-PolarBounds polarBounds(const DiscCell& c) {
+PolarBounds polarBounds(const DiscCell& c, DiscMap map) {
     const double a[2] = {2.0 * c.s0 - 1.0, 2.0 * c.s1 - 1.0}, b[2] = {2.0 * c.t0 - 1.0, 2.0 * c.t1 - 1.0};
     PolarBounds p;
     p.r0 = innerRadius(c);
@@ -34,10 +41,11 @@ PolarBounds polarBounds(const DiscCell& c) {
     // A cell across an axis (the whole square): every angle.
     if ((a[0] < 0.0 && a[1] > 0.0) || (b[0] < 0.0 && b[1] > 0.0)) return p;
     // The quadrant, and the corners turned into the first one by quarter
-    // turns (the map commutes with them); there the angle is (pi/4) y/x below
-    // the diagonal and pi/2 - (pi/4) x/y above it, growing with atan2(y, x),
-    // so a convex cell's angles lie between its corners' (the centre, where
-    // it is a corner, has none).
+    // turns (both maps commute with them); there the concentric map's angle
+    // is (pi/4) y/x below the diagonal and pi/2 - (pi/4) x/y above it,
+    // growing with atan2(y, x), and POV-Ray's is atan2(y, x) itself, so a
+    // convex cell's angles lie between its corners' (the centre, where it is
+    // a corner, has none).
     const double ac = a[0] + a[1], bc = b[0] + b[1];
     const int quadrant = ac > 0.0 ? (bc > 0.0 ? 0 : 3) : (bc > 0.0 ? 1 : 2);
     p.phi0 = 2.0 * kPi;
@@ -52,7 +60,9 @@ PolarBounds polarBounds(const DiscCell& c) {
             default: break;
         }
         if (x == 0.0 && y == 0.0) continue;
-        const double within = x >= y ? 0.25 * kPi * (y / x) : 0.5 * kPi - 0.25 * kPi * (x / y);
+        const double within = map == DiscMap::Povray ? std::atan2(y, x)
+                              : x >= y               ? 0.25 * kPi * (y / x)
+                                                     : 0.5 * kPi - 0.25 * kPi * (x / y);
         const double phi = 0.5 * kPi * quadrant + within;
         p.phi0 = std::min(p.phi0, phi);
         p.phi1 = std::max(p.phi1, phi);

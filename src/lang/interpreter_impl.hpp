@@ -307,7 +307,8 @@ private:
     void applyTransform(ObjectTree& tree, const Transform& m);
     Light evalLight(const Node& block);
     void applyGlobalSettings(const Node& block);
-    AsosOptions evalAsos(const Node& block, AsosOptions start);
+    // `forLight`: the block is a light's, where `emitter` belongs.
+    AsosOptions evalAsos(const Node& block, AsosOptions start, bool forLight = false);
     Transform evalTransformItem(const Node& item);
 
     const InterpreterOptions& options_;

@@ -310,7 +310,7 @@ void Interpreter::applyObjectModifier(ObjectTree& tree, const Node& n, bool isSh
     case Word::Asos:
         if (isLight) {
             auto light = std::make_shared<Light>(*tree.light);
-            light->asos = evalAsos(n, light->asos);
+            light->asos = evalAsos(n, light->asos, true);
             tree.light = std::move(light);
         } else {
             tree.asos = evalAsos(n, tree.asos);
@@ -508,7 +508,8 @@ Light Interpreter::evalLight(const Node& block) {
             break;
         }
         case Word::Shadowless: l.shadowless = true; break;
-        case Word::Asos: l.asos = evalAsos(n, l.asos); break;
+        case Word::AreaIllumination: l.areaIllumination = n.count == 0 || evalBool(n[0]); break;
+        case Word::Asos: l.asos = evalAsos(n, l.asos, true); break;
         default: fail(n, "this is not a light_source item");
         }
         if (l.area) {
@@ -636,7 +637,7 @@ void Interpreter::applyGlobalSettings(const Node& block) {
     runEntries(block.children(), EntryHandler(entry));
 }
 
-AsosOptions Interpreter::evalAsos(const Node& block, AsosOptions start) {
+AsosOptions Interpreter::evalAsos(const Node& block, AsosOptions start, bool forLight) {
     auto entry = [&](const Node& n) {
         switch (n.word) {
         case Word::Eps: {
@@ -653,6 +654,10 @@ AsosOptions Interpreter::evalAsos(const Node& block, AsosOptions start) {
             break;
         }
         case Word::Jitter: start.jitter = evalBool(n[0]); break;
+        case Word::Emitter:
+            if (!forLight) fail(n, "emitter is an option of a light_source's asos block");
+            start.emitter = n[0].word == Word::Panel ? LightEmitter::Panel : LightEmitter::Povray;
+            break;
         default: fail(n, "this is not an asos option");
         }
     };

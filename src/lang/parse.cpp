@@ -597,6 +597,9 @@ template <> struct action<g::scale_item> : ItemAction<Word::Scale, 1> {};
 template <> struct action<g::eps_item> : ItemAction<Word::Eps, 1> {};
 template <> struct action<g::max_item> : ItemAction<Word::Max, 1> {};
 template <> struct action<g::asos_jitter_item> : ItemAction<Word::Jitter, 1> {};
+template <> struct action<g::emitter_povray> : ItemAction<Word::Povray, 0> {};
+template <> struct action<g::emitter_panel> : ItemAction<Word::Panel, 0> {};
+template <> struct action<g::emitter_item> : ItemAction<Word::Emitter, 1> {};
 template <> struct action<g::ambient_item> : ItemAction<Word::Ambient, 1> {};
 template <> struct action<g::diffuse_item> : ItemAction<Word::Diffuse, 1> {};
 template <> struct action<g::brilliance_item> : ItemAction<Word::Brilliance, 1> {};
@@ -617,6 +620,18 @@ template <> struct action<g::orient_item> : ItemAction<Word::Orient, 0> {};
 template <> struct action<g::fade_distance_item> : ItemAction<Word::FadeDistance, 1> {};
 template <> struct action<g::fade_power_item> : ItemAction<Word::FadePower, 1> {};
 template <> struct action<g::shadowless_item> : ItemAction<Word::Shadowless, 0> {};
+// area_illumination with or without its value.
+template <>
+struct action<g::area_illumination_start> {
+    static void apply0(Builder& b) { b.open(); }
+};
+template <>
+struct action<g::area_illumination_item> {
+    template <typename Input>
+    static void apply(const Input& in, Builder& b) {
+        b.close(NodeKind::Item, Word::AreaIllumination, posOf(in));
+    }
+};
 template <> struct action<g::perspective_item> : ItemAction<Word::Perspective, 0> {};
 template <> struct action<g::orthographic_item> : ItemAction<Word::Orthographic, 0> {};
 template <> struct action<g::location_item> : ItemAction<Word::Location, 1> {};

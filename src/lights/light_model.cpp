@@ -12,12 +12,22 @@ bool active(const Vec3& axis, int count) { return count > 1 && glm::length(axis)
 
 }  // namespace
 
+double lightFade(double fadeDistance, double fadePower, double distance) {
+    if (!(fadePower > 0.0)) return 1.0;
+    if (std::fabs(fadeDistance) >= kPovEpsilon) return 2.0 / (1.0 + std::pow(distance / fadeDistance, fadePower));
+    return std::pow(distance, -fadePower);
+}
+
 LightModel makeLightModel(const Light& light, const AsosSettings& sceneSettings,
                           std::optional<int> samples) {
     LightModel m;
     m.position = light.position;
     m.color = light.color;
     m.shadowless = light.shadowless;
+    m.emitter = light.asos.emitter.value_or(LightEmitter::Povray);
+    m.areaIllumination = light.areaIllumination;
+    m.fadeDistance = light.fadeDistance;
+    m.fadePower = light.fadePower;
     m.asos = sceneSettings.refinedBy(light.asos);
     if (!light.area) return m;
     const AreaLight& a = *light.area;
@@ -32,11 +42,13 @@ LightModel makeLightModel(const Light& light, const AsosSettings& sceneSettings,
     };
     if (a.orient) {
         // POV-Ray's oriented disc: circular, facing the point, of the first
-        // axis's length. Here a sphere of that diameter (paper: "Spherical
-        // Light Sources").
+        // axis's length; the paper's sphere of that diameter with its
+        // emitter ("Spherical Light Sources"). checkLight refused a count of
+        // 1 along one axis.
         const double radius = 0.5 * glm::length(a.axis1);
         if (!(radius > 0.0)) return m;
-        m.form = SphereLight{light.position, radius};
+        if (m.emitter == LightEmitter::Panel) m.form = SphereLight{light.position, radius};
+        else m.form = OrientedDiscLight{light.position, radius};
         counts(a.size1, a.size2);
         return m;
     }
@@ -67,16 +79,34 @@ bool checkLight(const Light& light, Diagnostics& diagnostics) {
               ", not " + std::to_string(a.size1) + " and " + std::to_string(a.size2));
     if (a.adaptive && *a.adaptive < 0)
         error("adaptive must not be negative, not " + std::to_string(*a.adaptive));
+    // POV-Ray drops circular where a count is 1 (with a warning).
+    const bool oneAlong = a.size1 <= 1 || a.size2 <= 1;
     if (a.orient) {
         if (!a.circular)
             diagnostics.warning(light.loc,
                                 "orient is used with circular area lights only (as in POV-Ray): this "
-                                "area light is circular, a spherical light");
+                                "area light is circular");
         const double l1 = glm::length(a.axis1), l2 = glm::length(a.axis2);
         if (std::abs(l1 - l2) > kPovEpsilon)  // as POV-Ray's parser calls them equal
             diagnostics.warning(light.loc,
                                 "with orient the two axes of an area light should be of equal "
-                                "length: the first axis's length is the sphere's diameter");
+                                "length: the first axis's length is the disc's diameter");
+        if (a.size1 != a.size2)
+            diagnostics.warning(light.loc,
+                                "with orient the two counts of an area light should be equal (as "
+                                "POV-Ray warns)");
+        if (oneAlong && (a.size1 > 1 || a.size2 > 1))
+            error("a circular orient area light needs more than one point along each axis: with a "
+                  "count of 1, POV-Ray drops circular and turns a line toward each point, which "
+                  "asos does not render");
+        else if (oneAlong)
+            diagnostics.warning(light.loc,
+                                "circular area lights must have more than one sample along each axis "
+                                "(as POV-Ray warns): this one is a point light");
+    } else if (a.circular && oneAlong) {
+        diagnostics.warning(light.loc,
+                            "circular area lights must have more than one sample along each axis (as "
+                            "POV-Ray warns): this one is not circular");
     } else if (a.circular) {
         error("circular area lights without orient (flat discs) are not rendered by asos: add "
               "orient for a spherical light, or drop circular for a rectangular one");

@@ -9,6 +9,7 @@
 #include "asos/geometry/frame.hpp"
 #include "asos/geometry/margins.hpp"
 #include "asos/render/convex_lattice.hpp"
+#include "asos/render/grid_light.hpp"
 #include "asos/shapes/local_cone.hpp"
 
 namespace asos {
@@ -63,6 +64,21 @@ bool belowHorizon(const Vec3& normal, const LightPiece& piece) {
     return angleBetween(normal, piece.cone.axis) - piece.cone.halfAngle >= 0.5 * kPi;
 }
 
+// Every direction of the piece's cone is above the tangent plane, past
+// rounding: a convex or flat shaded surface cannot meet a ray through it.
+bool aboveHorizon(const Vec3& normal, const LightPiece& piece) {
+    if (piece.tanHalf >= 0.0) {
+        const double t = piece.tanHalf;
+        return glm::dot(normal, piece.cone.axis) > t / std::sqrt(1.0 + t * t) + kThousandsOfUlps;
+    }
+    return angleBetween(normal, piece.cone.axis) + piece.cone.halfAngle < 0.5 * kPi - kThousandsOfUlps;
+}
+
+// How the light of a piece's lit rays is gathered: POV-Ray's emitter counts
+// their shares (the visible fraction); the paper's sums them as diffuse
+// light (WeightedDiffuseSum) or keeps them as samples.
+enum class Gather { Fraction, Diffuse, Samples };
+
 // The edges of the square pyramid about a cone (its faces tangent to it), so
 // that every direction of the cone is a non-negative combination of them
 // (Primitive::raysLeave): written to out[], four, or none for a cone of a
@@ -99,6 +115,10 @@ PreparedCone preparedCone(const LightPiece& piece, const Cone& cone) {
 // The shadow of one area light at one point: detection, then subdivision
 // of the marginal sub-beams level by level. One instance per light form:
 // the form is known once per shaded point, and nothing below asks it again.
+// With POV-Ray's emitter it measures the share of the light that reaches
+// the point (visible()): a lit piece counts its share, with no refinement,
+// and nothing is left out for lying below the surface's horizon (the shaded
+// object is an occluder there); with the paper's it makes the samples.
 template <AreaLightForm Form>
 class BeamShadow {
 public:
@@ -116,17 +136,28 @@ public:
           origin_(origin),
           beams_(beams),
           s_(scratch),
-          c_(counters) {
+          c_(counters),
+          povray_(model.emitter == LightEmitter::Povray) {
         jitterKey_ = mix64(query.key ^ mix64(0xa5ea11u + query.lightIndex));
     }
 
+    // POV-Ray's emitter: the share of the light that reaches the point.
+    double visible() const { return visible_; }
+
     void run() {
         const LightPiece root = beams_.root();
-        if (belowHorizon(q_.normal, root)) return;
+        if (!povray_ && belowHorizon(q_.normal, root)) return;
         if (model_.shadowless) {
-            refineLit(root);
+            litPiece(root);
             return;
         }
+        // The shaded object is left out where it cannot shadow itself (a
+        // convex or flat surface, toward light above its horizon); with
+        // POV-Ray's emitter, light below the horizon counts too, and there
+        // the object is an occluder like any other until a piece is wholly
+        // above (from behind the surface, its tangent plane already cuts the
+        // rays).
+        const bool shadedLeftOut = !povray_ || origin_.behind || aboveHorizon(q_.normal, root);
 
         // Detection: the occluders of the whole beam.
         std::vector<Item>& rootItems = s_.items[0];
@@ -154,7 +185,7 @@ public:
         if (s_.beamCandidates.size() <= q_.lightIndex) s_.beamCandidates.resize(q_.lightIndex + 1);
         s_.beamCandidates[q_.lightIndex].visit(scene_, rootCone, prepared, [&](std::uint32_t object) {
             if (scene_.object(object).noShadow) return;
-            if (object == q_.shadedObject && !q_.shadedCanSelfShadow) return;
+            if (object == q_.shadedObject && !q_.shadedCanSelfShadow && shadedLeftOut) return;
             const Primitive& primitive = scene_.primitive(object);
             if (beyondLight(primitive)) return;
             ++c_.coneTests;
@@ -166,7 +197,7 @@ public:
         c_.countShadowPyray(0);
         const auto rootCount = static_cast<std::uint32_t>(rootItems.size());
         switch (verdict(rootItems, 0, rootCount, root, rootCone)) {
-            case Verdict::Lit: refineLit(root); return;
+            case Verdict::Lit: litPiece(root); return;
             case Verdict::Blocked: return;
             case Verdict::Marginal: break;
         }
@@ -218,9 +249,9 @@ public:
                 for (const Node& n : levelNodes) {
                     if (jitter) {
                         const BeamRay ray = beams_.sample(n.piece, randomPoint(n.piece));
-                        if (!rayBlocked(ray, items, n.first, n.count, nullptr)) emit(ray, share);
+                        if (!rayBlocked(ray, items, n.first, n.count, nullptr)) litRay(ray, share);
                     } else if (traced ? !n.blocked : !rayBlocked(n.piece.central, items, n.first, n.count, nullptr)) {
-                        emit(n.piece.central, share);
+                        litRay(n.piece.central, share);
                     }
                 }
                 break;
@@ -256,12 +287,15 @@ public:
                 const int count = beams_.split(n.piece, children);
                 for (int i = 0; i < count; ++i) {
                     const LightPiece& child = children[i];
-                    if (belowHorizon(q_.normal, child)) continue;
+                    if (!povray_ && belowHorizon(q_.normal, child)) continue;
                     c_.countShadowPyray(childLevel);
                     const auto first = static_cast<std::uint32_t>(childItems.size());
                     const Cone cone = coneOf(child);
                     const PreparedCone childPrepared = preparedCone(child, cone);
+                    // The shaded object, an occluder below the horizon only.
+                    const bool childAbove = povray_ && aboveHorizon(q_.normal, child);
                     for (std::uint32_t j = n.first; j < n.first + n.count; ++j) {
+                        if (childAbove && items[j].object == q_.shadedObject && !q_.shadedCanSelfShadow) continue;
                         ++c_.coneTests;
                         const ConeClass k = scene_.primitive(items[j].object).classify(childPrepared);
                         if (k.coverage != Coverage::Miss) childItems.push_back({items[j].object, k});
@@ -270,7 +304,7 @@ public:
                     switch (verdict(childItems, first, found, child, cone)) {
                         case Verdict::Lit:
                             childItems.resize(first);
-                            refineLit(child);
+                            litPiece(child);
                             break;
                         case Verdict::Blocked: childItems.resize(first); break;
                         case Verdict::Marginal: childNodes.push_back({child, first, found, false}); break;
@@ -355,15 +389,20 @@ private:
         // off), the lit samples' sum is kept in locals: emitAbove's and
         // WeightedDiffuseSum::add's operations in their order, written back
         // once per lattice.
-        const bool summed = q_.diffuseOnly && !origin_.behind;
+        const Gather gather = povray_ ? Gather::Fraction
+                              : q_.diffuseOnly && !origin_.behind ? Gather::Diffuse
+                                                                  : Gather::Samples;
         WeightedDiffuseSum& out = s_.diffuseSum;
         double sumX = out.sum.x, sumY = out.sum.y, sumZ = out.sum.z, sumDistance = out.distance,
                total = out.total;
         std::size_t emitted = out.count;
-        // A lit sample's light, above the horizon.
-        const auto lit = [&](const BeamRay& ray, auto summedHere) __attribute__((always_inline)) {
+        std::uint64_t litCount = 0;
+        // A lit sample's light (above the horizon with the paper's emitter).
+        const auto lit = [&](const BeamRay& ray, auto gatherHere) __attribute__((always_inline)) {
             const Vec3& dir = ray.ray.dir;
-            if constexpr (decltype(summedHere)::value) {
+            if constexpr (decltype(gatherHere)::value == Gather::Fraction) {
+                ++litCount;
+            } else if constexpr (decltype(gatherHere)::value == Gather::Diffuse) {
                 const double k = share * beams_.emission(dir);
                 const double distance = std::max(ray.distance, 0.0);
                 sumX += k * dir.x;
@@ -382,11 +421,11 @@ private:
         };
         // The lattice's loop with `blocked(dir, t0, t1)` inlined (the central
         // rays of forEachDescendant's pieces, in its order, bit for bit).
-        const auto sample = [&](auto&& blocked, auto summedHere) {
+        const auto sample = [&](auto&& blocked, auto gatherHere) {
             const auto each = [&](const BeamRay& ray) __attribute__((always_inline)) {
                 ++pieces;
                 const Vec3& dir = ray.ray.dir;
-                if (dot3(q_.normal, dir) < kPovEpsilon) return;
+                if (!povray_ && dot3(q_.normal, dir) < kPovEpsilon) return;
                 ++rays;
                 const double t0 = origin_.rayStart(dir);
                 const double t1 = ray.distance - kTolerance;
@@ -395,7 +434,7 @@ private:
                 } else if (blocked(dir, t0, t1)) {
                     return;
                 }
-                lit(ray, summedHere);
+                lit(ray, gatherHere);
             };
             if (!latticed) {
                 beams_.forEachDescendant(piece, depth, [&](const LightPiece& p) { each(p.central); });
@@ -409,7 +448,7 @@ private:
         // One convex occluder clear of the rays' ends (convexShadow): its
         // shadow on the lattice is a convex set's points, found with few
         // tests (ConvexLattice); then the lit samples in the lattice's order.
-        const auto sampleConvex = [&](auto&& blocked, auto summedHere) {
+        const auto sampleConvex = [&](auto&& blocked, auto gatherHere) {
             const ConvexLattice shadow(lattice->columns(), lattice->rows(), [&](int i, int j) {
                 const BeamRay ray = lattice->ray(i, j);
                 const double t1 = ray.distance - kTolerance;
@@ -419,16 +458,23 @@ private:
                 const LightLattice::Place at = lattice->place(m);
                 if (shadow.member(at.i, at.j)) continue;
                 const BeamRay ray = lattice->ray(at.i, at.j);
-                if (dot3(q_.normal, ray.ray.dir) < kPovEpsilon) continue;
-                lit(ray, summedHere);
+                if (!povray_ && dot3(q_.normal, ray.ray.dir) < kPovEpsilon) continue;
+                lit(ray, gatherHere);
             }
             pieces += std::uint64_t(lattice->count());
             rays += std::uint64_t(shadow.tests());
         };
+        // One of the three gatherings, resolved at compile time.
+        const auto withGather = [&](auto&& f) __attribute__((always_inline)) {
+            switch (gather) {
+                case Gather::Fraction: f(std::integral_constant<Gather, Gather::Fraction>{}); break;
+                case Gather::Diffuse: f(std::integral_constant<Gather, Gather::Diffuse>{}); break;
+                case Gather::Samples: f(std::integral_constant<Gather, Gather::Samples>{}); break;
+            }
+        };
         // sample(blocked) with the sum kept in locals where it may be.
         const auto sampleAll = [&](auto&& blocked) __attribute__((always_inline)) {
-            if (summed) sample(blocked, std::true_type{});
-            else sample(blocked, std::false_type{});
+            withGather([&](auto gatherHere) { sample(blocked, gatherHere); });
         };
         if (count == 1) {
             // One occluder (the common case): its shape's test is resolved
@@ -441,8 +487,7 @@ private:
                     return test(dir, t0, t1);
                 };
                 if (!convex) sampleAll(blocked);
-                else if (summed) sampleConvex(blocked, std::true_type{});
-                else sampleConvex(blocked, std::false_type{});
+                else withGather([&](auto gatherHere) { sampleConvex(blocked, gatherHere); });
             });
         } else if (count == 0) {
             // Every occluder left out: every sample is lit, without a ray.
@@ -457,12 +502,13 @@ private:
                 return false;
             });
         }
-        if (summed) {
+        if (gather == Gather::Diffuse) {
             out.sum = Vec3(sumX, sumY, sumZ);
             out.distance = sumDistance;
             out.total = total;
             out.count = emitted;
         }
+        visible_ += double(litCount) * share;
         c_.countShadowPyrays(piece.level + depth, pieces);
         c_.shadowRays += rays;
         c_.rayTests += tests;
@@ -491,8 +537,8 @@ private:
     }
 
     void sampleRay(const BeamRay& ray, const Item* occluders, std::uint32_t count, double share) {
-        if (glm::dot(q_.normal, ray.ray.dir) < kPovEpsilon) return;
-        if (!sampleBlocked(ray, occluders, count)) emitAbove(ray, share);
+        if (!povray_ && glm::dot(q_.normal, ray.ray.dir) < kPovEpsilon) return;
+        if (!sampleBlocked(ray, occluders, count)) litRay(ray, share);
     }
 
     // rayBlocked without marks, for point samples: stops at the first
@@ -585,6 +631,19 @@ private:
             blocked = blocked || hit;
         }
         return blocked;
+    }
+
+    // A piece no occluder touches: its share (POV-Ray's emitter), or its
+    // light integrated to EPS (the paper's).
+    void litPiece(const LightPiece& piece) {
+        if (povray_) visible_ += beams_.share(piece.level);
+        else refineLit(piece);
+    }
+    // A ray of `share` of the light that no occluder blocks: its share
+    // (POV-Ray's emitter, wherever it points), or its light (the paper's).
+    void litRay(const BeamRay& ray, double share) {
+        if (povray_) visible_ += share;
+        else emit(ray, share);
     }
 
     // The light a sub-beam of `share` of the light carries along `ray`:
@@ -704,6 +763,8 @@ private:
     Beam beams_;
     AreaLightScratch& s_;
     RenderCounters& c_;
+    const bool povray_;  // POV-Ray's emitter: the visible fraction
+    double visible_ = 0.0;
     std::uint64_t jitterKey_ = 0;
 };
 
@@ -744,11 +805,10 @@ std::optional<Vec3> behindApexOf(const Form& light, const Vec3& centre, const Ve
     return point - hi * axis;
 }
 
-// The ASOS samples of area light `light` (the model's form), into the
-// scratch's samples or its diffuse sum.
+// Where the beams toward area light `light` (the model's form) start: the
+// shaded point, or with ShadowApex::Behind a point behind the surface.
 template <AreaLightForm Form>
-void beamSamples(const Form& light, const Scene& scene, const LightModel& model, ShadowApex apex,
-                 const AreaLightQuery& query, AreaLightScratch& scratch, RenderCounters& counters) {
+Origin beamOrigin(const Form& light, const LightModel& model, ShadowApex apex, const AreaLightQuery& query) {
     Origin origin;
     origin.apex = query.point;
     if (apex == ShadowApex::Behind && query.footprint) {
@@ -761,9 +821,37 @@ void beamSamples(const Form& light, const Scene& scene, const LightModel& model,
             if (!(origin.depth > 0.0)) origin = Origin{query.point};
         }
     }
-    // No beam where the point lies in the light (its plane, its line, inside it).
-    if (const std::optional<typename Form::Beam> beams = light.beamFrom(origin.apex, origin.behind ? 0.0 : kTolerance))
+    return origin;
+}
+
+// The beam of area light `light` from `origin`: none where the point lies in
+// the light (its plane, its line, inside it).
+template <AreaLightForm Form>
+std::optional<typename Form::Beam> beamOf(const Form& light, const Origin& origin) {
+    return light.beamFrom(origin.apex, origin.behind ? 0.0 : kTolerance);
+}
+
+// The ASOS samples of area light `light` (the model's form), into the
+// scratch's samples or its diffuse sum.
+template <AreaLightForm Form>
+void beamSamples(const Form& light, const Scene& scene, const LightModel& model, ShadowApex apex,
+                 const AreaLightQuery& query, AreaLightScratch& scratch, RenderCounters& counters) {
+    const Origin origin = beamOrigin(light, model, apex, query);
+    if (const std::optional<typename Form::Beam> beams = beamOf(light, origin))
         BeamShadow<Form>(scene, model, light, *beams, query, origin, scratch, counters).run();
+}
+
+// The share of area light `light` (the model's form, POV-Ray's emitter) that
+// reaches the point; none where the point sees no beam.
+template <AreaLightForm Form>
+std::optional<double> beamFraction(const Form& light, const Scene& scene, const LightModel& model, ShadowApex apex,
+                                   const AreaLightQuery& query, AreaLightScratch& scratch, RenderCounters& counters) {
+    const Origin origin = beamOrigin(light, model, apex, query);
+    const std::optional<typename Form::Beam> beams = beamOf(light, origin);
+    if (!beams) return std::nullopt;
+    BeamShadow<Form> shadow(scene, model, light, *beams, query, origin, scratch, counters);
+    shadow.run();
+    return shadow.visible();
 }
 
 }  // namespace
@@ -774,6 +862,17 @@ std::optional<Vec3> behindApex(const LightModel& model, const Vec3& point, const
     withAreaForm(model.form,
                  [&](const auto& light) { apex = behindApexOf(light, model.position, point, normal, footprint); });
     return apex;
+}
+
+double asosVisibleFraction(const Scene& scene, const LightModel& model, ShadowApex apex,
+                           const AreaLightQuery& query, AreaLightScratch& scratch, RenderCounters& counters) {
+    std::optional<double> visible;
+    withAreaForm(model.form, [&](const auto& light) {
+        visible = beamFraction(light, scene, model, apex, query, scratch, counters);
+    });
+    // A point in the light's plane or on its line sees no beam, but POV-Ray's
+    // isotropic points still light it (edge on): its grid answers.
+    return visible ? *visible : gridVisibleFraction(scene, model, query, scratch, counters);
 }
 
 std::span<const LightSample> asosAreaLightSamples(const Scene& scene, const LightModel& model,

@@ -2,6 +2,7 @@
 
 #include <cmath>
 
+#include "asos/lights/light_model.hpp"
 #include "asos/render/brick_pattern.hpp"
 #include "asos/render/checker_pattern.hpp"
 
@@ -22,13 +23,6 @@ Color evaluatePigment(const Pigment& pigment, const Vec3& worldPoint) {
     return pigment.color1;
 }
 
-double lightFade(const Light& light, double distance) {
-    if (!(light.fadePower > 0.0)) return 1.0;
-    if (std::fabs(light.fadeDistance) >= kPovEpsilon)
-        return 2.0 / (1.0 + std::pow(distance / light.fadeDistance, light.fadePower));
-    return std::pow(distance, -light.fadePower);
-}
-
 Vec3 ambientTerm(const Finish& finish, const Vec3& pigment, const Vec3& ambientLight) {
     return pigment * finish.ambient * ambientLight;
 }
@@ -40,7 +34,7 @@ Vec3 directLight(const Finish& finish, const Vec3& pigment, const Vec3& normal, 
     // (POV-Ray: cos_shadow_angle < EPSILON, no double_illuminate).
     const double cosIncidence = glm::dot(normal, toLight);
     if (cosIncidence < kPovEpsilon) return Vec3(0.0);
-    const Vec3 lightColor = sample.color * lightFade(light, sample.distance);
+    const Vec3 lightColor = sample.color * lightFade(light.fadeDistance, light.fadePower, sample.distance);
     if (std::fabs(lightColor.x) <= kPovEpsilon && std::fabs(lightColor.y) <= kPovEpsilon &&
         std::fabs(lightColor.z) <= kPovEpsilon)
         return Vec3(0.0);

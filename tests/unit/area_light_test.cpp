@@ -1,17 +1,24 @@
 // Known answers for distributed light sources (paper: "Distributed Light
 // Sources"): the light an area light sends a point, by ASOS shadow beams and
 // by the classic grid, against a dense numerical integration of the same
-// light model computed here (docs/lights.md): a rectangle of intensity
-// colour / area with the weighting cos theta, a segment of colour / length,
-// a sphere's apparent disc of colour / (pi r^2); each point of the light
-// weighted by the cosine of incidence (what a white diffuse surface
-// receives), nothing falling off with distance.
+// light model computed here (docs/lights.md), what a white diffuse surface
+// receives, nothing falling off with distance:
+//   - POV-Ray's emitter (the default): the fraction of the light that
+//     reaches the point (uniformly over a rectangle or a segment, over the
+//     square of POV-Ray's disc map), times the cosine of incidence along the
+//     direction of the light's centre;
+//   - the paper's (`emitter panel`, the tests without "POV-Ray" in their
+//     names): a rectangle of intensity colour / area with the weighting
+//     cos theta, a segment of colour / length, a sphere's apparent disc of
+//     colour / (pi r^2); each point of the light weighted by its own cosine
+//     of incidence.
 #include <catch2/catch.hpp>
 
 #include <cmath>
 #include <functional>
 
 #include "asos/geometry/concentric_disc.hpp"
+#include "asos/geometry/frame.hpp"
 #include "asos/render/area_light.hpp"
 #include "asos/render/area_light_shadow.hpp"
 #include "asos/render/grid_light.hpp"
@@ -23,8 +30,9 @@ using namespace asos::testing;
 namespace {
 
 Light areaLight(const Vec3& position, const Vec3& axis1, const Vec3& axis2, int n1, int n2,
-                bool orient = false) {
+                bool orient = false, LightEmitter emitter = LightEmitter::Panel) {
     Light l = pointLight(position, Vec3(1.0));
+    l.asos.emitter = emitter;
     AreaLight a;
     a.axis1 = axis1;
     a.axis2 = axis2;
@@ -311,31 +319,276 @@ TEST_CASE("Jittered MAX-beams and grids are deterministic and stay within the li
 }
 
 TEST_CASE("POV-Ray's adaptive corner scheme: corners first, splits where they disagree", "[lights]") {
-    // 5 x 5 points on POV-Ray's lattice from edge to edge; a box hides the
-    // half x < 0 of the light from the point below it.
-    Object wall = makeObject(BoxShape{{-50, 2, -50}, {0.0, 2.2, 50}}, litTexture(Vec3(1.0)));
-    Light light = areaLight({0, 5, 0}, {2, 0, 0}, {0, 0, 2}, 5, 5);
+    // 5 x 5 points on POV-Ray's lattice from edge to edge, columns at x =
+    // -1, -0.5, 0, 0.5, 1; a box hides the columns x <= 0 from the point
+    // below it.
+    Object wall = makeObject(BoxShape{{-50, 2, -50}, {0.02, 2.2, 50}}, litTexture(Vec3(1.0)));
+    Light light = areaLight({0, 5, 0}, {2, 0, 0}, {0, 0, 2}, 5, 5, false, LightEmitter::Povray);
     light.area->adaptive = 0;
     LightSetupScene s(light, {wall});
     const AsosSettings settings;
+    const Vec3 up(0, 1, 0);
     RenderCounters counters;
     // Far on the lit side: the four corners agree: four rays.
-    s.received(LightMethod::Grid, settings, {30, 0, 0}, {0, 1, 0}, counters);
+    s.received(LightMethod::Grid, settings, {30, 0, 0}, up, counters);
     CHECK(counters.shadowRays == 4);
-    // Straight below the wall's edge (through the light's middle column):
-    // the corners disagree, every level splits along the edge; the middle
-    // column is lit (x = 0 grazes the wall's face), the left one dark.
+    // Straight below the wall's edge: the corners disagree, and the
+    // rectangles across the edge split: the right half's rectangles are
+    // (1/2 + 1) / 2 of the light, the left's nothing: 3/8 (the trapezoid
+    // weights 1, 2, 2, 2, 1 over 8 of the lit columns, here).
     counters = {};
-    const double lit = s.received(LightMethod::Grid, settings, {0, 0, 0}, {0, 1, 0}, counters);
+    const double lit = s.received(LightMethod::Grid, settings, {0, 0, 0}, up, counters);
     CHECK(counters.shadowRays > 4);
-    CHECK(counters.shadowRays <= 25);
-    CHECK(lit > 0.3);
-    CHECK(lit < 0.8);
-    // Without adaptive, every point.
+    CHECK(counters.shadowRays < 25);
+    CHECK(lit == Approx(0.375).epsilon(1e-12));  // cos 1 straight below the centre
+    // Without adaptive, POV-Ray's default level 100: every point, every rectangle split.
     s.d.lights[0].area->adaptive.reset();
     counters = {};
-    s.received(LightMethod::Grid, settings, {30, 0, 0}, {0, 1, 0}, counters);
+    s.received(LightMethod::Grid, settings, {30, 0, 0}, up, counters);
     CHECK(counters.shadowRays == 25);
+    // A faded light's colour is compared faded: at fade 2 / (1 + 10^2) the
+    // corners' colours differ by less than 0.1, and adaptive 0 stops at them
+    // whatever they say; with area_illumination the colour is unfaded.
+    s.d.lights[0].area->adaptive = 0;
+    s.d.lights[0].fadeDistance = 0.5;
+    s.d.lights[0].fadePower = 2.0;
+    counters = {};
+    s.received(LightMethod::Grid, settings, {0, 0, 0}, up, counters);
+    CHECK(counters.shadowRays == 4);
+    s.d.lights[0].areaIllumination = true;
+    counters = {};
+    s.received(LightMethod::Grid, settings, {0, 0, 0}, up, counters);
+    CHECK(counters.shadowRays > 4);
+}
+
+TEST_CASE("POV-Ray's corner recursion weighs its lattice from edge to edge", "[lights]") {
+    // A linear light from x = -2 to 2 at height 5, a box just below it
+    // hiding x < 0.3 from the point straight below: the visible fraction is
+    // the weights of the lit lattice points, POV-Ray's recursion's (level
+    // 100, every rectangle split): the trapezoid rule for 2^k + 1 points,
+    // equal weights for 2^k, uneven ones otherwise.
+    Object box = makeObject(BoxShape{{-50, 4.9, -50}, {0.3, 4.95, 50}}, litTexture(Vec3(1.0)));
+    struct Case {
+        int n;
+        double visible;
+    };
+    // Lattice x_i = -2 + 4 i / (n - 1); lit where x_i > 0.3 / 0.98.
+    const Case cases[] = {{3, 1.0 / 4.0},  {4, 2.0 / 4.0},  {5, 3.0 / 8.0},
+                          {6, 4.0 / 8.0},  {7, 3.0 / 8.0},  {9, 7.0 / 16.0}};
+    for (const Case& c : cases) {
+        INFO(c.n << " points");
+        LightSetupScene s(areaLight({0, 5, 0}, {4, 0, 0}, {0, 0, 0}, c.n, 1, false, LightEmitter::Povray), {box});
+        RenderCounters counters;
+        CHECK(s.received(LightMethod::Grid, AsosSettings{}, {0, 0, 0}, {0, 1, 0}, counters) ==
+              Approx(c.visible).epsilon(1e-12));
+        CHECK(counters.shadowRays == std::uint64_t(c.n));
+        // --light-samples N: N points on the same lattice.
+        CHECK(s.received(LightMethod::Grid, AsosSettings{}, {0, 0, 0}, {0, 1, 0}, counters, 0, c.n) ==
+              Approx(c.visible).epsilon(1e-12));
+    }
+}
+
+TEST_CASE("POV-Ray's emitter, unoccluded: the light's colour along its centre, no shadow ray", "[lights]") {
+    const AsosSettings settings{1.0 / 64.0, 4, false};
+    const Vec3 up(0, 1, 0);
+    struct Case {
+        const char* what;
+        Light light;
+        Vec3 point, normal;
+    };
+    const Vec3 tilted = glm::normalize(Vec3(0.0, 1.0, 1.0));
+    const Case cases[] = {
+        {"rectangle, near", areaLight({0, 1, 0}, {2, 0, 0}, {0, 0, 2}, 4, 4, false, LightEmitter::Povray),
+         {0.8, 0, -0.5}, up},
+        {"rectangle, grazing", areaLight({0, 1, 0}, {2, 0, 0}, {0, 0, 2}, 4, 4, false, LightEmitter::Povray),
+         {12, 0, 0}, up},
+        {"rectangle, tilted surface", areaLight({0, 3, 0}, {2, 0, 0}, {0, 0, 2}, 4, 4, false, LightEmitter::Povray),
+         {0, 0, -3}, tilted},
+        {"segment", areaLight({0, 2, 0}, {3, 0, 0}, {0, 0, 0}, 8, 1, false, LightEmitter::Povray), {1, 0, 0.5},
+         up},
+        {"disc", areaLight({0, 2, 0}, {3, 0, 0}, {0, 0, 3}, 8, 8, true, LightEmitter::Povray), {0.7, 0, 0.2},
+         up},
+    };
+    for (const Case& c : cases) {
+        INFO(c.what);
+        LightSetupScene s(c.light, {});
+        const Vec3 toCentre = glm::normalize(c.light.position - c.point);
+        const double expected = std::max(0.0, glm::dot(c.normal, toCentre));
+        RenderCounters counters;
+        CHECK(s.received(LightMethod::Asos, settings, c.point, c.normal, counters) == Approx(expected).epsilon(1e-12));
+        CHECK(counters.shadowRays == 0);
+        CHECK(s.received(LightMethod::Grid, settings, c.point, c.normal) == Approx(expected).epsilon(1e-12));
+    }
+    // The light's centre below the horizon: nothing, though part of the
+    // light is above it (POV-Ray tests the centre before any shadow ray).
+    LightSetupScene s(areaLight({0, 1, 0}, {4, 0, 0}, {0, 0, 4}, 4, 4, false, LightEmitter::Povray), {});
+    const Vec3 leaning = glm::normalize(Vec3(1.0, -0.1, 0.0));
+    RenderCounters counters;
+    CHECK(s.received(LightMethod::Asos, settings, {0, 0, 0}, leaning, counters) == 0.0);
+    CHECK(s.received(LightMethod::Grid, settings, {0, 0, 0}, leaning, counters) == 0.0);
+    CHECK(counters.shadowRays == 0);
+    // With area_illumination each of POV-Ray's lattice points lights the
+    // point along its own direction (1/16 of the light each), those above
+    // the horizon only: no centre test.
+    s.d.lights[0].areaIllumination = true;
+    double expected = 0.0;
+    for (int j = 0; j < 4; ++j)
+        for (int i = 0; i < 4; ++i) {
+            const Vec3 y(-2.0 + 4.0 * i / 3.0, 1.0, -2.0 + 4.0 * j / 3.0);
+            expected += std::max(0.0, glm::dot(leaning, glm::normalize(y))) / 16.0;
+        }
+    REQUIRE(expected > 0.05);
+    CHECK(s.received(LightMethod::Asos, settings, {0, 0, 0}, leaning) == Approx(expected).epsilon(1e-12));
+    CHECK(s.received(LightMethod::Grid, settings, {0, 0, 0}, leaning) == Approx(expected).epsilon(1e-12));
+}
+
+TEST_CASE("POV-Ray's isotropic emitter and the paper's panel against dense integration, across a penumbra",
+          "[lights]") {
+    // A sphere between the point and each light. POV-Ray's emitter: the
+    // visible fraction V of the light (uniform over the rectangle and the
+    // segment, POV-Ray's density over its disc) times the cosine along the
+    // centre; the panel: each element's cos theta and own cosine. ASOS
+    // within EPS of each; POV-Ray's grid at 33 points a side (the trapezoid
+    // rule) within the lattice's resolution.
+    const AsosSettings settings{1.0 / 64.0, 6, false};
+    const Vec3 lightCentre(0, 6, 0), occluderCentre(0, 3, 0);
+    const double occluderRadius = 0.8;
+    const Vec3 up(0, 1, 0);
+    const auto visibleFrom = [&](const Vec3& p) {
+        return [&, p](const Vec3& y) { return !segmentMeetsSphere(p, y, occluderCentre, occluderRadius); };
+    };
+    struct Form {
+        const char* what;
+        Vec3 axis2;
+        int n2;
+        bool orient;
+    };
+    const Form forms[] = {{"rectangle", {0, 0, 2}, 33, false}, {"segment", {0, 0, 0}, 1, false},
+                          {"disc", {0, 0, 2}, 33, true}};
+    for (const Form& f : forms) {
+        Object occluder = makeObject(SphereShape{occluderCentre, occluderRadius}, litTexture(Vec3(1.0)));
+        LightSetupScene pov(areaLight(lightCentre, {2, 0, 0}, f.axis2, 33, f.n2, f.orient, LightEmitter::Povray),
+                            {occluder});
+        LightSetupScene panel(areaLight(lightCentre, {2, 0, 0}, f.axis2, 33, f.n2, f.orient, LightEmitter::Panel),
+                              {occluder});
+        int partial = 0;
+        double largestGap = 0.0;
+        for (double x = 0.0; x <= 3.0; x += 0.25) {
+            const Vec3 p(x, 0, 0.3 * x);
+            const auto visible = visibleFrom(p);
+            // The light's points, over the unit square (s, t).
+            std::function<Vec3(double, double)> pointAt;
+            if (f.orient) {
+                const Frame frame = povrayOrientFrame(glm::normalize(lightCentre - p));
+                pointAt = [&, frame](double s1, double s2) {
+                    const Vec2 d = povrayDisc(s1, s2);
+                    return lightCentre + 1.0 * (d.x * frame.u + d.y * frame.v);
+                };
+            } else {
+                pointAt = [&](double s1, double s2) {
+                    return lightCentre + (s1 - 0.5) * Vec3(2, 0, 0) + (s2 - 0.5) * f.axis2;
+                };
+            }
+            const int m = f.n2 == 1 ? 1 : 400;
+            const double V = integrate(f.n2 == 1 ? 20000 : 400, m, [&](double s1, double s2) {
+                return visible(pointAt(s1, s2)) ? 1.0 : 0.0;
+            });
+            const double exact = V * glm::dot(up, glm::normalize(lightCentre - p));
+            const double asos = pov.received(LightMethod::Asos, settings, p, up);
+            const double grid = pov.received(LightMethod::Grid, settings, p, up);
+            INFO(f.what << " x = " << x << ": V " << V << ", exact " << exact << ", asos " << asos << ", grid "
+                        << grid);
+            CHECK(std::abs(asos - exact) <= settings.eps);
+            CHECK(std::abs(grid - exact) <= 0.02);
+            if (V > 0.05 && V < 0.95) ++partial;
+            // The paper's panel: ASOS within EPS of its own integral.
+            if (!f.orient) {
+                double panelExact;
+                if (f.n2 == 1) {
+                    panelExact = integrate(20000, 1, [&](double s1, double) {
+                        const Vec3 y = pointAt(s1, 0.5);
+                        return visible(y) ? std::max(0.0, glm::dot(up, glm::normalize(y - p))) : 0.0;
+                    });
+                } else {
+                    const LightModel model = makeLightModel(panel.d.lights[0], settings);
+                    panelExact = exactRectangle(model, p, up, [&](const Vec3&, const Vec3& y) { return visible(y); });
+                }
+                const double panelAsos = panel.received(LightMethod::Asos, settings, p, up);
+                INFO("panel: exact " << panelExact << ", asos " << panelAsos);
+                CHECK(std::abs(panelAsos - panelExact) <= settings.eps);
+                largestGap = std::max(largestGap, std::abs(panelExact - exact));
+            }
+        }
+        CHECK(partial >= 3);
+        // The two emitters are different lights.
+        if (f.n2 > 1 && !f.orient) CHECK(largestGap > 0.02);
+    }
+}
+
+TEST_CASE("POV-Ray's emitter below the horizon: a solid shaded object hides it, a flat one does not",
+          "[lights]") {
+    const AsosSettings settings{1.0 / 64.0, 6, false};
+    // A point on a unit sphere (object 1) whose tangent plane cuts a large
+    // light above it: POV-Ray's rays toward the light's points below the
+    // plane enter the sphere and are blocked, those above pass: V is the
+    // share of the light above the plane, x > -1 / (2 sin 60 deg) here.
+    const double theta = kPi / 3.0;
+    const Vec3 p(std::sin(theta), std::cos(theta), 0.0), n = p;
+    Object ball = makeObject(SphereShape{{0, 0, 0}, 1.0}, litTexture(Vec3(1.0)));
+    LightSetupScene s(areaLight({0, 3, 0}, {6, 0, 0}, {0, 0, 6}, 33, 33, false, LightEmitter::Povray), {ball});
+    const double cut = (1.0 - 3.0 * std::cos(theta)) / std::sin(theta);
+    const double V = (3.0 - cut) / 6.0;
+    const double cosCentre = glm::dot(n, glm::normalize(Vec3(0, 3, 0) - p));
+    REQUIRE(cosCentre > 0.1);
+    RenderCounters counters;
+    const double asos = s.received(LightMethod::Asos, settings, p, n, counters, 1);
+    const double grid = s.received(LightMethod::Grid, settings, p, n, counters, 1);
+    INFO("V " << V << ", asos " << asos / cosCentre << ", grid " << grid / cosCentre);
+    CHECK(std::abs(asos / cosCentre - V) <= settings.eps);
+    CHECK(std::abs(grid / cosCentre - V) <= 1.0 / 32.0);
+    // A vertical light standing across the ground plane: a point of the
+    // plane sees all of it (its rays below the plane leave the plane).
+    LightSetupScene flat(areaLight({0, 0.5, 3}, {2, 0, 0}, {0, 2, 0}, 9, 9, false, LightEmitter::Povray), {});
+    const Vec3 up(0, 1, 0);
+    const double cosFlat = glm::dot(up, glm::normalize(Vec3(0, 0.5, 3)));
+    CHECK(flat.received(LightMethod::Asos, settings, {0, 0, 0}, up) == Approx(cosFlat).epsilon(1e-12));
+    CHECK(flat.received(LightMethod::Grid, settings, {0, 0, 0}, up) == Approx(cosFlat).epsilon(1e-12));
+}
+
+TEST_CASE("POV-Ray's map: square rings to circles, angles kept, denser toward the diagonals", "[lights]") {
+    // The image of (s, t) lies at the radius max(|a|, |b|) of (a, b) = (2s -
+    // 1, 2t - 1), in its direction.
+    for (double s1 : {0.0, 0.1, 0.37, 0.5, 0.8, 1.0})
+        for (double s2 : {0.0, 0.25, 0.5, 0.9}) {
+            const double a = 2 * s1 - 1, b = 2 * s2 - 1;
+            const Vec2 d = povrayDisc(s1, s2);
+            CHECK(glm::length(d) == Approx(std::max(std::abs(a), std::abs(b))).margin(1e-15));
+            if (a != 0.0 || b != 0.0) CHECK(std::atan2(d.y, d.x) == Approx(std::atan2(b, a)).margin(1e-12));
+        }
+    // Not equal-area: the cell on the diagonal of a 4 x 4 grid's ring holds
+    // less of the disc than the cell on the axis (the density grows as
+    // 1 / cos^2 of the angle from the axis).
+    const auto area = [](double s0, double t0, double size) {
+        double sum = 0.0;
+        const int steps = 400;
+        Vec2 previous = povrayDisc(s0, t0);
+        for (int k = 1; k <= 4 * steps; ++k) {
+            const int side = (k - 1) / steps;
+            const double f = double(k - side * steps) / steps * size;
+            double s1 = s0, s2 = t0;
+            if (side == 0) s1 += f;
+            else if (side == 1) s1 += size, s2 += f;
+            else if (side == 2) s1 += size - f, s2 += size;
+            else s2 += size - f;
+            const Vec2 q = povrayDisc(s1, s2);
+            sum += previous.x * q.y - q.x * previous.y;
+            previous = q;
+        }
+        return std::abs(sum) / 2.0;
+    };
+    const double diagonal = area(0.75, 0.75, 0.25), axis = area(0.75, 0.5, 0.25);
+    CHECK(diagonal < 0.85 * axis);
+    CHECK(area(0.0, 0.0, 1.0) == Approx(kPi).epsilon(1e-4));
 }
 
 TEST_CASE("The concentric map takes equal areas of the square to equal areas of the disc", "[lights]") {

@@ -150,10 +150,16 @@ FormCase randomForm(std::mt19937_64& rng, int kind) {
         s.length = size;
         return {s, apex};
     }
-    SphereLight sphere;
-    sphere.centre = centre;
-    sphere.radius = 0.5 * size;
-    return {sphere, apex};
+    if (kind == 2) {
+        SphereLight sphere;
+        sphere.centre = centre;
+        sphere.radius = 0.5 * size;
+        return {sphere, apex};
+    }
+    OrientedDiscLight disc;
+    disc.centre = centre;
+    disc.radius = 0.5 * size;
+    return {disc, apex};
 }
 
 // Runs f(i, seed, c, light, beam, hull) for `count` random beams, every form in
@@ -164,7 +170,7 @@ void forEachBeam(std::uint64_t base, int count, std::mt19937_64& rng, F&& f) {
     for (int i = 0; i < count; ++i) {
         const std::uint64_t seed = shapetest::splitmix(base + std::uint64_t(i));
         rng.seed(seed);
-        const FormCase c = randomForm(rng, i % 3);
+        const FormCase c = randomForm(rng, i % 4);
         withAreaForm(c.form, [&](const auto& light) {
             const auto beam = light.beamFrom(c.apex, kPovShadowTolerance);
             if (!beam) return;

@@ -277,19 +277,20 @@ TEST_CASE("Concentric map: polar bounds of cells and the pieces' solid angles ag
     std::mt19937_64 rng(27);
     std::uniform_real_distribution<double> u01(0.0, 1.0);
     // Every cell of levels 1 to 4: its image's radii and angles, sampled
-    // densely, lie in its polar bounds and reach them.
+    // densely, lie in its polar bounds and reach them, under both maps.
+    for (const DiscMap map : {DiscMap::Concentric, DiscMap::Povray})
     for (int level = 1; level <= 4; ++level) {
         const int n = 1 << level;
         for (int j = 0; j < n; ++j)
             for (int i = 0; i < n; ++i) {
                 const DiscCell c{double(i) / n, double(i + 1) / n, double(j) / n, double(j + 1) / n};
-                const PolarBounds b = polarBounds(c);
+                const PolarBounds b = polarBounds(c, map);
                 CHECK(b.phi1 - b.phi0 <= 0.5 * kPi + 1e-15);
                 CHECK(innerRadius(c) == b.r0);
                 double r0 = 2.0, r1 = 0.0, phi0 = 10.0, phi1 = -10.0;
                 for (int v = 0; v <= 16; ++v)
                     for (int u = 0; u <= 16; ++u) {
-                        const Vec2 d = concentricDisc(c.s0 + u / 16.0 * (c.s1 - c.s0), c.t0 + v / 16.0 * (c.t1 - c.t0));
+                        const Vec2 d = discPoint(map, c.s0 + u / 16.0 * (c.s1 - c.s0), c.t0 + v / 16.0 * (c.t1 - c.t0));
                         const double rho = glm::length(d);
                         r0 = std::min(r0, rho);
                         r1 = std::max(r1, rho);
@@ -299,7 +300,8 @@ TEST_CASE("Concentric map: polar bounds of cells and the pieces' solid angles ag
                         phi0 = std::min(phi0, phi);
                         phi1 = std::max(phi1, phi);
                     }
-                INFO("level " << level << " cell " << i << "," << j);
+                INFO((map == DiscMap::Povray ? "POV-Ray's map" : "concentric map") << " level " << level << " cell "
+                                                                                 << i << "," << j);
                 CHECK(r0 == Approx(b.r0).margin(1e-12));
                 CHECK(r1 == Approx(b.r1).margin(1e-12));
                 CHECK(phi0 == Approx(b.phi0).margin(1e-9));

@@ -56,9 +56,10 @@ inline Image renderSceneFile(const std::filesystem::path& scene, RenderSettings 
 // Writes `rendered` as PNG in its encoding (the comparison reads the file's
 // values back) and compares it with `reference`, which is first rewritten
 // from it when updating and `ownReference` (references made by another
-// program are not ours). The rendered image and the difference stay only when they differ.
+// program are not ours), by OpenImageIO's thresholds unless others are given.
+// The rendered image and the difference stay only when they differ.
 inline void compareWithReference(const RenderedScene& rendered, const std::filesystem::path& reference,
-                                 bool ownReference = true) {
+                                 bool ownReference = true, const CompareThresholds& thresholds = {}) {
     const std::filesystem::path ours = goldenOutput(reference);
     const std::filesystem::path diff = std::filesystem::path(ours).replace_extension(".diff.png");
     std::filesystem::remove(diff);
@@ -70,7 +71,7 @@ inline void compareWithReference(const RenderedScene& rendered, const std::files
     INFO("reference " << reference.string() << ": " << theirs.error);
     REQUIRE(mine.ok());
     REQUIRE(theirs.ok());
-    const ImageComparison cmp = compareImages(mine.image, theirs.image);
+    const ImageComparison cmp = compareImages(mine.image, theirs.image, thresholds);
     if (!cmp.passed && cmp.error.empty())
         (void)writeImage(absoluteDifference(mine.image, theirs.image), diff, {.transfer = Transfer::Raw});
     INFO(reference.filename().string() << ": " << cmp.summary() << "; rendered " << ours.string()
@@ -81,8 +82,8 @@ inline void compareWithReference(const RenderedScene& rendered, const std::files
 
 // An image in the default encoding (working gamma 1).
 inline void compareWithReference(const Image& rendered, const std::filesystem::path& reference,
-                                 bool ownReference = true) {
-    compareWithReference(RenderedScene{rendered, {}}, reference, ownReference);
+                                 bool ownReference = true, const CompareThresholds& thresholds = {}) {
+    compareWithReference(RenderedScene{rendered, {}}, reference, ownReference, thresholds);
 }
 
 }  // namespace asos::test

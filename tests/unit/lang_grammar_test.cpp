@@ -104,6 +104,10 @@ TEST_CASE("objects and scene items", "[lang][grammar]") {
          "light_source { <0,10,0>, rgb 1 }", "light_source { <0,10,0> color White shadowless }",
          "light_source { 0, 1 area_light x, z, 4, 4 adaptive 1 jitter circular orient }",
          "light_source { 0, 1 fade_distance 2 fade_power 2 asos { eps 0.1 } }",
+         "light_source { 0, 1 area_light x, z, 4, 4 area_illumination }",
+         "light_source { 0, 1 area_light x, z, 4, 4 area_illumination off jitter }",
+         "light_source { 0, 1 area_illumination asos { emitter panel } }",
+         "light_source { 0, 1 asos { eps 0.1 emitter povray } }",
          "camera { location <0,1,-5> look_at 0 angle 60 }", "camera { orthographic right x up y }",
          "camera { perspective location 0 direction z sky y right x*4/3 up y rotate <0,10,0> }",
          "global_settings { assumed_gamma 1 max_trace_level 5 ambient_light rgb 1 }",
@@ -112,7 +116,9 @@ TEST_CASE("objects and scene items", "[lang][grammar]") {
          "union { #while (I < 3) sphere { I*x, 1 } #declare I = I + 1; #end }"},
         {"sphere { 0 }", "sphere { 0, 1", "sphere 0, 1", "box { 0 }", "cone { 0, 1, y }",
          "polygon { }", "union { sphere { 0, 1 } ", "camera { location }", "light_source { }",
-         "spheres { 0, 1 }", "sphere { 0, 1 look_at x }", "background { }"});
+         "spheres { 0, 1 }", "sphere { 0, 1 look_at x }", "background { }",
+         "light_source { 0, 1 asos { emitter } }", "light_source { 0, 1 asos { emitter lambert } }",
+         "light_source { 0, 1 area_illumination ( }"});
 }
 
 TEST_CASE("modifiers", "[lang][grammar]") {

@@ -447,10 +447,14 @@ TEST_CASE("lights", "[lang][interpreter]") {
         #declare L = light_source { <0, 10, 0>, rgb 1 }
         light_source { L translate x }
         union { sphere { 0, 1 } light_source { 0, 1 } translate z }
+        light_source { 0, 1 area_light x, z, 2, 2 area_illumination asos { emitter panel } }
+        light_source { 0, 1 area_light x, z, 2, 2 area_illumination off asos { emitter povray } }
+        #declare panel = 0;
+        light_source { 0, 1 area_light x, z, 2, 2 area_illumination panel }
     )");
 
     const auto& scene = ok(run11);
-    REQUIRE(scene.lights.size() == 5);
+    REQUIRE(scene.lights.size() == 8);
     CHECK(scene.lights[0].position == Vec3(1, 2, 3));
     CHECK(scene.lights[0].color == Vec3(1, 0.5, 0.25));
     REQUIRE(scene.lights[1].area);
@@ -470,6 +474,15 @@ TEST_CASE("lights", "[lang][interpreter]") {
     CHECK(scene.lights[2].asos.eps == 0.5);
     CHECK(scene.lights[3].position == Vec3(1, 10, 0));
     CHECK(scene.lights[4].position == Vec3(0, 0, 1));
+    // area_illumination alone is on; emitter is the light's asos option.
+    CHECK_FALSE(scene.lights[0].areaIllumination);
+    CHECK_FALSE(scene.lights[0].asos.emitter);
+    CHECK(scene.lights[5].areaIllumination);
+    CHECK(scene.lights[5].asos.emitter == LightEmitter::Panel);
+    CHECK_FALSE(scene.lights[6].areaIllumination);
+    CHECK(scene.lights[6].asos.emitter == LightEmitter::Povray);
+    // Our words stay usable as identifiers.
+    CHECK_FALSE(scene.lights[7].areaIllumination);
 }
 
 TEST_CASE("global settings, background, asos options, #version", "[lang][interpreter]") {
@@ -573,7 +586,8 @@ TEST_CASE("every semantic error of a file is reported", "[lang][interpreter]") {
                 "polygon { 2, <0, 0>, <1, 0> }\n"
                 "light_source { 0, 1 area_light x, z, 0, 2 }\n"
                 "global_settings { asos { eps 0 max -1 } }\n"
-                "sphere { 0, 1 scale 0 }\n");
+                "sphere { 0, 1 scale 0 }\n"
+                "sphere { 0, 1 asos { emitter panel } }\n");
     CHECK_FALSE(r.scene);
     CHECK(r.errors() ==
           "1:13: the radius of a sphere must be positive, not -1\n"
@@ -583,7 +597,8 @@ TEST_CASE("every semantic error of a file is reported", "[lang][interpreter]") {
           "6:38: expected a whole number of at least 1, found 0\n"
           "7:30: eps must be positive, not 0\n"
           "7:36: max must be a whole number, at least 0, not -1\n"
-          "8:21: scale by zero (<0, 0, 0>) flattens everything\n");
+          "8:21: scale by zero (<0, 0, 0>) flattens everything\n"
+          "9:22: emitter is an option of a light_source's asos block\n");
 }
 
 TEST_CASE("#error stops, #debug and #warning are reported with their place", "[lang][interpreter]") {

@@ -2,7 +2,9 @@
 // sphere_light.hpp) are the pieces of the reference beams of asos_testing
 // (rect_shadow_pyray.hpp, segment_shadow_pyray.hpp, sphere_shadow_cone.hpp):
 // the same regions, central rays and random rays, with cones (about the
-// central ray) that hold every ray of the piece.
+// central ray) that hold every ray of the piece. POV-Ray's oriented disc
+// (oriented_disc_light.hpp) has no reference beam: its rays end on the disc
+// POV-Ray's lattice lies on, and its cones hold them.
 #include <catch2/catch.hpp>
 
 #include <algorithm>
@@ -167,6 +169,86 @@ TEST_CASE("Sphere beams: the tangent cone's equal-area pieces", "[lights]") {
     const SphereLight unit{Vec3(0.0), 1.0};
     CHECK_FALSE(unit.beamFrom(Vec3(0.5, 0, 0), 0.0));
     CHECK_FALSE(unit.gridFrom(Vec3(0.5, 0, 0)));
+}
+
+TEST_CASE("Oriented disc beams: POV-Ray's disc facing the point, cut by POV-Ray's map", "[lights]") {
+    std::mt19937_64 rng(34);
+    std::uniform_real_distribution<double> u01(0.0, 1.0);
+    for (int trial = 0; trial < 100; ++trial) {
+        OrientedDiscLight light;
+        light.centre = Vec3(u01(rng), 6, u01(rng));
+        light.radius = 0.05 + 2 * u01(rng);
+        // From well inside the disc's radius to far away; some along z
+        // (POV-Ray then turns its axes about y).
+        Vec3 offset = randomUnit(rng);
+        if (trial % 10 == 0) offset = glm::normalize(Vec3(0.001 * u01(rng), 0.001, 1.0));
+        const Vec3 apex = light.centre - offset * (light.radius * std::pow(10.0, -1.0 + 3.0 * u01(rng)));
+        const std::optional<OrientedDiscLight::Beam> made = light.beamFrom(apex, 1e-4);
+        REQUIRE(made);
+        const OrientedDiscLight::Beam& beams = *made;
+        const Frame frame = povrayOrientFrame(glm::normalize(light.centre - apex));
+        CHECK(std::abs(glm::dot(frame.u, frame.v)) < 1e-12);
+        CHECK(glm::length(glm::cross(frame.u, frame.v) - frame.w) < 1e-12);
+        // Where a ray of the beam ends: on the disc, at its map's point.
+        const auto endsAt = [&](const BeamRay& r, const Vec2& xi) {
+            const Vec2 d = povrayDisc(xi.x, xi.y);
+            const Vec3 expected = light.centre + light.radius * (d.x * frame.u + d.y * frame.v);
+            return glm::length(r.ray.origin + r.distance * r.ray.dir - expected) <= 1e-9 * (1.0 + glm::length(light.centre - apex));
+        };
+        LightPiece p = beams.root();
+        CHECK(p.central.distance == Approx(glm::length(light.centre - apex)));
+        for (int level = 0; level < 7; ++level) {  // past the table (DiscPieceTable::kLevels)
+            CHECK(beams.share(level) == std::ldexp(1.0, -2 * level));
+            const Vec2 xi(0.4, 0.9);
+            CHECK(endsAt(beams.sample(p, xi), Vec2(p.a0 + xi.x * (p.a1 - p.a0), p.b0 + xi.y * (p.b1 - p.b0))));
+            CHECK(endsAt(p.central, Vec2(0.5 * (p.a0 + p.a1), 0.5 * (p.b0 + p.b1))));
+            checkInside(beams, p, rng);
+            LightPiece pieces[OrientedDiscLight::Beam::kChildren];
+            REQUIRE(beams.split(p, pieces) == 4);
+            for (int i = 0; i < 4; ++i) {
+                CHECK(pieces[i].a1 - pieces[i].a0 == 0.5 * (p.a1 - p.a0));
+                checkInside(beams, pieces[i], rng);
+            }
+            p = pieces[int(rng() % 4)];
+        }
+    }
+    // At the centre: no beam, no grid.
+    const OrientedDiscLight unit{Vec3(0.0), 1.0};
+    CHECK_FALSE(unit.beamFrom(Vec3(0.0), 0.0));
+    CHECK_FALSE(unit.gridFrom(Vec3(0.0)));
+}
+
+TEST_CASE("Oriented disc grid: POV-Ray's lattice, squeezed onto the disc a thousandth off centre", "[lights]") {
+    // Seen from below, the disc faces up: POV-Ray's first axis is
+    // cross(w, z) = cross(y, z) = x, its second cross(w, x) = -z.
+    const OrientedDiscLight light{Vec3(0, 5, 0), 1.0};
+    const std::optional<OrientedDiscLight::GridPoints> grid = light.gridFrom(Vec3(0.0));
+    REQUIRE(grid);
+    const auto point = [&](double s, double t) {
+        const BeamRay r = grid->toward(s, t);
+        return r.ray.origin + r.distance * r.ray.dir;
+    };
+    // The lattice's corner (s, t) = (0, 0): (-0.499, -0.499) of the square,
+    // kept on its diagonal at the radius of its square ring, 0.499 of the
+    // axes' length 2.
+    const double r = 0.499 * 2.0 / std::sqrt(2.0);
+    CHECK(glm::length(point(0.0, 0.0) - Vec3(-r, 5, r)) < 1e-12);
+    // The middle of the lattice's right edge: (0.501, 0.001), on the ring of
+    // radius 0.501, turned by atan(0.001 / 0.501).
+    const Vec3 edge = point(1.0, 0.5) - Vec3(0, 5, 0);
+    CHECK(glm::length(edge) == Approx(1.002).epsilon(1e-12));
+    CHECK(std::atan2(-edge.z, edge.x) == Approx(std::atan(0.001 / 0.501)).epsilon(1e-9));
+    // The centre of an odd lattice: a thousandth of the axes off centre.
+    CHECK(glm::length(point(0.5, 0.5) - Vec3(0.002 / std::sqrt(2.0), 5, -0.002 / std::sqrt(2.0))) < 1e-12);
+    // POV-Ray's turn near the z axis: axes about y.
+    const OrientedDiscLight ahead{Vec3(0, 0, 5), 1.0};
+    const std::optional<OrientedDiscLight::GridPoints> side = ahead.gridFrom(Vec3(0.0));
+    REQUIRE(side);
+    const BeamRay toEdge = side->toward(1.0, 0.5);
+    const Vec3 off = toEdge.ray.origin + toEdge.distance * toEdge.ray.dir - Vec3(0, 0, 5);
+    CHECK(std::abs(off.z) < 1e-12);
+    CHECK(std::abs(off.y) < 0.01);  // cross(z, y) = -x: the first axis along x
+    CHECK(std::abs(std::abs(off.x) - 1.002) < 1e-3);
 }
 
 TEST_CASE("Sphere beams: the level-K pieces' central rays are the 2^K x 2^K grid's points, bit for bit", "[lights]") {

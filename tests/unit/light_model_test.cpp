@@ -60,12 +60,20 @@ TEST_CASE("area_light forms: rectangle, segment, sphere, point", "[lights]") {
     Light plain;
     CHECK(std::holds_alternative<PointLight>(makeLightModel(plain, scene).form));
 
-    // circular orient: a sphere of half the first axis's length.
+    // circular orient: POV-Ray's disc of half the first axis's length,
+    // facing the point; with the paper's emitter a sphere of that radius.
     Light sphere = withArea(3.0 * x, 3.0 * z, 6, 6);
     sphere.area->circular = sphere.area->orient = true;
     sphere.area->adaptive = 1;
     sphere.area->jitter = true;
+    const LightModel disc = makeLightModel(sphere, scene);
+    REQUIRE(std::holds_alternative<OrientedDiscLight>(disc.form));
+    CHECK(std::get<OrientedDiscLight>(disc.form).radius == 1.5);
+    CHECK(std::get<OrientedDiscLight>(disc.form).centre == Vec3(1, 5, 2));
+    CHECK(disc.emitter == LightEmitter::Povray);
+    sphere.asos.emitter = LightEmitter::Panel;
     const LightModel ball = makeLightModel(sphere, scene);
+    CHECK(ball.emitter == LightEmitter::Panel);
     REQUIRE(std::holds_alternative<SphereLight>(ball.form));
     CHECK(std::get<SphereLight>(ball.form).radius == 1.5);
     CHECK(std::get<SphereLight>(ball.form).centre == Vec3(1, 5, 2));
@@ -81,6 +89,16 @@ TEST_CASE("area_light forms: rectangle, segment, sphere, point", "[lights]") {
     CHECK((sampled.count1 == 12 && sampled.count2 == 12));
     CHECK(sampled.asos == AsosSettings{0.25, 6, true});
     CHECK(makeLightModel(withArea(2.0 * x, Vec3(0.0), 8, 3), scene, 12).count1 == 12);
+
+    // POV-Ray's fade and area_illumination travel with the model.
+    Light faded = withArea(2.0 * x, 3.0 * z, 4, 5);
+    faded.fadeDistance = 2.0;
+    faded.fadePower = 2.0;
+    faded.areaIllumination = true;
+    const LightModel fading = makeLightModel(faded, scene);
+    CHECK(fading.areaIllumination);
+    CHECK(fading.fade(4.0) == Approx(2.0 / 5.0));
+    CHECK(makeLightModel(withArea(2.0 * x, 3.0 * z, 4, 5), scene).fade(4.0) == 1.0);
 }
 
 TEST_CASE("Light forms asos refuses or warns about", "[lights]") {
@@ -109,7 +127,35 @@ TEST_CASE("Light forms asos refuses or warns about", "[lights]") {
     REQUIRE(orientMessages.size() == 2);  // not circular; unequal axes
     CHECK(orientMessages[0].severity == Severity::Warning);
     CHECK(orientMessages[1].severity == Severity::Warning);
-    CHECK(std::get<SphereLight>(makeLightModel(oriented, AsosSettings{}).form).radius == 0.5);
+    CHECK(std::get<OrientedDiscLight>(makeLightModel(oriented, AsosSettings{}).form).radius == 0.5);
+
+    // Counts: unequal ones warn (as POV-Ray does); a count of 1 along one
+    // axis is refused (POV-Ray turns a line toward each point); 1 x 1 is a
+    // point light, with POV-Ray's warning.
+    Light uneven = withArea(x, z, 4, 6);
+    uneven.area->circular = uneven.area->orient = true;
+    auto [unevenOk, unevenMessages] = check(uneven);
+    CHECK(unevenOk);
+    REQUIRE(unevenMessages.size() == 1);
+    CHECK_THAT(unevenMessages[0].message, Catch::Contains("counts"));
+    Light line = withArea(x, z, 4, 1);
+    line.area->circular = line.area->orient = true;
+    CHECK_FALSE(check(line).first);
+    Light single = withArea(x, z, 1, 1);
+    single.area->circular = single.area->orient = true;
+    auto [singleOk, singleMessages] = check(single);
+    CHECK(singleOk);
+    REQUIRE(singleMessages.size() == 1);
+    CHECK(singleMessages[0].severity == Severity::Warning);
+    CHECK_FALSE(makeLightModel(single, AsosSettings{}).isArea());
+    // circular without orient and a count of 1: POV-Ray drops circular.
+    Light flatLine = withArea(x, z, 4, 1);
+    flatLine.area->circular = true;
+    auto [flatOk, flatMessages] = check(flatLine);
+    CHECK(flatOk);
+    REQUIRE(flatMessages.size() == 1);
+    CHECK(flatMessages[0].severity == Severity::Warning);
+    CHECK(std::holds_alternative<SegmentLight>(makeLightModel(flatLine, AsosSettings{}).form));
 
     CHECK_FALSE(check(withArea(x, 2.0 * x, 4, 4)).first);  // parallel axes
     Light negative = withArea(x, z, 4, 4);
@@ -127,5 +173,6 @@ TEST_CASE("Light method, shadow apex and light form names", "[lights]") {
     CHECK(parseShadowApex("surface") == ShadowApex::Surface);
     CHECK_FALSE(parseShadowApex("under"));
     CHECK(std::string(lightFormName(LightForm(SegmentLight{}))) == "linear");
+    CHECK(std::string(lightFormName(LightForm(OrientedDiscLight{}))) == "oriented disc");
     CHECK(std::string(lightFormName(LightForm{})) == "point");
 }

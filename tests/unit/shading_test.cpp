@@ -3,6 +3,7 @@
 #include <cmath>
 #include <vector>
 
+#include "asos/lights/light_model.hpp"
 #include "asos/render/shading.hpp"
 
 using namespace asos;
@@ -132,17 +133,17 @@ TEST_CASE("Specular uses the halfway vector and 1/roughness", "[shading]") {
 
 TEST_CASE("Light fade follows POV-Ray's formula", "[shading]") {
     Light l;
-    CHECK(lightFade(l, 123.0) == 1.0);
+    CHECK(lightFade(l.fadeDistance, l.fadePower, 123.0) == 1.0);
     l.fadeDistance = 10.0;
     l.fadePower = 2.0;
-    CHECK(lightFade(l, 10.0) == Approx(1.0));
-    CHECK(lightFade(l, 20.0) == Approx(2.0 / 5.0));
-    CHECK(lightFade(l, 0.0) == Approx(2.0));  // brighter than nominal up close
+    CHECK(lightFade(l.fadeDistance, l.fadePower, 10.0) == Approx(1.0));
+    CHECK(lightFade(l.fadeDistance, l.fadePower, 20.0) == Approx(2.0 / 5.0));
+    CHECK(lightFade(l.fadeDistance, l.fadePower, 0.0) == Approx(2.0));  // brighter than nominal up close
     l.fadeDistance = 0.0;
-    CHECK(lightFade(l, 4.0) == Approx(1.0 / 16.0));
+    CHECK(lightFade(l.fadeDistance, l.fadePower, 4.0) == Approx(1.0 / 16.0));
     l.fadePower = 0.0;
     l.fadeDistance = 5.0;
-    CHECK(lightFade(l, 50.0) == 1.0);
+    CHECK(lightFade(l.fadeDistance, l.fadePower, 50.0) == 1.0);
     // Fade scales the sample's colour in directLight.
     l.fadePower = 1.0;
     Finish f;

@@ -20,6 +20,16 @@ struct BeamRay {
     double distance = kInfinity;
 };
 
+// Where a disc-shaped beam's rays end, along its axis w (lights/disc_beam.hpp):
+// every end lies on the apex's side of the plane at `distance` along w (or on
+// it), inside the circle of `radius` about the axis there as seen from the
+// apex, and within `reach` of the apex.
+struct EndCircle {
+    double distance = 0.0;
+    double radius = 0.0;
+    double reach = 0.0;
+};
+
 // The angle between two nonzero vectors, accurate at 0 and pi (atan2 of the
 // cross and dot products, not acos).
 double angleBetween(const Vec3& a, const Vec3& b);

@@ -20,6 +20,15 @@ struct TangentCone {
     double cos2Alpha = 1.0;       // cos^2 alpha, as (d - r)(d + r) / d^2
     // Requires distance > radius > 0.
     static TangentCone make(const Vec3& point, const Vec3& centre, double radius);
+    // The cone's half-angle, alpha.
+    double halfAngle() const { return std::asin(sinAlpha); }
+    // The rays end on the sphere's near cap, inside the tangent circle: at
+    // d cos^2 alpha along the axis, of radius d cos alpha sin alpha, within
+    // the tangent length d cos alpha.
+    EndCircle endCircle() const {
+        const double cosAlpha = std::sqrt(cos2Alpha);
+        return {distance * cos2Alpha, distance * cosAlpha * sinAlpha, distance * cosAlpha};
+    }
     // The ray from `origin` (the point) through the disc point (x, y), with
     // rho2 = x^2 + y^2 <= 1 and rim = sqrt(1 - rho2) given: the direction
     // (w + tan alpha (x u + y v)) cos psi, cos psi = 1 / sqrt(1 + tan^2 alpha

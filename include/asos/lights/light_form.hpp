@@ -1,8 +1,8 @@
 #pragma once
 // The forms a light takes, one type each in its own file, in the manner of
 // pbrt-v4's lights.h: a point (lights/point_light.hpp), a rectangle
-// (rectangle_light.hpp), a segment (segment_light.hpp) and a sphere
-// (sphere_light.hpp). Every area form answers the same questions: its beam
+// (rectangle_light.hpp), a segment (segment_light.hpp), POV-Ray's oriented
+// disc (oriented_disc_light.hpp) and the paper's sphere (sphere_light.hpp). Every area form answers the same questions: its beam
 // from a point and how a piece of it splits (for the ASOS shadow beams,
 // render/area_light_shadow.hpp), its grid's points seen from a point (for
 // the classic grid, render/grid_light.hpp), its emitted radiance (its size
@@ -22,6 +22,7 @@
 #include "asos/geometry/bounds.hpp"
 #include "asos/lights/light_lattice.hpp"
 #include "asos/lights/light_piece.hpp"
+#include "asos/lights/oriented_disc_light.hpp"
 #include "asos/lights/point_light.hpp"
 #include "asos/lights/rectangle_light.hpp"
 #include "asos/lights/segment_light.hpp"
@@ -78,17 +79,20 @@ concept AreaLightBeam = requires(const B& beam, const LightPiece& piece, LightPi
     // Where the piece lies against the plane through the apex with this
     // normal: Unknown where only rays can tell.
     { beam.horizonSide(piece, direction) } -> std::same_as<HorizonSide>;
-    // The emitter's weighting along a direction. Inline: it is asked for
-    // every sample.
+    // The paper's emitter's weighting along a direction (POV-Ray's points
+    // are isotropic). Inline: it is asked for every sample.
     { beam.emission(direction) } -> std::same_as<double>;
 };
 
 // The grid of an area light seen from one point (render/grid_light.hpp).
 template <class G>
 concept AreaLightGridPoints = requires(const G& grid, double s, const Vec3& direction) {
-    // The ray toward the light's point (s, t) in [0, 1]^2 and the distance to it.
+    // The ray toward the light's point (s, t) and the distance to it: for
+    // s, t in [0, 1] the light's square (rectangle, segment, POV-Ray's
+    // lattice's square) or its map's (the sphere's disc); beyond it, the
+    // rectangle's or segment's plane or line continued (POV-Ray's jitter).
     { grid.toward(s, s) } -> std::same_as<BeamRay>;
-    // The emitter's weighting along a direction.
+    // The paper's emitter's weighting along a direction.
     { grid.emission(direction) } -> std::same_as<double>;
 };
 
@@ -121,7 +125,7 @@ concept AreaLightForm = LightFormBasics<L> && AreaLightBeam<typename L::Beam> &&
     { light.bounds() } -> std::same_as<Bounds3>;
 };
 
-using LightForm = std::variant<PointLight, RectangleLight, SegmentLight, SphereLight>;
+using LightForm = std::variant<PointLight, RectangleLight, SegmentLight, OrientedDiscLight, SphereLight>;
 
 namespace detail {
 template <class... L>
@@ -144,7 +148,7 @@ void withAreaForm(const LightForm& form, F&& f) {
         form);
 }
 
-// "point", "rectangular", "linear" or "spherical".
+// "point", "rectangular", "linear", "oriented disc" or "spherical".
 inline const char* lightFormName(const LightForm& form) {
     return std::visit([](const auto& light) -> const char* { return std::decay_t<decltype(light)>::kName; }, form);
 }

@@ -10,9 +10,11 @@
 //     quarters of the rectangle (Morton order: quarter q = i + 2 j), each
 //     carrying 4^-level of the light;
 //   - its grid's points seen from a point (render/grid_light.hpp);
-//   - its emitted radiance: intensity colour / area, weighted along a
-//     direction by |cos theta| to its normal, so that a point far in front
-//     of it receives its colour, as from a point light at its centre.
+//   - its emitted radiance with the paper's emitter: intensity colour /
+//     area, weighted along a direction by |cos theta| to its normal, so that
+//     a point far in front of it receives its colour, as from a point light
+//     at its centre (POV-Ray's emitter asks only how much of it a point
+//     sees: its points are isotropic).
 #include <algorithm>
 #include <cmath>
 #include <optional>

@@ -1,12 +1,20 @@
 #pragma once
 // The light an area light sends a shaded point, as a list of samples
-// (render/shading.hpp's LightSample): one per sub-beam of an ASOS shadow beam
-// that reaches the light (render/area_light_shadow.hpp), or one per point of
-// the classic grid that a plain shadow ray reaches (render/grid_light.hpp).
-// Either way each sample is shaded along its own direction (diffuse and
-// highlights), and the samples' colours add up to the light's colour times
-// the emitter weighting of docs/lights.md (cos theta for rectangles) when
-// nothing is in the way.
+// (render/shading.hpp's LightSample), each shaded along its own direction
+// (diffuse and highlights). docs/lights.md has the model.
+//
+// POV-Ray's emitter (the default): the fraction of the light that reaches
+// the point, by ASOS shadow beams (render/area_light_shadow.hpp) or by
+// POV-Ray's grid (render/grid_light.hpp), lights it as one sample along the
+// direction of the light's centre, colour x fraction; with
+// area_illumination, as one sample per point of POV-Ray's lattice, each
+// colour x fraction / (n1 n2) along its own direction.
+//
+// The paper's emitter (`asos { emitter panel }`): one sample per sub-beam of
+// an ASOS shadow beam that reaches the light, or one per point of the
+// classic grid that a plain shadow ray reaches; the samples' colours add up
+// to the light's colour times the emitter weighting (cos theta for
+// rectangles) when nothing is in the way.
 #include <cstdint>
 #include <optional>
 #include <span>
@@ -150,12 +158,22 @@ struct AreaLightQuery {
 
 // The samples of an area light at a shaded point, by the lights' method
 // (setup().method) and apex, or by the setup's own sampler where it has one;
-// the span lives in `scratch` until its next use.
-// A shadowless light is unshadowed. Nothing comes from parts of the light
-// behind the surface.
+// the span lives in `scratch` until its next use. A shadowless light is
+// unshadowed.
 std::span<const LightSample> areaLightSamples(const Scene& scene, const SceneLights& lights,
                                               const AreaLightQuery& query, AreaLightScratch& scratch,
                                               RenderCounters& counters);
+
+// POV-Ray's emitter: whether the light lights the point at all. Without
+// area_illumination, only where the direction of the light's centre faces
+// the surface (POV-Ray tests it before any shadow ray: cos < EPSILON, the
+// light is skipped, however much of it lies above the horizon).
+bool povrayLightsPoint(const LightModel& model, const AreaLightQuery& query);
+// POV-Ray's emitter: the samples that light the point when `visible` of the
+// light reaches it (a point povrayLightsPoint lights). The span lives in
+// `scratch` until its next use.
+std::span<const LightSample> povrayAreaLightSamples(const LightModel& model, const AreaLightQuery& query,
+                                                    double visible, AreaLightScratch& scratch);
 
 // One sample that lights a surface of diffuse-only finish (brilliance 1, no
 // highlights, no fade) exactly as `samples` together: the sum of colour x

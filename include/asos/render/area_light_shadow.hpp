@@ -24,7 +24,18 @@
 
 namespace asos {
 
-// The samples of an area light (model.isArea()) by ASOS shadow beams.
+// POV-Ray's emitter: the fraction of an area light (model.isArea()) that
+// reaches the point, by ASOS shadow beams: the share of the light (its
+// form's pieces: uniform over a rectangle or a segment, over the square of
+// POV-Ray's disc map) whose rays no object blocks, parts of the light below
+// the surface's horizon included (they count as POV-Ray's shadow rays say:
+// blocked by the shaded object itself where it is a solid, not by a flat
+// one).
+double asosVisibleFraction(const Scene& scene, const LightModel& model, ShadowApex apex,
+                           const AreaLightQuery& query, AreaLightScratch& scratch, RenderCounters& counters);
+
+// The paper's emitter: the samples of an area light (model.isArea()) by ASOS
+// shadow beams. Nothing comes from parts of the light behind the surface.
 std::span<const LightSample> asosAreaLightSamples(const Scene& scene, const LightModel& model,
                                                   ShadowApex apex, const AreaLightQuery& query,
                                                   AreaLightScratch& scratch, RenderCounters& counters);

@@ -84,11 +84,6 @@ struct ShadeRequest {
 // pattern space (1: color2).
 Color evaluatePigment(const Pigment& pigment, const Vec3& worldPoint);
 
-// POV-Ray's light fade (Attenuate_Light): with fade_power > 0,
-// 2 / (1 + (d / fade_distance)^fade_power), or d^-fade_power when
-// fade_distance is 0; 1 otherwise.
-double lightFade(const Light& light, double distance);
-
 // The normal turned to face the incoming ray (POV-Ray flips it so).
 inline Vec3 facingNormal(const Vec3& normal, const Vec3& rayDir) {
     return glm::dot(normal, rayDir) > 0.0 ? -normal : normal;

@@ -23,12 +23,21 @@ struct Color {
     bool operator==(const Color&) const = default;
 };
 
+// What an area light's points are (docs/lights.md, "The light model"):
+// POV-Ray's isotropic point lights, shaded once along the direction of the
+// light's centre (the default), or the paper's emitters, each element
+// shaded along its own direction (a Lambertian panel for a rectangle).
+enum class LightEmitter { Povray, Panel };
+
 // Our extension, `asos { eps E max M jitter on|off }`: unset fields inherit
 // (object/light -> global_settings -> command line -> built-in defaults).
+// A light's block may also say `emitter povray|panel` (no inheritance: the
+// default is POV-Ray's).
 struct AsosOptions {
     std::optional<double> eps;
     std::optional<int> maxLevel;
     std::optional<bool> jitter;
+    std::optional<LightEmitter> emitter;
     bool operator==(const AsosOptions&) const = default;
 };
 
@@ -64,6 +73,9 @@ struct Light {
     double fadeDistance = 0.0;  // 0: no fade
     double fadePower = 0.0;
     bool shadowless = false;
+    // POV-Ray 3.7's area_illumination: each point of an area light shaded
+    // along its own direction (without it, once along the centre's).
+    bool areaIllumination = false;
     AsosOptions asos;
     SourceLoc loc;
 };

@@ -1,4 +1,4 @@
-// light_source: point, area, linear, spherical; fade, shadowless, asos.
+// light_source: point, area, linear, spherical; fade, shadowless, area_illumination, asos.
 light_source { <10, 10, -10>, color rgb 1 }
 light_source { <0, 5, 0> color rgb <1, 0.9, 0.8> shadowless }
 light_source {
@@ -7,7 +7,8 @@ light_source {
   adaptive 1
   jitter
 }
-light_source { <5, 5, 5>, rgb 1 area_light x*3, <0, 0, 0>, 6, 1 }
+light_source { <5, 5, 5>, rgb 1 area_light x*3, <0, 0, 0>, 6, 1 area_illumination }
+light_source { <5, 5, -5>, rgb 1 area_light x*3, z, 6, 3 area_illumination off asos { emitter panel } }
 light_source {
   <-5, 5, 5>, 1
   area_light <1, 0, 0>, <0, 1, 0>, 5, 5
