@@ -72,6 +72,7 @@ ASOS_KEYWORD(kw_ambient_light, "ambient_light")
 // our extension
 ASOS_KEYWORD(kw_asos, "asos")
 ASOS_KEYWORD(kw_eps, "eps")
+ASOS_KEYWORD(kw_highlights, "highlights")
 ASOS_KEYWORD(kw_max, "max")
 // colours
 struct kw_color : tok<sor<TAO_PEGTL_KEYWORD("color"), TAO_PEGTL_KEYWORD("colour")>> {};

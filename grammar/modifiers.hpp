@@ -30,7 +30,8 @@ struct transform_item : sor<translate_item, rotate_item, scale_item, matrix_item
 struct eps_item : if_must<kw_eps, float_value> {};
 struct max_item : if_must<kw_max, float_value> {};
 struct asos_jitter_item : if_must<kw_jitter, float_value> {};
-struct asos_entry : sor<eps_item, max_item, asos_jitter_item> {};
+struct asos_highlights_item : if_must<kw_highlights, float_value> {};
+struct asos_entry : sor<eps_item, max_item, asos_jitter_item, asos_highlights_item> {};
 struct asos_end : rbrace {};
 struct asos_block : if_must<kw_asos, block_open, entries<asos_entry>, asos_end> {};
 

@@ -42,6 +42,7 @@ AsosOptions inherit(const AsosOptions& own, const AsosOptions& outer) {
     if (!r.eps) r.eps = outer.eps;
     if (!r.maxLevel) r.maxLevel = outer.maxLevel;
     if (!r.jitter) r.jitter = outer.jitter;
+    if (!r.highlights) r.highlights = outer.highlights;
     return r;
 }
 
@@ -653,6 +654,7 @@ AsosOptions Interpreter::evalAsos(const Node& block, AsosOptions start) {
             break;
         }
         case Word::Jitter: start.jitter = evalBool(n[0]); break;
+        case Word::Highlights: start.highlights = evalBool(n[0]); break;
         default: fail(n, "this is not an asos option");
         }
     };

@@ -597,6 +597,7 @@ template <> struct action<g::scale_item> : ItemAction<Word::Scale, 1> {};
 template <> struct action<g::eps_item> : ItemAction<Word::Eps, 1> {};
 template <> struct action<g::max_item> : ItemAction<Word::Max, 1> {};
 template <> struct action<g::asos_jitter_item> : ItemAction<Word::Jitter, 1> {};
+template <> struct action<g::asos_highlights_item> : ItemAction<Word::Highlights, 1> {};
 template <> struct action<g::ambient_item> : ItemAction<Word::Ambient, 1> {};
 template <> struct action<g::diffuse_item> : ItemAction<Word::Diffuse, 1> {};
 template <> struct action<g::brilliance_item> : ItemAction<Word::Brilliance, 1> {};

@@ -23,12 +23,14 @@ struct Color {
     bool operator==(const Color&) const = default;
 };
 
-// Our extension, `asos { eps E max M jitter on|off }`: unset fields inherit
-// (object/light -> global_settings -> command line -> built-in defaults).
+// Our extension, `asos { eps E max M jitter on|off highlights on|off }`:
+// unset fields inherit (object/light -> global_settings -> command line ->
+// built-in defaults).
 struct AsosOptions {
     std::optional<double> eps;
     std::optional<int> maxLevel;
     std::optional<bool> jitter;
+    std::optional<bool> highlights;
     bool operator==(const AsosOptions&) const = default;
 };
 
