@@ -167,8 +167,25 @@ double highlightError(const Finish& finish, const Light& light, const SurfaceSpr
 
 double highlightVariation(const Finish& finish, std::span<const Light> lights, const SurfaceSpread& spread) {
     double variation = 0.0;
-    for (const Light& light : lights)
-        variation += highlightError(finish, light, spread) * largestComponent(light.color);
+    for (const Light& light : lights) {
+        double error = 0.0;
+        if (!light.area) {
+            error = highlightError(finish, light, spread);
+        } else {
+            // Each point of an area light shades as a point light with its
+            // share of the colour (docs/lights.md), so the light's error is
+            // the mean of its points' errors: estimated on a 3 x 3 grid of
+            // them.
+            Light point = light;
+            point.area.reset();
+            for (int j = -1; j <= 1; ++j)
+                for (int i = -1; i <= 1; ++i) {
+                    point.position = light.position + 0.5 * (double(i) * light.area->axis1 + double(j) * light.area->axis2);
+                    error += highlightError(finish, point, spread) / 9.0;
+                }
+        }
+        variation += error * largestComponent(light.color);
+    }
     return variation;
 }
 

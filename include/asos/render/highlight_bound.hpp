@@ -69,7 +69,9 @@ double highlightError(const Finish& finish, const Light& light, const SurfaceSpr
 
 // The sum over the lights of their highlight errors, each times the light's
 // largest colour component: how far the highlights' contribution to any
-// colour channel of the central ray may lie from the pyray's mean.
+// colour channel of the central ray may lie from the pyray's mean. An area
+// light's points each shade as a point light with a share of its colour, so
+// its error is the mean of theirs, taken over a 3 x 3 grid of its points.
 double highlightVariation(const Finish& finish, std::span<const Light> lights, const SurfaceSpread& spread);
 
 }  // namespace asos
