@@ -38,7 +38,7 @@ ASOS_BODY_CONTEXT(pigment_entry, Pigment, "expected a colour, checker, brick, a 
 ASOS_BODY_CONTEXT(finish_entry, Finish, "expected a finish item, as the macro is called in a finish")
 ASOS_BODY_CONTEXT(texture_entry, Texture, "expected pigment, finish or a transform, as the macro is called in a texture")
 ASOS_BODY_CONTEXT(global_entry, GlobalSettings, "expected a global setting, as the macro is called in global_settings")
-ASOS_BODY_CONTEXT(asos_entry, Asos, "expected eps, max or jitter, as the macro is called in an asos block")
+ASOS_BODY_CONTEXT(asos_entry, Asos, "expected eps, max, jitter or highlights, as the macro is called in an asos block")
 ASOS_BODY_CONTEXT(default_entry, Default, "expected texture, pigment or finish, as the macro is called in #default")
 // clang-format on
 #undef ASOS_BODY_CONTEXT
@@ -133,7 +133,7 @@ template <> inline constexpr auto error_message<matrix_values> = "expected '<' a
 template <> inline constexpr auto error_message<matrix_components> = "expected a number of the matrix";
 template <> inline constexpr auto error_message<matrix_value> = "expected a number of the matrix";
 template <> inline constexpr auto error_message<matrix_close> = "expected ',' or '>' after the numbers of the matrix";
-template <> inline constexpr auto error_message<asos_end> = "expected eps, max, jitter, emitter or '}' in the asos block";
+template <> inline constexpr auto error_message<asos_end> = "expected eps, max, jitter, highlights, emitter or '}' in the asos block";
 template <> inline constexpr auto error_message<emitter_kind> = "expected povray or panel after emitter";
 template <> inline constexpr auto error_message<pattern_second_colour<kw_checker>> = "expected the second colour of checker";
 template <> inline constexpr auto error_message<pattern_second_colour<kw_brick>> = "expected the second colour of brick";

@@ -73,6 +73,7 @@ ASOS_KEYWORD(kw_ambient_light, "ambient_light")
 // our extension
 ASOS_KEYWORD(kw_asos, "asos")
 ASOS_KEYWORD(kw_eps, "eps")
+ASOS_KEYWORD(kw_highlights, "highlights")
 ASOS_KEYWORD(kw_max, "max")
 ASOS_KEYWORD(kw_emitter, "emitter")
 ASOS_KEYWORD(kw_povray, "povray")

@@ -35,7 +35,8 @@ struct emitter_povray : kw_povray {};
 struct emitter_panel : kw_panel {};
 struct emitter_kind : sor<emitter_povray, emitter_panel> {};
 struct emitter_item : if_must<kw_emitter, emitter_kind> {};
-struct asos_entry : sor<eps_item, max_item, asos_jitter_item, emitter_item> {};
+struct asos_highlights_item : if_must<kw_highlights, float_value> {};
+struct asos_entry : sor<eps_item, max_item, asos_jitter_item, asos_highlights_item, emitter_item> {};
 struct asos_end : rbrace {};
 struct asos_block : if_must<kw_asos, block_open, entries<asos_entry>, asos_end> {};
 

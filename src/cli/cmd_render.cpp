@@ -1,5 +1,6 @@
 // asos render SCENE -o OUT.png|.exr|.tif|… [-W 640 -H 480] [--method asos|single|grid|jitter|adaptive|am1]
-//   [--eps E|A/B --max M --jitter on|off --pattern-edges on|off --pattern-filter on|off]
+//   [--eps E|A/B --max M --jitter on|off --highlights on|off --pattern-edges on|off
+//    --pattern-filter on|off]
 //   [--samples N] [--threshold T --depth D]
 //   [--light-method asos|grid] [--light-samples N] [--shadow-apex surface|behind]
 //   [--bit-depth 8|16|half|float] [--threads N]
@@ -42,6 +43,7 @@ struct RenderArgs {
     std::optional<std::string> eps;
     std::optional<int> maxLevel;
     std::optional<std::string> jitter;
+    std::optional<std::string> highlights;
     std::string patternEdges = "off";
     std::optional<std::string> patternFilter;
     int samples = 4;
@@ -114,6 +116,12 @@ int runRender(const RenderArgs& args) {
         else if (*args.jitter == "off") settings.asos.jitter = false;
         else problems.push_back("--jitter wants on or off, not '" + *args.jitter + "'");
         settings.adaptive.jitter = settings.asos.jitter.value_or(false);
+    }
+    if (args.highlights) {
+        if (*args.highlights == "on" || *args.highlights == "off")
+            settings.asos.highlights = *args.highlights == "on";
+        else
+            problems.push_back("--highlights wants on or off, not '" + *args.highlights + "'");
     }
     if (args.patternEdges == "on" || args.patternEdges == "off")
         settings.patternEdges = args.patternEdges == "on";
@@ -261,6 +269,9 @@ void addRenderCommand(CLI::App& app, CommandResult& result) {
     cmd->add_option("--max", args->maxLevel, "ASOS: MAX, the deepest subdivision level (default 4)");
     cmd->add_option("--jitter", args->jitter,
                     "on|off: ASOS jitters its MAX-rays, adaptive and am1 their sub-samples (default off)");
+    cmd->add_option("--highlights", args->highlights,
+                    "on|off: ASOS subdivides pixels one object covers where its phong or specular "
+                    "highlight may vary by more than EPS (default on)");
     cmd->add_option("--pattern-edges", args->patternEdges,
                     "on|off: ASOS also subdivides where a pigment pattern's edge crosses a pixel (default off)");
     cmd->add_option("--pattern-filter", args->patternFilter,

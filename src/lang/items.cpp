@@ -42,6 +42,7 @@ AsosOptions inherit(const AsosOptions& own, const AsosOptions& outer) {
     if (!r.eps) r.eps = outer.eps;
     if (!r.maxLevel) r.maxLevel = outer.maxLevel;
     if (!r.jitter) r.jitter = outer.jitter;
+    if (!r.highlights) r.highlights = outer.highlights;
     return r;
 }
 
@@ -658,6 +659,7 @@ AsosOptions Interpreter::evalAsos(const Node& block, AsosOptions start, bool for
             if (!forLight) fail(n, "emitter is an option of a light_source's asos block");
             start.emitter = n[0].word == Word::Panel ? LightEmitter::Panel : LightEmitter::Povray;
             break;
+        case Word::Highlights: start.highlights = evalBool(n[0]); break;
         default: fail(n, "this is not an asos option");
         }
     };

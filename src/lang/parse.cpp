@@ -600,6 +600,7 @@ template <> struct action<g::asos_jitter_item> : ItemAction<Word::Jitter, 1> {};
 template <> struct action<g::emitter_povray> : ItemAction<Word::Povray, 0> {};
 template <> struct action<g::emitter_panel> : ItemAction<Word::Panel, 0> {};
 template <> struct action<g::emitter_item> : ItemAction<Word::Emitter, 1> {};
+template <> struct action<g::asos_highlights_item> : ItemAction<Word::Highlights, 1> {};
 template <> struct action<g::ambient_item> : ItemAction<Word::Ambient, 1> {};
 template <> struct action<g::diffuse_item> : ItemAction<Word::Diffuse, 1> {};
 template <> struct action<g::brilliance_item> : ItemAction<Word::Brilliance, 1> {};

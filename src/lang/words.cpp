@@ -44,7 +44,7 @@ std::uint8_t classesOf(Word w) {
         return kKeyword | kColourItem | kMember;
     case Word::Gray: case Word::Grey:
         return kKeyword | kMember;
-    case Word::Asos: case Word::Eps: case Word::Emitter: case Word::Povray: case Word::Panel:
+    case Word::Asos: case Word::Eps: case Word::Highlights: case Word::Emitter: case Word::Povray: case Word::Panel:
         // Our extension's words are not POV-Ray's: they stay usable as identifiers
         // (a POV-Ray scene may well `#declare eps = …`).
         return 0;

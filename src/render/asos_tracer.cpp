@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "asos/render/highlight_bound.hpp"
 #include "asos/render/pattern_filter.hpp"
 #include "asos/shapes/depth_order.hpp"
 #include "asos/shapes/local_cone.hpp"
@@ -84,7 +85,16 @@ AsosTracer::AsosTracer(const RayTracer& tracer, const CameraModel& camera,
         selfShadowing_.push_back(scene_.primitive(i).canShadowItself() ? 1 : 0);
         patterned_.push_back(hasPattern(textureOf(o).pigment) ? 1 : 0);
     }
-    for (const Light& l : d.lights) lightSettings_.push_back(sceneSettings.refinedBy(l.asos));
+    for (const Light& l : d.lights) {
+        lightSettings_.push_back(sceneSettings.refinedBy(l.asos));
+        if (lightSettings_.back().highlights && !l.shadowless) highlightLights_.push_back(l);
+    }
+    highlighted_.reserve(d.objects.size());
+    for (std::uint32_t i = 0; i < scene_.objectCount(); ++i)
+        highlighted_.push_back(objectSettings_[i].highlights && !highlightLights_.empty() &&
+                                       hasHighlights(textureOf(d.objects[i]).finish)
+                                   ? 1
+                                   : 0);
 
     // An orthographic pyray is a prism, which a cone can only hold with its
     // apex far behind the camera; over an unbounded depth its rays spread by
@@ -156,6 +166,8 @@ private:
     std::optional<SurfaceHit> frontHit(const EyePyray& pyray, const Item& front) const;
     PatternChange patternEdge(const EyePyray& pyray, const Item& front,
                               const std::optional<SurfaceHit>& hit) const;
+    double highlightChange(const EyePyray& pyray, const Item& front,
+                           const std::optional<SurfaceHit>& hit) const;
     Ray jitteredRay(const ImageSquare& square, int level, std::uint32_t ix, std::uint32_t iy) const;
     Vec3 pointSample(const ImageSquare& square, int level, std::uint32_t ix, std::uint32_t iy,
                      const Ray& ray, const std::vector<Item>& items, const Node& parent);
@@ -272,13 +284,19 @@ std::optional<Vec3> AsosTracer::PixelTrace::settle(const EyePyray& pyray, const 
         const Item& front = to.items[first];
         std::optional<SurfaceHit> hit = frontHit(pyray, front);
         const PatternChange pattern = patternEdge(pyray, front, hit);
-        // A crease inside it is an edge between the parts of its surface.
+        // A crease inside it is an edge between the parts of its surface; a
+        // highlight that may change by more than EPS inside it is subdivided
+        // as an edge is.
+        double shading = 0.0;
         if (!pattern.mayChange && front.cls.creaseParts == 0) {
-            ++leaves_;
-            return shadeLeaf(pyray.square(), level, ix, iy, pyray.centralRay(), hit);
+            shading = highlightChange(pyray, front, hit);
+            if (!(shading > asos_.objectSettings_[front.object].eps)) {
+                ++leaves_;
+                return shadeLeaf(pyray.square(), level, ix, iy, pyray.centralRay(), hit);
+            }
         }
         to.hits[first] = 1;
-        to.nodes.push_back({pyray, ix, iy, first, count, std::move(hit), pattern});
+        to.nodes.push_back({pyray, ix, iy, first, count, std::move(hit), pattern, shading});
         return std::nullopt;
     }
     ++c_.eyeRays;
@@ -320,6 +338,8 @@ AsosTracer::PixelTrace::LevelDecision AsosTracer::PixelTrace::decide(int level, 
                                  n.hit && pigmentIndex(textureOf(scene_.object(object)).pigment,
                                                        n.hit->position) == 1,
                                  n.pattern.singleEdge);
+                } else if (n.shading > 0.0) {
+                    s_.tally.addShading(object, n.shading);
                 } else if (k.creaseParts == 0) {
                     continue;
                 }
@@ -427,6 +447,18 @@ PatternChange AsosTracer::PixelTrace::patternEdge(const EyePyray& pyray, const I
         return PatternChange{};
     const Footprint footprint(camera_, pyray.square(), hit->position, hit->normal, hit->t);
     return pigmentMayChange(textureOf(scene_.object(front.object)).pigment, footprint);
+}
+
+// How far the front object's highlights may stray from the central ray's
+// inside the pyray (render/highlight_bound.hpp); 0 where it has none.
+double AsosTracer::PixelTrace::highlightChange(const EyePyray& pyray, const Item& front,
+                                               const std::optional<SurfaceHit>& hit) const {
+    if (!asos_.highlighted_[front.object] || !hit || hit->objectIndex != static_cast<int>(front.object))
+        return 0.0;
+    c_.rayTests += 4;  // the corner rays against the object
+    const SurfaceSpread spread = SurfaceSpread::over(pyray, *hit, scene_.primitive(front.object));
+    return highlightVariation(textureOf(scene_.object(front.object)).finish, asos_.highlightLights_,
+                              spread);
 }
 
 Ray AsosTracer::PixelTrace::jitteredRay(const ImageSquare& square, int level, std::uint32_t ix,

@@ -75,7 +75,7 @@ public:
             out_ << "// (default)\n";
     }
     void asos(const AsosOptions& a, std::string_view indent) {
-        if (!a.eps && !a.maxLevel && !a.jitter && !a.emitter) return;
+        if (!a.eps && !a.maxLevel && !a.jitter && !a.highlights && !a.emitter) return;
         out_ << indent << "asos {";
         if (a.eps) {
             out_ << " eps ";
@@ -83,6 +83,7 @@ public:
         }
         if (a.maxLevel) out_ << " max " << *a.maxLevel;
         if (a.jitter) out_ << " jitter " << (*a.jitter ? "on" : "off");
+        if (a.highlights) out_ << " highlights " << (*a.highlights ? "on" : "off");
         if (a.emitter) out_ << " emitter " << (*a.emitter == LightEmitter::Panel ? "panel" : "povray");
         out_ << " }\n";
     }

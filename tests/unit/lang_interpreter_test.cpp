@@ -490,7 +490,7 @@ TEST_CASE("global settings, background, asos options, #version", "[lang][interpr
         #version 3.6;
         global_settings { assumed_gamma 2.2 max_trace_level 7 ambient_light rgb 0.5 asos { eps 0.01 max 4 jitter off } }
         background { color rgb <0.1, 0.2, 0.3> }
-        union { sphere { 0, 1 asos { max 2 } } sphere { 0, 1 no_shadow } asos { eps 0.5 jitter on } no_shadow }
+        union { sphere { 0, 1 asos { max 2 } } sphere { 0, 1 no_shadow } asos { eps 0.5 jitter on highlights off } no_shadow }
         #version 3.7;
     )");
 
@@ -507,6 +507,8 @@ TEST_CASE("global settings, background, asos options, #version", "[lang][interpr
     CHECK(scene.objects[0].asos.maxLevel == 2);
     CHECK(scene.objects[0].asos.eps == 0.5);
     CHECK(scene.objects[0].asos.jitter == true);
+    CHECK(scene.objects[0].asos.highlights == false);
+    CHECK(!scene.globals.asos.highlights);
     CHECK(scene.objects[0].noShadow);
 }
 

@@ -27,8 +27,8 @@ namespace asos::lang {
     /* object modifiers, pigments, finishes */                                                  \
     WORD(Open, "open") WORD(Pigment, "pigment") WORD(Finish, "finish") WORD(Texture, "texture")             \
     WORD(Translate, "translate") WORD(Rotate, "rotate") WORD(Scale, "scale") WORD(Matrix, "matrix")         \
-    WORD(NoShadow, "no_shadow") WORD(Asos, "asos") WORD(Eps, "eps") WORD(Emitter, "emitter")             \
-    WORD(Povray, "povray") WORD(Panel, "panel") WORD(Checker, "checker")                             \
+    WORD(NoShadow, "no_shadow") WORD(Asos, "asos") WORD(Eps, "eps") WORD(Highlights, "highlights")     \
+    WORD(Emitter, "emitter") WORD(Povray, "povray") WORD(Panel, "panel") WORD(Checker, "checker")    \
     WORD(Brick, "brick") WORD(BrickSize, "brick_size") WORD(Mortar, "mortar")                          \
     WORD(Ambient, "ambient") WORD(Diffuse, "diffuse") WORD(Brilliance, "brilliance") WORD(Phong, "phong")   \
     WORD(PhongSize, "phong_size") WORD(Specular, "specular") WORD(Roughness, "roughness")                \

@@ -45,6 +45,10 @@ struct AsosScratch {
         // Resolved by one Full object whose pigment pattern may change in
         // the pyray: marginal on the pattern, not on the object's outline.
         PatternChange pattern;
+        // Covered by one Full object without a crease, whose highlights may
+        // stray from the K-ray's by this much inside the pyray
+        // (render/highlight_bound.hpp); 0 otherwise.
+        double shading = 0.0;
     };
     std::vector<Item> items[2];
     std::vector<std::uint8_t> hits[2];  // per item: the node's K-ray hits the object
@@ -108,6 +112,11 @@ private:
     bool patternFilter_;
     std::vector<std::uint8_t> selfShadowing_;
     std::vector<std::uint8_t> patterned_;
+    // Per object: its highlights are bounded inside the pyrays it covers
+    // (a finish with phong or specular, its settings' highlights on, and a
+    // light that gives highlights and counts them).
+    std::vector<std::uint8_t> highlighted_;
+    std::vector<Light> highlightLights_;  // the lights whose highlights count
     double eyeTMax_ = kInfinity;  // where eye pyrays end: beyond every object, or never
 };
 

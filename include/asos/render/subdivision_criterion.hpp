@@ -21,7 +21,11 @@
 // sum_p c_p cov_p with c_p in [0,1] changes by sum_p (c_p - 1/2) Δcov_p, at
 // most half the sum of |Δcov_p|: each part counts half (for two parts, one
 // edge, exactly the paper's term). A tip, around which the normal turns all
-// round, counts its pyrays whole. docs/algorithm.md has the argument.
+// round, counts its pyrays whole. A pyray whose shading (a highlight) may
+// change by up to `range` over it, though one object covers it without a
+// crease, counts as a pyray that may change by `range` times its area.
+// docs/algorithm.md has the argument.
+#include <algorithm>
 #include <cstdint>
 #include <vector>
 
@@ -31,7 +35,7 @@ class SubdivisionTally {
 public:
     // The part of an entry for an object's outline (or its pattern, or its
     // order against another object), and for a tip.
-    static constexpr std::uint8_t kWhole = 0xff, kTip = 0xfe;
+    static constexpr std::uint8_t kWhole = 0xff, kTip = 0xfe, kShading = 0xfd;
 
     // One marginal pyray's verdict on one object.
     void add(std::uint32_t object, bool centralRayHits, bool singleEdge) {
@@ -44,6 +48,14 @@ public:
     }
     // A pyray that may hold a tip of the object: counted whole.
     void addTip(std::uint32_t object) { count(entry(object, kTip, 1.0), true, false); }
+    // A pyray the object covers whose shading may change by up to `range`
+    // inside it (render/highlight_bound.hpp): the entry's weight is the
+    // largest range of its pyrays, so the bound holds for each.
+    void addShading(std::uint32_t object, double range) {
+        Entry& e = entry(object, kShading, range);
+        e.weight = std::max(e.weight, range);
+        count(e, true, false);
+    }
 
     // The paper's estimate of the largest change of the pixel intensity that
     // subdividing all marginal K-pyrays could produce, in units of the pixel.
@@ -66,7 +78,7 @@ public:
         int in = 0;
         int out = 0;
         bool allSingleEdge = true;
-        double weight = 1.0;  // 1/2 for a part beside a crease
+        double weight = 1.0;  // 1/2 for a part beside a crease, the range for shading
     };
     const std::vector<Entry>& entries() const { return entries_; }
 

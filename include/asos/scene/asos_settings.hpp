@@ -1,8 +1,9 @@
 #pragma once
-// ASOS's three knobs (paper: EPS, MAX and jittering of MAX-rays) as they
-// apply to one object or light. Sources, strongest first: the object's or
+// ASOS's three knobs (paper: EPS, MAX and jittering of MAX-rays), and
+// whether highlights inside covered pyrays are bounded (beyond the paper), as
+// they apply to one object or light. Sources, strongest first: the object's or
 // light's own `asos { … }` block, the command line, global_settings' block,
-// the built-in defaults (EPS 1/64, MAX 4, jitter off). Where a pyray involves
+// the built-in defaults (EPS 1/64, MAX 4, jitter off, highlights on). Where a pyray involves
 // several objects, the finest setting among them wins (docs/algorithm.md,
 // "Per-object settings").
 #include <algorithm>
@@ -19,6 +20,10 @@ struct AsosSettings {
     double eps = 1.0 / 64.0;
     int maxLevel = 4;
     bool jitter = false;
+    // An object: subdivide a pyray it covers where its highlights may vary
+    // by more than EPS (docs/algorithm.md, "Highlights inside covered
+    // pixels"). A light: count its highlights there.
+    bool highlights = true;
 
     bool operator==(const AsosSettings&) const = default;
 
@@ -28,15 +33,17 @@ struct AsosSettings {
         if (options.eps) s.eps = *options.eps;
         if (options.maxLevel) s.maxLevel = *options.maxLevel;
         if (options.jitter) s.jitter = *options.jitter;
+        if (options.highlights) s.highlights = *options.highlights;
         return s;
     }
     // The finer of two settings, field by field: the smaller EPS, the deeper
-    // MAX, jitter if either asks for it.
+    // MAX, jitter and highlights if either asks for them.
     AsosSettings finest(const AsosSettings& o) const {
-        return {std::min(eps, o.eps), std::max(maxLevel, o.maxLevel), jitter || o.jitter};
+        return {std::min(eps, o.eps), std::max(maxLevel, o.maxLevel), jitter || o.jitter,
+                highlights || o.highlights};
     }
     // The identity of finest(): coarser than any valid setting.
-    static AsosSettings coarsest() { return {kInfinity, 0, false}; }
+    static AsosSettings coarsest() { return {kInfinity, 0, false, false}; }
 };
 
 // The scene-wide setting: built-in defaults, refined by global_settings'

@@ -29,14 +29,16 @@ struct Color {
 // shaded along its own direction (a Lambertian panel for a rectangle).
 enum class LightEmitter { Povray, Panel };
 
-// Our extension, `asos { eps E max M jitter on|off }`: unset fields inherit
-// (object/light -> global_settings -> command line -> built-in defaults).
+// Our extension, `asos { eps E max M jitter on|off highlights on|off }`:
+// unset fields inherit (object/light -> global_settings -> command line ->
+// built-in defaults).
 // A light's block may also say `emitter povray|panel` (no inheritance: the
 // default is POV-Ray's).
 struct AsosOptions {
     std::optional<double> eps;
     std::optional<int> maxLevel;
     std::optional<bool> jitter;
+    std::optional<bool> highlights;
     std::optional<LightEmitter> emitter;
     bool operator==(const AsosOptions&) const = default;
 };
