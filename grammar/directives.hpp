@@ -17,6 +17,7 @@ struct camera_block;
 struct pigment_block;
 struct finish_block;
 struct texture_block;
+struct colour_map_block;
 struct block_open;
 struct unsupported_item;
 
@@ -94,7 +95,7 @@ struct declared_target : seq<declared_name, star<subscript>> {};
 struct declare_equals : equals {};
 struct declare_semicolon : semicolon {};
 struct declarable_block : sor<object_statement, light_source_block, camera_block, pigment_block,
-                              finish_block, texture_block> {};
+                              finish_block, texture_block, colour_map_block> {};
 // POV-Ray wants the ';' after a float, vector or colour, not after a string,
 // a block, an array or a macro's value (which may be a block). A string is told
 // by how it starts: a literal or a function whose value is a string.

@@ -34,7 +34,7 @@ ASOS_BODY_CONTEXT(object_modifier, ObjectModifier, "expected an object modifier,
 ASOS_BODY_CONTEXT(union_entry, Union, "expected an object, a light_source or an object modifier, as the macro is called in a union")
 ASOS_BODY_CONTEXT(light_entry, Light, "expected a light_source item, as the macro is called in a light_source")
 ASOS_BODY_CONTEXT(camera_entry, Camera, "expected a camera item, as the macro is called in a camera")
-ASOS_BODY_CONTEXT(pigment_entry, Pigment, "expected a colour, checker, brick, a transform, brick_size or mortar, as the macro is called in a pigment")
+ASOS_BODY_CONTEXT(pigment_entry, Pigment, "expected a colour, a pattern, a transform or a pattern modifier, as the macro is called in a pigment")
 ASOS_BODY_CONTEXT(finish_entry, Finish, "expected a finish item, as the macro is called in a finish")
 ASOS_BODY_CONTEXT(texture_entry, Texture, "expected pigment, finish or a transform, as the macro is called in a texture")
 ASOS_BODY_CONTEXT(global_entry, GlobalSettings, "expected a global setting, as the macro is called in global_settings")
@@ -136,7 +136,11 @@ template <> inline constexpr auto error_message<matrix_close> = "expected ',' or
 template <> inline constexpr auto error_message<asos_end> = "expected eps, max, jitter or '}' in the asos block";
 template <> inline constexpr auto error_message<pattern_second_colour<kw_checker>> = "expected the second colour of checker";
 template <> inline constexpr auto error_message<pattern_second_colour<kw_brick>> = "expected the second colour of brick";
-template <> inline constexpr auto error_message<pigment_end> = "expected a colour, checker, brick, a transform, brick_size, mortar or '}' in the pigment";
+template <> inline constexpr auto error_message<pigment_end> = "expected a colour, a pattern (checker, brick, gradient, radial, onion, marble, wood, leopard, bozo, spotted, granite, agate), a transform, a pattern modifier or '}' in the pigment";
+template <> inline constexpr auto error_message<map_entry_value> = "expected the value of the colour map entry";
+template <> inline constexpr auto error_message<map_entry_colour> = "expected the colour of the colour map entry";
+template <> inline constexpr auto error_message<map_entry_close> = "expected ']' to close the colour map entry";
+template <> inline constexpr auto error_message<colour_map_end> = "expected an entry '[value colour]' or '}' in the colour map";
 template <> inline constexpr auto error_message<reflection_value> = "expected a colour or a float after reflection";
 template <> inline constexpr auto error_message<finish_end> = "expected a finish item (ambient, diffuse, brilliance, phong, phong_size, specular, roughness, reflection) or '}'";
 template <> inline constexpr auto error_message<texture_end> = "expected pigment, finish, a transform or '}' in the texture";
@@ -165,7 +169,7 @@ template <> inline constexpr auto error_message<object_base> = "expected an obje
 template <> inline constexpr auto error_message<light_position> = "expected the position of the light";
 template <> inline constexpr auto error_message<light_end> = "expected a light_source item or '}'";
 template <> inline constexpr auto error_message<camera_end> = "expected a camera item or '}'";
-template <> inline constexpr auto error_message<global_settings_end> = "expected assumed_gamma, max_trace_level, ambient_light, asos or '}' in global_settings";
+template <> inline constexpr auto error_message<global_settings_end> = "expected assumed_gamma, max_trace_level, ambient_light, noise_generator, asos or '}' in global_settings";
 template <> inline constexpr auto error_message<background_colour> = "expected the colour of the background";
 template <> inline constexpr auto error_message<background_end> = "expected '}' after the colour of the background";
 // top
