@@ -13,5 +13,5 @@ box { 0, 1 pigment { bozo } }
 box { 1, 2 pigment { spotted triangle_wave } }
 box { 2, 3 pigment { granite scale 0.5 } }
 box { 3, 4 pigment { leopard } }
-box { 4, 5 pigment { onion } }
+box { 4, 5 pigment { onion translate < -1 0 0.5 > } }  // commas between components are optional
 plane { y, -1 pigment { rgb 1 turbulence 0.5 color_map { Stone } } }
