@@ -71,6 +71,30 @@ LatticeAxis latticeAxis(double x) {
 
 }  // namespace
 
+PovNoise::Cell PovNoise::cellOf(const Vec3& p) const {
+    const LatticeAxis ax = latticeAxis(p.x), ay = latticeAxis(p.y), az = latticeAxis(p.z);
+    Cell c;
+    c.x0 = ax.fraction;
+    c.y0 = ay.fraction;
+    c.z0 = az.fraction;
+    c.x1 = c.x0 - 1.0;
+    c.y1 = c.y0 - 1.0;
+    c.z1 = c.z0 - 1.0;
+    c.sx = scurve(c.x0);
+    c.sy = scurve(c.y0);
+    c.sz = scurve(c.z0);
+    c.tx = 1.0 - c.sx;
+    c.ty = 1.0 - c.sy;
+    c.tz = 1.0 - c.sz;
+    auto hash2 = [&](int a, int b) { return static_cast<int>(hash_[static_cast<int>(hash_[a]) ^ b]); };
+    c.h00 = hash2(ax.cell, ay.cell);
+    c.h10 = hash2(ax.cell + 1, ay.cell);
+    c.h01 = hash2(ax.cell, ay.cell + 1);
+    c.h11 = hash2(ax.cell + 1, ay.cell + 1);
+    c.iz = az.cell;
+    return c;
+}
+
 const PovNoise& PovNoise::tables() {
     static const PovNoise instance;
     return instance;
@@ -121,29 +145,21 @@ double PovNoise::noise(const Vec3& p, int generator) const {
         // POV-Ray's correction of the generator's bias to about [0, 1].
         return std::clamp(0.5 * (1.59 * solidNoise(p) + 0.985), 0.0, 1.0);
     }
-    const LatticeAxis ax = latticeAxis(p.x), ay = latticeAxis(p.y), az = latticeAxis(p.z);
-    const double x0 = ax.fraction, y0 = ay.fraction, z0 = az.fraction;
-    const double x1 = x0 - 1.0, y1 = y0 - 1.0, z1 = z0 - 1.0;
-    const double sx = scurve(x0), sy = scurve(y0), sz = scurve(z0);
-    const double tx = 1.0 - sx, ty = 1.0 - sy, tz = 1.0 - sz;
-    auto hash2 = [&](int a, int b) { return static_cast<int>(hash_[static_cast<int>(hash_[a]) ^ b]); };
+    const Cell c = cellOf(p);
     // The corner's entry in the random table and its linear term there.
     auto corner = [&](int xy, int z, double weight, double dx, double dy, double dz) {
         const double* m = &rtable_[(hash_[xy ^ z] & 0xFF) * 2];
         return weight * (m[1] + m[2] * dx + m[4] * dy + m[6] * dz);
     };
-    const int h00 = hash2(ax.cell, ay.cell), h10 = hash2(ax.cell + 1, ay.cell);
-    const int h01 = hash2(ax.cell, ay.cell + 1), h11 = hash2(ax.cell + 1, ay.cell + 1);
-    const int iz = az.cell;
     // The sum in POV-Ray's order (floating-point addition is not associative).
-    double sum = corner(h00, iz, tx * ty * tz, x0, y0, z0);
-    sum += corner(h10, iz, sx * ty * tz, x1, y0, z0);
-    sum += corner(h01, iz, tx * sy * tz, x0, y1, z0);
-    sum += corner(h11, iz, sx * sy * tz, x1, y1, z0);
-    sum += corner(h00, iz + 1, tx * ty * sz, x0, y0, z1);
-    sum += corner(h10, iz + 1, sx * ty * sz, x1, y0, z1);
-    sum += corner(h01, iz + 1, tx * sy * sz, x0, y1, z1);
-    sum += corner(h11, iz + 1, sx * sy * sz, x1, y1, z1);
+    double sum = corner(c.h00, c.iz, c.tx * c.ty * c.tz, c.x0, c.y0, c.z0);
+    sum += corner(c.h10, c.iz, c.sx * c.ty * c.tz, c.x1, c.y0, c.z0);
+    sum += corner(c.h01, c.iz, c.tx * c.sy * c.tz, c.x0, c.y1, c.z0);
+    sum += corner(c.h11, c.iz, c.sx * c.sy * c.tz, c.x1, c.y1, c.z0);
+    sum += corner(c.h00, c.iz + 1, c.tx * c.ty * c.sz, c.x0, c.y0, c.z1);
+    sum += corner(c.h10, c.iz + 1, c.sx * c.ty * c.sz, c.x1, c.y0, c.z1);
+    sum += corner(c.h01, c.iz + 1, c.tx * c.sy * c.sz, c.x0, c.y1, c.z1);
+    sum += corner(c.h11, c.iz + 1, c.sx * c.sy * c.sz, c.x1, c.y1, c.z1);
     if (generator == 2) {
         // POV-Ray's measured range of the sum, [-1.05242, 0.988997], onto [0, 1].
         sum += 1.05242;
@@ -155,33 +171,25 @@ double PovNoise::noise(const Vec3& p, int generator) const {
 }
 
 Vec3 PovNoise::dnoise(const Vec3& p) const {
-    const LatticeAxis ax = latticeAxis(p.x), ay = latticeAxis(p.y), az = latticeAxis(p.z);
-    const double x0 = ax.fraction, y0 = ay.fraction, z0 = az.fraction;
-    const double x1 = x0 - 1.0, y1 = y0 - 1.0, z1 = z0 - 1.0;
-    const double sx = scurve(x0), sy = scurve(y0), sz = scurve(z0);
-    const double tx = 1.0 - sx, ty = 1.0 - sy, tz = 1.0 - sz;
-    auto hash2 = [&](int a, int b) { return static_cast<int>(hash_[static_cast<int>(hash_[a]) ^ b]); };
+    const Cell c = cellOf(p);
     // Each component reads the table 8 places further on.
     auto corner = [&](Vec3& r, bool first, int xy, int z, double weight, double dx, double dy, double dz) {
         const double* m = &rtable_[(hash_[xy ^ z] & 0xFF) * 2];
-        for (int c = 0; c < 3; ++c, m += 8) {
+        for (int axis = 0; axis < 3; ++axis, m += 8) {
             const double term = weight * (m[1] + m[2] * dx + m[4] * dy + m[6] * dz);
-            r[c] = first ? term : r[c] + term;
+            r[axis] = first ? term : r[axis] + term;
         }
     };
-    const int h00 = hash2(ax.cell, ay.cell), h10 = hash2(ax.cell + 1, ay.cell);
-    const int h01 = hash2(ax.cell, ay.cell + 1), h11 = hash2(ax.cell + 1, ay.cell + 1);
-    const int iz = az.cell;
     Vec3 r(0.0);
     // POV-Ray's order, which differs from the scalar noise's.
-    corner(r, true, h00, iz, tx * ty * tz, x0, y0, z0);
-    corner(r, false, h10, iz, sx * ty * tz, x1, y0, z0);
-    corner(r, false, h11, iz, sx * sy * tz, x1, y1, z0);
-    corner(r, false, h01, iz, tx * sy * tz, x0, y1, z0);
-    corner(r, false, h01, iz + 1, tx * sy * sz, x0, y1, z1);
-    corner(r, false, h11, iz + 1, sx * sy * sz, x1, y1, z1);
-    corner(r, false, h10, iz + 1, sx * ty * sz, x1, y0, z1);
-    corner(r, false, h00, iz + 1, tx * ty * sz, x0, y0, z1);
+    corner(r, true, c.h00, c.iz, c.tx * c.ty * c.tz, c.x0, c.y0, c.z0);
+    corner(r, false, c.h10, c.iz, c.sx * c.ty * c.tz, c.x1, c.y0, c.z0);
+    corner(r, false, c.h11, c.iz, c.sx * c.sy * c.tz, c.x1, c.y1, c.z0);
+    corner(r, false, c.h01, c.iz, c.tx * c.sy * c.tz, c.x0, c.y1, c.z0);
+    corner(r, false, c.h01, c.iz + 1, c.tx * c.sy * c.sz, c.x0, c.y1, c.z1);
+    corner(r, false, c.h11, c.iz + 1, c.sx * c.sy * c.sz, c.x1, c.y1, c.z1);
+    corner(r, false, c.h10, c.iz + 1, c.sx * c.ty * c.sz, c.x1, c.y0, c.z1);
+    corner(r, false, c.h00, c.iz + 1, c.tx * c.ty * c.sz, c.x0, c.y0, c.z1);
     return r;
 }
 
@@ -223,29 +231,12 @@ double PovNoise::turbulence(const Vec3& p, int octaves, double omega, double lam
         const double n = noise(q, generator);
         return generator == 1 ? n : 2.0 * n - 0.5;
     };
-    double value = generator == 1 ? noise(p, 1) : std::clamp(octave(p), 0.0, 1.0);
-    double l = lambda, o = omega;
-    for (int i = 2; i <= octaves; ++i) {
-        value += o * octave(p * l);
-        if (i < octaves) {
-            l *= lambda;
-            o *= omega;
-        }
-    }
-    return value;
+    const double first = generator == 1 ? noise(p, 1) : std::clamp(octave(p), 0.0, 1.0);
+    return sumOctaves(first, p, octaves, omega, lambda, octave);
 }
 
 Vec3 PovNoise::dturbulence(const Vec3& p, int octaves, double omega, double lambda) const {
-    Vec3 result = dnoise(p);
-    double l = lambda, o = omega;
-    for (int i = 2; i <= octaves; ++i) {
-        result += o * dnoise(p * l);
-        if (i < octaves) {
-            l *= lambda;
-            o *= omega;
-        }
-    }
-    return result;
+    return sumOctaves(dnoise(p), p, octaves, omega, lambda, [&](const Vec3& q) { return dnoise(q); });
 }
 
 double PovNoise::cycloidal(double x) { return std::sin(x * 2.0 * std::numbers::pi); }

@@ -34,8 +34,28 @@ public:
     static double cycloidal(double x);
 
 private:
+    // A point's lattice cell: the fractions, their s-curves and the hashes
+    // of the cell's four columns, which Noise and DNoise share.
+    struct Cell {
+        double x0, y0, z0, x1, y1, z1, sx, sy, sz, tx, ty, tz;
+        int h00, h10, h01, h11, iz;
+    };
     PovNoise();
+    Cell cellOf(const Vec3& p) const;
     double solidNoise(const Vec3& p) const;
+    // POV-Ray's octave loop: octave i at p * lambda^(i-1), weighted omega^(i-1).
+    template <class T, class Octave>
+    static T sumOctaves(T value, const Vec3& p, int octaves, double omega, double lambda, Octave octave) {
+        double l = lambda, o = omega;
+        for (int i = 2; i <= octaves; ++i) {
+            value += o * octave(p * l);
+            if (i < octaves) {
+                l *= lambda;
+                o *= omega;
+            }
+        }
+        return value;
+    }
 
     std::array<std::uint16_t, 8192> hash_{};
     std::array<double, 534> rtable_{};
