@@ -17,6 +17,7 @@ struct camera_block;
 struct pigment_block;
 struct finish_block;
 struct texture_block;
+struct colour_map_block;
 struct block_open;
 struct unsupported_item;
 
@@ -93,8 +94,11 @@ struct declared_name : name {};
 struct declared_target : seq<declared_name, star<subscript>> {};
 struct declare_equals : equals {};
 struct declare_semicolon : semicolon {};
+// A declared texture followed by another: POV-Ray's layered texture, which
+// asos does not support (named here rather than as a puzzle after it).
+struct layered_texture : at<TAO_PEGTL_KEYWORD("texture")> {};
 struct declarable_block : sor<object_statement, light_source_block, camera_block, pigment_block,
-                              finish_block, texture_block> {};
+                              finish_block, texture_block, colour_map_block> {};
 // POV-Ray wants the ';' after a float, vector or colour, not after a string,
 // a block, an array or a macro's value (which may be a block). A string is told
 // by how it starts: a literal or a function whose value is a string.
@@ -109,7 +113,7 @@ struct macro_value : seq<lone_macro_call, macro_call> {};
 struct lone_name : seq<at<indexed_name, not_at<sor<expression_continues, one<'('>>>>, indexed_name> {};
 struct missing_semicolon : success {};
 struct declared_value
-    : sor<seq<declarable_block, opt<semicolon>>, seq<array_value, opt<semicolon>>,
+    : sor<seq<declarable_block, opt<semicolon>, opt<layered_texture>>, seq<array_value, opt<semicolon>>,
           seq<sor<macro_value, lone_name>, sor<semicolon, missing_semicolon>>,
           seq<at<string_start>, expression, opt<semicolon>>, seq<expression, declare_semicolon>> {};
 struct declare_directive : if_must<declare_start, declared_target, declare_equals, declared_value> {};

@@ -34,7 +34,7 @@ ASOS_BODY_CONTEXT(object_modifier, ObjectModifier, "expected an object modifier,
 ASOS_BODY_CONTEXT(union_entry, Union, "expected an object, a light_source or an object modifier, as the macro is called in a union")
 ASOS_BODY_CONTEXT(light_entry, Light, "expected a light_source item, as the macro is called in a light_source")
 ASOS_BODY_CONTEXT(camera_entry, Camera, "expected a camera item, as the macro is called in a camera")
-ASOS_BODY_CONTEXT(pigment_entry, Pigment, "expected a colour, checker, brick, a transform, brick_size or mortar, as the macro is called in a pigment")
+ASOS_BODY_CONTEXT(pigment_entry, Pigment, "expected a colour, a pattern, a transform or a pattern modifier, as the macro is called in a pigment")
 ASOS_BODY_CONTEXT(finish_entry, Finish, "expected a finish item, as the macro is called in a finish")
 ASOS_BODY_CONTEXT(texture_entry, Texture, "expected pigment, finish or a transform, as the macro is called in a texture")
 ASOS_BODY_CONTEXT(global_entry, GlobalSettings, "expected a global setting, as the macro is called in global_settings")
@@ -137,7 +137,11 @@ template <> inline constexpr auto error_message<asos_end> = "expected eps, max, 
 template <> inline constexpr auto error_message<emitter_kind> = "expected povray or panel after emitter";
 template <> inline constexpr auto error_message<pattern_second_colour<kw_checker>> = "expected the second colour of checker";
 template <> inline constexpr auto error_message<pattern_second_colour<kw_brick>> = "expected the second colour of brick";
-template <> inline constexpr auto error_message<pigment_end> = "expected a colour, checker, brick, a transform, brick_size, mortar or '}' in the pigment";
+template <> inline constexpr auto error_message<pigment_end> = "expected a colour, a pattern (checker, brick, gradient, radial, onion, marble, wood, leopard, bozo, spotted, granite, agate), a transform, a pattern modifier or '}' in the pigment";
+template <> inline constexpr auto error_message<map_entry_value> = "expected the value of the colour map entry";
+template <> inline constexpr auto error_message<map_entry_colour> = "expected the colour of the colour map entry";
+template <> inline constexpr auto error_message<map_entry_close> = "expected ']' to close the colour map entry";
+template <> inline constexpr auto error_message<colour_map_end> = "expected an entry '[value colour]' or '}' in the colour map";
 template <> inline constexpr auto error_message<reflection_value> = "expected a colour or a float after reflection";
 template <> inline constexpr auto error_message<finish_end> = "expected a finish item (ambient, diffuse, brilliance, phong, phong_size, specular, roughness, reflection) or '}'";
 template <> inline constexpr auto error_message<texture_end> = "expected pigment, finish, a transform or '}' in the texture";
@@ -166,7 +170,7 @@ template <> inline constexpr auto error_message<object_base> = "expected an obje
 template <> inline constexpr auto error_message<light_position> = "expected the position of the light";
 template <> inline constexpr auto error_message<light_end> = "expected a light_source item or '}'";
 template <> inline constexpr auto error_message<camera_end> = "expected a camera item or '}'";
-template <> inline constexpr auto error_message<global_settings_end> = "expected assumed_gamma, max_trace_level, ambient_light, asos or '}' in global_settings";
+template <> inline constexpr auto error_message<global_settings_end> = "expected assumed_gamma, max_trace_level, ambient_light, noise_generator, asos or '}' in global_settings";
 template <> inline constexpr auto error_message<background_colour> = "expected the colour of the background";
 template <> inline constexpr auto error_message<background_end> = "expected '}' after the colour of the background";
 // top
@@ -184,6 +188,7 @@ template <> inline constexpr auto rejection_message<unknown_directive> = "unknow
 template <> inline constexpr auto rejection_message<cylinder_light> = "'cylinder' lights are not supported by asos";
 template <> inline constexpr auto rejection_message<cylinder_camera> = "the 'cylinder' camera is not supported by asos";
 template <> inline constexpr auto rejection_message<texture_pattern> = "texture patterns ('{}' of textures) are not supported by asos; use {} in the pigment";
+template <> inline constexpr auto rejection_message<layered_texture> = "layered textures (a texture followed by another) are not supported by asos";
 template <> inline constexpr auto rejection_message<reflection_block> = "'reflection { … }' is not supported by asos; write reflection followed by a colour or a float";
 template <> inline constexpr auto rejection_message<pattern_of_blocks<kw_checker>> = "'checker' of pigments or textures is not supported by asos; give checker two colours";
 template <> inline constexpr auto rejection_message<pattern_of_blocks<kw_brick>> = "'brick' of pigments or textures is not supported by asos; give brick two colours";

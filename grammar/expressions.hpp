@@ -96,7 +96,11 @@ struct plain_vector_text {
 };
 struct plain_vector : tok<plain_vector_text> {};
 
-struct vector_components : list_must<vector_component, comma> {};
+// POV-Ray reads the commas between components as optional (woods.inc
+// writes `< -1 0 0 >`); without one, the next expression starts a component.
+struct vector_next_component : seq<expression> {};  // no message: its failure ends the list
+struct vector_components
+    : seq<vector_component, star<sor<seq<comma, vector_component>, vector_next_component>>> {};
 struct vector_literal : if_must<vector_open, vector_components, vector_close> {};
 
 struct call_argument : seq<expression> {};

@@ -56,9 +56,51 @@ struct brick_item : if_must<kw_brick, pattern_colours<kw_brick>> {};
 // brick's own modifiers; the interpreter checks that the pattern is brick.
 struct brick_size_item : if_must<kw_brick_size, vector_value> {};
 struct mortar_item : if_must<kw_mortar, float_value> {};
+// The patterns whose value runs over [0, 1] through a colour map.
+struct gradient_item : if_must<kw_gradient, vector_value> {};
+struct radial_item : kw_radial {};
+struct onion_item : kw_onion {};
+struct marble_item : kw_marble {};
+struct wood_item : kw_wood {};
+struct leopard_item : kw_leopard {};
+struct bozo_item : kw_bozo {};
+struct spotted_item : kw_spotted {};
+struct granite_item : kw_granite {};
+struct agate_item : kw_agate {};
+struct map_pattern_item : sor<gradient_item, radial_item, onion_item, marble_item, wood_item, leopard_item,
+                              bozo_item, spotted_item, granite_item, agate_item> {};
+// Their modifiers; the interpreter checks that the pattern takes them.
+struct turbulence_item : if_must<kw_turbulence, vector_value> {};  // a float for all three axes
+struct octaves_item : if_must<kw_octaves, float_value> {};
+struct omega_item : if_must<kw_omega, float_value> {};
+struct lambda_item : if_must<kw_lambda, float_value> {};
+struct frequency_item : if_must<kw_frequency, float_value> {};
+struct phase_item : if_must<kw_phase, float_value> {};
+struct agate_turb_item : if_must<kw_agate_turb, float_value> {};
+struct noise_generator_item : if_must<kw_noise_generator, float_value> {};
+struct ramp_wave_item : kw_ramp_wave {};
+struct triangle_wave_item : kw_triangle_wave {};
+struct sine_wave_item : kw_sine_wave {};
+// color_map { [v colour] … }, POV-Ray's older [v1, v2 colour1 colour2], or a
+// declared map by name (then entries of its own, if any, replace it).
+struct map_entry_value : seq<expression> {};
+struct map_entry_colour : seq<colour_in_place> {};
+struct map_entry_more : seq<colour_in_place> {};  // the older form's colours: optional, no message
+struct map_entry_close : rbracket {};
+struct map_entry_start : success {};
+struct map_entry
+    : if_must<lbracket, map_entry_start, map_entry_value, opt<comma>, map_entry_colour, star<map_entry_more>,
+              map_entry_close> {};
+struct map_name : indexed_name {};
+struct colour_map_end : rbrace {};
+struct colour_map_block
+    : if_must<kw_colour_map, block_open, opt<map_name>, star<map_entry>, colour_map_end> {};
+struct map_modifier
+    : sor<turbulence_item, octaves_item, omega_item, lambda_item, frequency_item, phase_item, agate_turb_item,
+          noise_generator_item, ramp_wave_item, triangle_wave_item, sine_wave_item, colour_map_block> {};
 struct pigment_colour : seq<colour_in_place> {};  // a colour, or a declared pigment
-struct pigment_entry : sor<checker_item, brick_item, transform_item, brick_size_item, mortar_item, pigment_colour,
-                           unsupported_item> {};
+struct pigment_entry : sor<checker_item, brick_item, map_pattern_item, transform_item, brick_size_item, mortar_item,
+                           map_modifier, pigment_colour, unsupported_item> {};
 struct pigment_end : rbrace {};
 struct pigment_block : if_must<kw_pigment, block_open, entries<pigment_entry>, pigment_end> {};
 
@@ -83,7 +125,8 @@ struct finish_block : if_must<kw_finish, block_open, entries<finish_entry>, fini
 
 // --- texture { Name  pigment {…}  finish {…}  transforms } ------------------------
 // A pattern of textures (`texture { checker texture {…} … }`) is not ours.
-struct texture_pattern : sor<kw_checker, kw_brick> {};
+struct texture_pattern : sor<kw_checker, kw_brick, kw_gradient, kw_radial, kw_onion, kw_marble, kw_wood, kw_leopard,
+                             kw_bozo, kw_spotted, kw_granite, kw_agate> {};
 struct texture_name : indexed_name {};  // a declared texture
 struct texture_entry
     : sor<pigment_block, finish_block, transform_item, texture_pattern, texture_name, unsupported_item> {};
@@ -93,7 +136,12 @@ struct texture_block : if_must<kw_texture, block_open, entries<texture_entry>, t
 // --- what an object accepts ------------------------------------------------------
 struct open_item : kw_open {};  // cones and cylinders only; the interpreter checks
 struct no_shadow_item : kw_no_shadow {};
+// hollow [on|off]: a boolean only where one plainly follows (a constant, a
+// number or a parenthesis), as POV-Ray reads an optional float there.
+struct hollow_start : success {};
+struct hollow_value : seq<at<sor<constant, ascii::digit, one<'(', '!'>>>, expression> {};
+struct hollow_item : seq<kw_hollow, hollow_start, opt<hollow_value>> {};
 struct object_modifier : sor<pigment_block, finish_block, texture_block, transform_item, no_shadow_item,
-                             open_item, asos_block, unsupported_item> {};
+                             open_item, hollow_item, asos_block, unsupported_item> {};
 
 }  // namespace asos::grammar

@@ -121,7 +121,8 @@ struct assumed_gamma_item : if_must<kw_assumed_gamma, float_value> {};
 struct max_trace_level_item : if_must<kw_max_trace_level, float_value> {};
 struct ambient_light_item : if_must<kw_ambient_light, colour_value> {};
 struct global_entry
-    : sor<assumed_gamma_item, max_trace_level_item, ambient_light_item, asos_block, unsupported_item> {};
+    : sor<assumed_gamma_item, max_trace_level_item, ambient_light_item, noise_generator_item, asos_block,
+          unsupported_item> {};
 struct global_settings_end : rbrace {};
 struct global_settings_block
     : if_must<kw_global_settings, block_open, entries<global_entry>, global_settings_end> {};

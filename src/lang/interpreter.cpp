@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 #include <fstream>
+#include <map>
 
 #include "asos/lang/parse.hpp"
 #include "src/lang/interpreter_impl.hpp"
@@ -194,6 +195,24 @@ std::optional<SceneDescription> Interpreter::finish() {
     if (errorCount_ > 0) return std::nullopt;
     applyVersionRules();
     scene_.objects = objects_.take();
+    // A pigment that names no noise generator uses the scene's, which
+    // global_settings may set anywhere in the file.
+    if (scene_.globals.noiseGenerator != GlobalSettings{}.noiseGenerator) {
+        std::map<const Texture*, std::shared_ptr<const Texture>> moved;
+        for (Object& o : scene_.objects) {
+            const Pigment& pigment = o.texture->pigment;
+            if (pigment.noiseGenerator != 0 || pigment.kind == Pigment::Kind::Solid ||
+                pigment.kind == Pigment::Kind::Checker || pigment.kind == Pigment::Kind::Brick)
+                continue;
+            auto& copy = moved[o.texture.get()];
+            if (!copy) {
+                auto t = std::make_shared<Texture>(*o.texture);
+                t->pigment.noiseGenerator = scene_.globals.noiseGenerator;
+                copy = std::move(t);
+            }
+            o.texture = copy;
+        }
+    }
     return std::move(scene_);
 }
 

@@ -84,11 +84,16 @@ struct SourceFile {
 
 struct ArrayValue;
 struct MacroDef;
+// A declared color_map.
+struct ColourMapValue {
+    std::vector<ColourMapEntry> entries;
+};
 
 using Value = std::variant<Num, std::string, std::shared_ptr<const ObjectTree>,
                            std::shared_ptr<const Pigment>, std::shared_ptr<const Finish>,
                            std::shared_ptr<const Texture>, std::shared_ptr<const CameraValue>,
-                           std::shared_ptr<ArrayValue>, std::shared_ptr<const MacroDef>, Poison, Unset>;
+                           std::shared_ptr<ArrayValue>, std::shared_ptr<const MacroDef>,
+                           std::shared_ptr<const ColourMapValue>, Poison, Unset>;
 
 // A declared array: up to 5 dimensions, its elements all of one kind (the first
 // one given sets it, as in POV-Ray). Arrays are values: names share one until
@@ -241,6 +246,9 @@ public:
     ObjectTree evalObject(const Node& block);
     std::shared_ptr<const Pigment> evalPigment(const Node& block, const Pigment& start);
     std::shared_ptr<const Finish> evalFinish(const Node& block, const Finish& start);
+    std::shared_ptr<const ColourMapValue> evalColourMap(const Node& block);
+    void applyMapModifier(const Node& n, Pigment& p);
+    int evalNoiseGenerator(const Node& n);
     std::shared_ptr<const Texture> evalTexture(const Node& block);
     CameraValue evalCamera(const Node& block);
     Value evalDeclarable(const Node& n);

@@ -51,6 +51,44 @@ constexpr Color kCheckerGreen{Vec3(0.0, 1.0, 0.0), 0.0, 0.0};
 constexpr Color kBrickMortar{Vec3(0.5, 0.5, 0.5), 0.0, 0.0};  // POV-Ray's brick defaults
 constexpr Color kBrickRed{Vec3(0.6, 0.15, 0.15), 0.0, 0.0};
 
+bool isMapPattern(Word w) {
+    switch (w) {
+    case Word::Gradient: case Word::Radial: case Word::Onion: case Word::Marble: case Word::Wood:
+    case Word::Leopard: case Word::Bozo: case Word::Spotted: case Word::Granite: case Word::Agate:
+        return true;
+    default: return false;
+    }
+}
+
+Pigment::Kind mapKind(Word w) {
+    switch (w) {
+    case Word::Gradient: return Pigment::Kind::Gradient;
+    case Word::Radial: return Pigment::Kind::Radial;
+    case Word::Onion: return Pigment::Kind::Onion;
+    case Word::Marble: return Pigment::Kind::Marble;
+    case Word::Wood: return Pigment::Kind::Wood;
+    case Word::Leopard: return Pigment::Kind::Leopard;
+    case Word::Bozo: return Pigment::Kind::Bozo;
+    case Word::Spotted: return Pigment::Kind::Spotted;
+    case Word::Granite: return Pigment::Kind::Granite;
+    default: return Pigment::Kind::Agate;
+    }
+}
+
+bool isMapModifier(Word w) {
+    switch (w) {
+    case Word::Turbulence: case Word::Octaves: case Word::Omega: case Word::Lambda: case Word::Frequency:
+    case Word::Phase: case Word::RampWave: case Word::TriangleWave: case Word::SineWave: case Word::AgateTurb:
+    case Word::NoiseGenerator:
+        return true;
+    default: return false;
+    }
+}
+
+bool isMapPigment(Pigment::Kind k) {
+    return k != Pigment::Kind::Solid && k != Pigment::Kind::Checker && k != Pigment::Kind::Brick;
+}
+
 }  // namespace
 
 // --- the top level ------------------------------------------------------------------------
@@ -79,6 +117,7 @@ Value Interpreter::evalDeclarable(const Node& n) {
     case Word::Pigment: return evalPigment(n, defaultTexture_->pigment);
     case Word::Finish: return evalFinish(n, defaultTexture_->finish);
     case Word::Texture: return evalTexture(n);
+    case Word::ColorMap: return evalColourMap(n);
     default: return std::make_shared<const ObjectTree>(evalObject(n));
     }
 }
@@ -296,6 +335,11 @@ void Interpreter::applyObjectModifier(ObjectTree& tree, const Node& n, bool isSh
     case Word::NoShadow:
         tree.noShadow = true;
         return;
+    case Word::Hollow:
+        // POV-Ray's hollow lets media and fog inside the object; asos has
+        // neither, so it changes nothing here. Its value is still checked.
+        if (n.count > 0) evalBool(n[0]);
+        return;
     case Word::Open:
         if (isShape) {
             if (auto* cone = std::get_if<ConeShape>(&tree.shape)) {
@@ -356,6 +400,29 @@ std::shared_ptr<const Pigment> Interpreter::evalPigment(const Node& block, const
             p->kind = Pigment::Kind::Brick;
             p->color1 = n.count > 0 ? checkOpaque(evalColour(n[0]), n[0]) : kBrickMortar;
             p->color2 = n.count > 1 ? checkOpaque(evalColour(n[1]), n[1]) : kBrickRed;
+        } else if (n.kind == NodeKind::Item && isMapPattern(n.word)) {
+            pattern(n);
+            // As POV-Ray: a new pattern starts from its own defaults, but the
+            // modifiers read before it (turbulence, a colour map) stay.
+            p->kind = mapKind(n.word);
+            p->color1 = p->color2 = Color{};
+            p->wave = (n.word == Word::Marble || n.word == Word::Wood) ? Pigment::Wave::Triangle : Pigment::Wave::Ramp;
+            if (n.word == Word::Gradient) {
+                const Vec3 g = evalVector(n[0]);
+                const double length = glm::length(g);
+                if (length == 0.0) fail(n[0], "gradient <0, 0, 0> has no direction");
+                p->gradient = g / length;
+            }
+        } else if (n.kind == NodeKind::Item && isMapModifier(n.word)) {
+            applyMapModifier(n, *p);
+            if (stage == Stage::Empty) stage = Stage::Modifiers;
+        } else if (n.kind == NodeKind::Block && n.word == Word::ColorMap) {
+            if (p->kind == Pigment::Kind::Checker || p->kind == Pigment::Kind::Brick)
+                fail(n, std::string("a colour map on ") + (p->kind == Pigment::Kind::Checker ? "checker" : "brick") +
+                            " is not supported by asos; give it two colours");
+            // On a plain colour POV-Ray reads the map and ignores it.
+            const auto map = evalColourMap(n);
+            if (isMapPigment(p->kind)) p->colourMap = map->entries;
         } else if (n.kind == NodeKind::Item && (n.word == Word::BrickSize || n.word == Word::Mortar)) {
             // Pattern modifiers, like the transforms (POV-Ray reads them in the
             // same loop), of a brick pigment only.
@@ -389,6 +456,88 @@ std::shared_ptr<const Pigment> Interpreter::evalPigment(const Node& block, const
     };
     runEntries(block.children(), EntryHandler(entry));
     return p;
+}
+
+// The modifiers of the map patterns, in any order after the pattern, as
+// POV-Ray reads them with the transforms.
+void Interpreter::applyMapModifier(const Node& n, Pigment& p) {
+    if (p.kind == Pigment::Kind::Checker || p.kind == Pigment::Kind::Brick)
+        fail(n, "'" + std::string(wordText(n.word)) + "' on " +
+                    (p.kind == Pigment::Kind::Checker ? "checker" : "brick") + " is not supported by asos");
+    // POV-Ray reads them on a plain colour too, where they change nothing.
+    if (p.kind == Pigment::Kind::Solid) {
+        for (std::uint32_t i = 0; i < n.count; ++i) evalNum(n[i]);
+        return;
+    }
+    switch (n.word) {
+    case Word::Turbulence: {
+        const Num t = evalNum(n[0]);
+        if (t.dim > 3) fail(n[0], "expected a float or a vector after turbulence, found " + describe(t));
+        p.turbulence = t.dim == 1 ? Vec3(t.v[0]) : Vec3(t.v[0], t.v[1], t.v[2]);
+        break;
+    }
+    case Word::Octaves: {
+        // POV-Ray clips octaves to 1..10.
+        const double v = evalFloat(n[0]);
+        p.octaves = static_cast<int>(std::clamp(v, 1.0, 10.0));
+        break;
+    }
+    case Word::Omega: p.omega = evalFloat(n[0]); break;
+    case Word::Lambda: p.lambda = evalFloat(n[0]); break;
+    case Word::Frequency: p.frequency = evalFloat(n[0]); break;
+    case Word::Phase: p.phase = evalFloat(n[0]); break;
+    case Word::RampWave: p.wave = Pigment::Wave::Ramp; break;
+    case Word::TriangleWave: p.wave = Pigment::Wave::Triangle; break;
+    case Word::SineWave: p.wave = Pigment::Wave::Sine; break;
+    case Word::AgateTurb:
+        if (p.kind != Pigment::Kind::Agate) fail(n, "'agate_turb' applies only to the agate pattern");
+        p.agateTurb = evalFloat(n[0]);
+        break;
+    case Word::NoiseGenerator: p.noiseGenerator = evalNoiseGenerator(n[0]); break;
+    default: fail(n, "this is not a pattern modifier");
+    }
+}
+
+int Interpreter::evalNoiseGenerator(const Node& n) {
+    const double v = evalFloat(n);
+    const int g = static_cast<int>(v);
+    if (g < 1 || g > 3) fail(n, "noise_generator must be 1, 2 or 3, not " + formatNumber(v));
+    return g;
+}
+
+// color_map { [v colour] … }: a declared map by name first, if any, whose
+// entries the block's own replace; POV-Ray's older [v1, v2 colour1 colour2]
+// gives two entries. As POV-Ray: at most 256 entries, the values neither
+// sorted nor clipped (the lookup takes them as they are: colourMapAt).
+std::shared_ptr<const ColourMapValue> Interpreter::evalColourMap(const Node& block) {
+    auto map = std::make_shared<ColourMapValue>();
+    bool own = false;
+    for (const Node& n : block.children()) {
+        if (!(n.kind == NodeKind::Item && n.word == Word::ColorMap)) {
+            const Value v = eval(n);
+            const auto* declared = std::get_if<std::shared_ptr<const ColourMapValue>>(&v);
+            if (!declared) fail(n, referenceText(n) + " is " + describe(v) + ", not a colour map");
+            map->entries = (*declared)->entries;
+            continue;
+        }
+        if (!own) map->entries.clear();
+        own = true;
+        auto add = [&](const Node& valueNode, const Node& colourNode) {
+            const double value = evalFloat(valueNode);
+            if (map->entries.size() == 256) fail(n, "a colour map has at most 256 entries");
+            map->entries.push_back({value, checkOpaque(evalColour(colourNode), colourNode)});
+        };
+        if (n.count == 2) {
+            add(n[0], n[1]);
+        } else if (n.count == 4) {
+            add(n[0], n[2]);
+            add(n[1], n[3]);
+        } else {
+            fail(n, "a colour map entry is [value colour] or [value1, value2 colour1 colour2]");
+        }
+    }
+    if (map->entries.empty()) fail(block, "a colour map needs at least one entry");
+    return map;
 }
 
 std::shared_ptr<const Finish> Interpreter::evalFinish(const Node& block, const Finish& start) {
@@ -630,6 +779,7 @@ void Interpreter::applyGlobalSettings(const Node& block) {
             break;
         }
         case Word::MaxTraceLevel: g.maxTraceLevel = evalInt(n[0], 1); break;
+        case Word::NoiseGenerator: g.noiseGenerator = evalNoiseGenerator(n[0]); break;
         case Word::AmbientLight: g.ambientLight = evalRgb(n[0], "ambient_light"); break;
         case Word::Asos: g.asos = evalAsos(n, g.asos); break;
         default: fail(n, "this is not a global setting");

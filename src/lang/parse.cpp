@@ -303,6 +303,7 @@ template <> struct action<g::cylinder_light> : Reject<g::cylinder_light> {};
 template <> struct action<g::cylinder_camera> : Reject<g::cylinder_camera> {};
 template <> struct action<g::texture_pattern> : Reject<g::texture_pattern> {};
 template <> struct action<g::reflection_block> : Reject<g::reflection_block> {};
+template <> struct action<g::layered_texture> : Reject<g::layered_texture> {};
 template <typename Keyword>
 struct action<g::pattern_of_blocks<Keyword>> : Reject<g::pattern_of_blocks<Keyword>> {};
 template <> struct action<g::unsupported_directive> : RejectDirective<g::unsupported_directive> {};
@@ -567,6 +568,7 @@ template <> struct action<g::pigment_block> : CloseBlock<Word::Pigment> {};
 template <> struct action<g::finish_block> : CloseBlock<Word::Finish> {};
 template <> struct action<g::texture_block> : CloseBlock<Word::Texture> {};
 template <> struct action<g::asos_block> : CloseBlock<Word::Asos> {};
+template <> struct action<g::colour_map_block> : CloseBlock<Word::ColorMap> {};
 
 // Sequences: directive bodies and a polygon's points.
 template <>
@@ -611,6 +613,27 @@ template <> struct action<g::roughness_item> : ItemAction<Word::Roughness, 1> {}
 template <> struct action<g::reflection_item> : ItemAction<Word::Reflection, 1> {};
 template <> struct action<g::brick_size_item> : ItemAction<Word::BrickSize, 1> {};
 template <> struct action<g::mortar_item> : ItemAction<Word::Mortar, 1> {};
+template <> struct action<g::gradient_item> : ItemAction<Word::Gradient, 1> {};
+template <> struct action<g::radial_item> : ItemAction<Word::Radial, 0> {};
+template <> struct action<g::onion_item> : ItemAction<Word::Onion, 0> {};
+template <> struct action<g::marble_item> : ItemAction<Word::Marble, 0> {};
+template <> struct action<g::wood_item> : ItemAction<Word::Wood, 0> {};
+template <> struct action<g::leopard_item> : ItemAction<Word::Leopard, 0> {};
+template <> struct action<g::bozo_item> : ItemAction<Word::Bozo, 0> {};
+template <> struct action<g::spotted_item> : ItemAction<Word::Spotted, 0> {};
+template <> struct action<g::granite_item> : ItemAction<Word::Granite, 0> {};
+template <> struct action<g::agate_item> : ItemAction<Word::Agate, 0> {};
+template <> struct action<g::turbulence_item> : ItemAction<Word::Turbulence, 1> {};
+template <> struct action<g::octaves_item> : ItemAction<Word::Octaves, 1> {};
+template <> struct action<g::omega_item> : ItemAction<Word::Omega, 1> {};
+template <> struct action<g::lambda_item> : ItemAction<Word::Lambda, 1> {};
+template <> struct action<g::frequency_item> : ItemAction<Word::Frequency, 1> {};
+template <> struct action<g::phase_item> : ItemAction<Word::Phase, 1> {};
+template <> struct action<g::agate_turb_item> : ItemAction<Word::AgateTurb, 1> {};
+template <> struct action<g::noise_generator_item> : ItemAction<Word::NoiseGenerator, 1> {};
+template <> struct action<g::ramp_wave_item> : ItemAction<Word::RampWave, 0> {};
+template <> struct action<g::triangle_wave_item> : ItemAction<Word::TriangleWave, 0> {};
+template <> struct action<g::sine_wave_item> : ItemAction<Word::SineWave, 0> {};
 template <> struct action<g::open_item> : ItemAction<Word::Open, 0> {};
 template <> struct action<g::no_shadow_item> : ItemAction<Word::NoShadow, 0> {};
 template <> struct action<g::area_light_item> : ItemAction<Word::AreaLight, 4> {};
@@ -659,6 +682,18 @@ struct ClosePattern {
     }
 };
 template <> struct action<g::checker_item> : ClosePattern<Word::Checker> {};
+// A colour map's entry: its value and one colour, or POV-Ray's older two
+// values and two colours.
+template <>
+struct action<g::map_entry_start> {
+    static void apply0(Builder& b) { b.open(); }
+};
+template <> struct action<g::map_entry> : ClosePattern<Word::ColorMap> {};
+template <>
+struct action<g::hollow_start> {
+    static void apply0(Builder& b) { b.open(); }
+};
+template <> struct action<g::hollow_item> : ClosePattern<Word::Hollow> {};
 template <> struct action<g::brick_item> : ClosePattern<Word::Brick> {};
 template <>
 struct action<g::matrix_item> {

@@ -24,13 +24,17 @@ double edgesCrossed(const Pigment& pigment, const Vec3& lo, const Vec3& hi) {
             // each bed joint, and within a course planes of constant x and z at
             // the sides of its head joints.
             return BrickPattern(pigment.brickSize, pigment.mortar).edgesCrossed(lo, hi);
+        default:
+            // The map patterns have no edge planes: hasPattern is false for
+            // them and a leaf samples them at its point.
+            return 0.0;
     }
-    return 0.0;
 }
 }  // namespace
 
 bool hasPattern(const Pigment& pigment) {
-    return pigment.kind != Pigment::Kind::Solid && !(pigment.color1 == pigment.color2);
+    return (pigment.kind == Pigment::Kind::Checker || pigment.kind == Pigment::Kind::Brick) &&
+           !(pigment.color1 == pigment.color2);
 }
 
 int pigmentIndex(const Pigment& pigment, const Vec3& worldPoint) {
@@ -39,8 +43,8 @@ int pigmentIndex(const Pigment& pigment, const Vec3& worldPoint) {
         case Pigment::Kind::Checker: return CheckerPattern().value(patternPoint(pigment, worldPoint));
         case Pigment::Kind::Brick:
             return BrickPattern(pigment.brickSize, pigment.mortar).value(patternPoint(pigment, worldPoint));
+        default: return 0;  // the map patterns: no colour index (hasPattern is false)
     }
-    return 0;
 }
 
 PatternChange pigmentMayChange(const Pigment& pigment, const Footprint& footprint) {

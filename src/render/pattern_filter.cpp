@@ -152,8 +152,8 @@ double patternShare(const Pigment& pigment, const PatternFootprint& footprint) {
         case Pigment::Kind::Checker: return shareOf(CheckerPattern(), footprint);
         case Pigment::Kind::Brick:
             return shareOf(BrickPattern(pigment.brickSize, pigment.mortar), footprint);
+        default: return 0.0;  // the map patterns are not filtered (hasPattern is false)
     }
-    return 0.0;
 }
 
 Color filteredPigment(const Pigment& pigment, const PatternFootprint& footprint) {

@@ -5,6 +5,7 @@
 #include "asos/lights/light_model.hpp"
 #include "asos/render/brick_pattern.hpp"
 #include "asos/render/checker_pattern.hpp"
+#include "asos/render/map_pattern.hpp"
 
 namespace asos {
 
@@ -18,6 +19,13 @@ Color evaluatePigment(const Pigment& pigment, const Vec3& worldPoint) {
         case Pigment::Kind::Brick: {
             const Vec3 p(pigment.worldFromPattern.inverseMatrix() * Vec4(worldPoint, 1.0));
             return BrickPattern(pigment.brickSize, pigment.mortar).value(p) ? pigment.color2 : pigment.color1;
+        }
+        case Pigment::Kind::Gradient: case Pigment::Kind::Radial: case Pigment::Kind::Onion:
+        case Pigment::Kind::Marble: case Pigment::Kind::Wood: case Pigment::Kind::Leopard:
+        case Pigment::Kind::Bozo: case Pigment::Kind::Spotted: case Pigment::Kind::Granite:
+        case Pigment::Kind::Agate: {
+            const Vec3 p(pigment.worldFromPattern.inverseMatrix() * Vec4(worldPoint, 1.0));
+            return colourMapAt(colourMapOf(pigment), mapPatternValue(pigment, p));
         }
     }
     return pigment.color1;

@@ -162,6 +162,44 @@ void writeTexture(Writer& w, const Texture& t) {
             w.vec(p.brickSize) << " mortar ";
             w.num(p.mortar);
             break;
+        case Pigment::Kind::Gradient:
+            w << "gradient ";
+            w.vec(p.gradient);
+            break;
+        case Pigment::Kind::Radial: w << "radial"; break;
+        case Pigment::Kind::Onion: w << "onion"; break;
+        case Pigment::Kind::Marble: w << "marble"; break;
+        case Pigment::Kind::Wood: w << "wood"; break;
+        case Pigment::Kind::Leopard: w << "leopard"; break;
+        case Pigment::Kind::Bozo: w << "bozo"; break;
+        case Pigment::Kind::Spotted: w << "spotted"; break;
+        case Pigment::Kind::Granite: w << "granite"; break;
+        case Pigment::Kind::Agate:
+            w << "agate agate_turb ";
+            w.num(p.agateTurb);
+            break;
+    }
+    if (p.kind != Pigment::Kind::Solid && p.kind != Pigment::Kind::Checker && p.kind != Pigment::Kind::Brick) {
+        if (!p.colourMap.empty()) {
+            w << " color_map {";
+            for (const ColourMapEntry& e : p.colourMap) {
+                w << " [";
+                w.num(e.value) << ' ';
+                w.colour(e.color) << ']';
+            }
+            w << " }";
+        }
+        if (p.turbulence != Vec3(0.0)) {
+            w << " turbulence ";
+            w.vec(p.turbulence);
+        }
+        w << " octaves " << p.octaves << " omega ";
+        w.num(p.omega) << " lambda ";
+        w.num(p.lambda) << " frequency ";
+        w.num(p.frequency) << " phase ";
+        w.num(p.phase);
+        w << (p.wave == Pigment::Wave::Ramp ? " ramp_wave" : p.wave == Pigment::Wave::Sine ? " sine_wave" : " triangle_wave");
+        if (p.noiseGenerator != 0) w << " noise_generator " << p.noiseGenerator;
     }
     if (!p.worldFromPattern.isIdentity()) {
         w << ' ';
@@ -197,6 +235,7 @@ void writeDump(std::ostream& out, const SceneDescription& scene, const DumpOptio
     }
     w << "  max_trace_level " << g.maxTraceLevel << "\n  ambient_light ";
     w.rgb(g.ambientLight) << '\n';
+    if (g.noiseGenerator != GlobalSettings{}.noiseGenerator) w << "  noise_generator " << g.noiseGenerator << '\n';
     w.asos(g.asos, "  ");
     w << "}\n\nbackground { ";
     w.colour(scene.background) << " }\n\n";

@@ -76,11 +76,12 @@ void compareWithPovray(const std::string& scene, RenderMethod method, const std:
 // camera mappings (tilted perspective, orthographic), the checker pattern, the
 // background and 8-bit encoding (flat_*), the lighting model (lighting), the
 // recursion of reflection (reflection), the six primitives (primitives), the
-// brick pattern (brick), and the working gamma: none (gamma_off, a scene
-// without #version or assumed_gamma) and 2.2 (assumed_gamma).
+// brick pattern (brick), the working gamma: none (gamma_off, a scene
+// without #version or assumed_gamma) and 2.2 (assumed_gamma), and the map
+// patterns with POV-Ray's noise and turbulence (map_*).
 TEST_CASE("The renderer matches POV-Ray with one ray per pixel", "[golden][povray]") {
     for (const char* scene : {"flat_perspective", "flat_orthographic", "lighting", "reflection", "primitives",
-                              "brick", "gamma_off", "assumed_gamma"})
+                              "brick", "gamma_off", "assumed_gamma", "map_plain", "map_noise", "map_turbulence"})
         compareWithPovray(scene, RenderMethod::Single, "", "-A");
 }
 

@@ -30,6 +30,13 @@ namespace asos::lang {
     WORD(NoShadow, "no_shadow") WORD(Asos, "asos") WORD(Eps, "eps") WORD(Highlights, "highlights")     \
     WORD(Emitter, "emitter") WORD(Povray, "povray") WORD(Panel, "panel") WORD(Checker, "checker")    \
     WORD(Brick, "brick") WORD(BrickSize, "brick_size") WORD(Mortar, "mortar")                          \
+    WORD(Hollow, "hollow") WORD(ColorMap, "color_map") WORD(ColourMap, "colour_map")                      \
+    WORD(Gradient, "gradient") WORD(Radial, "radial") WORD(Onion, "onion") WORD(Marble, "marble")          \
+    WORD(Wood, "wood") WORD(Leopard, "leopard") WORD(Bozo, "bozo") WORD(Spotted, "spotted")                \
+    WORD(Granite, "granite") WORD(Agate, "agate") WORD(AgateTurb, "agate_turb")                          \
+    WORD(Turbulence, "turbulence") WORD(Octaves, "octaves") WORD(Omega, "omega") WORD(Lambda, "lambda")    \
+    WORD(RampWave, "ramp_wave") WORD(TriangleWave, "triangle_wave") WORD(SineWave, "sine_wave")          \
+    WORD(Frequency, "frequency") WORD(Phase, "phase") WORD(NoiseGenerator, "noise_generator")             \
     WORD(Ambient, "ambient") WORD(Diffuse, "diffuse") WORD(Brilliance, "brilliance") WORD(Phong, "phong")   \
     WORD(PhongSize, "phong_size") WORD(Specular, "specular") WORD(Roughness, "roughness")                \
     WORD(Reflection, "reflection") WORD(AssumedGamma, "assumed_gamma")                                \

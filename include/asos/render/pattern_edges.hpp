@@ -12,7 +12,10 @@
 
 namespace asos {
 
-// Whether the pigment varies at all (a pattern of two different colours).
+// Whether the pigment is a pattern of two different colours with edge
+// planes (checker, brick): the patterns ASOS finds edges of and filters. The
+// map patterns (gradient, marble, ...) are not: a leaf samples them at its
+// point (docs/algorithm.md, "Map patterns").
 bool hasPattern(const Pigment& pigment);
 
 // Which of the pattern's colours is at a world point: 0 (color1) or 1

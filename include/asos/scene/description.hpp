@@ -104,13 +104,36 @@ struct PlaneShape { Vec3 normal{0.0, 1.0, 0.0}; double distance = 0.0; };
 using Shape = std::variant<SphereShape, BoxShape, ConeShape, CylinderShape, DiscShape,
                            PolygonShape, PlaneShape>;
 
+// One entry of a colour map: the colour at a pattern value.
+struct ColourMapEntry {
+    double value = 0.0;
+    Color color{};
+    bool operator==(const ColourMapEntry&) const = default;
+};
+
 struct Pigment {
-    enum class Kind { Solid, Checker, Brick };
+    // Checker and Brick have two colours and plane edges; the others run a
+    // value over [0, 1] through a colour map (render/map_pattern.hpp).
+    enum class Kind { Solid, Checker, Brick, Gradient, Radial, Onion, Marble, Wood, Leopard, Bozo, Spotted, Granite, Agate };
+    enum class Wave { Ramp, Triangle, Sine };
     Kind kind = Kind::Solid;
     Color color1{};                       // the solid colour, or the pattern's first (brick: the mortar)
     Color color2{};                       // the pattern's second (brick: the brick)
     Vec3 brickSize{8.0, 3.0, 4.5};        // brick's brick_size and mortar, as written
     double mortar = 0.5;
+    // The map patterns' parameters, POV-Ray's defaults (the wave and the map
+    // are the pattern's own where they are not given).
+    std::vector<ColourMapEntry> colourMap;  // in value order; empty: the pattern's default map
+    Vec3 gradient{0.0, 1.0, 0.0};         // normalised, as POV-Ray keeps it
+    Vec3 turbulence{0.0};                 // per axis; zero: none
+    int octaves = 6;
+    double omega = 0.5;
+    double lambda = 2.0;
+    Wave wave = Wave::Ramp;
+    double frequency = 1.0;
+    double phase = 0.0;
+    double agateTurb = 1.0;
+    int noiseGenerator = 0;               // 1, 2 or 3; 0: the scene's (global_settings)
     Transform worldFromPattern;           // full transform of the pattern space
     bool operator==(const Pigment&) const = default;
 };
@@ -157,6 +180,7 @@ struct GlobalSettings {
     std::optional<double> assumedGamma = 1.0;
     int maxTraceLevel = 5;
     Vec3 ambientLight{1.0};
+    int noiseGenerator = 2;  // POV-Ray's default, the range-corrected original noise
     AsosOptions asos;
 };
 

@@ -1,1 +1,1 @@
-plane { y, 0 pigment { granite scale 2 } }
+plane { y, 0 pigment { crackle scale 2 } }
