@@ -47,8 +47,8 @@ LightModel makeLightModel(const Light& light, const AsosSettings& sceneSettings,
         // 1 along one axis.
         const double radius = 0.5 * glm::length(a.axis1);
         if (!(radius > 0.0)) return m;
-        if (m.emitter == LightEmitter::Panel) m.form = SphereLight{light.position, radius};
-        else m.form = OrientedDiscLight{light.position, radius};
+        if (m.emitter == LightEmitter::Panel) m.form = SphereLight{{light.position, radius}};
+        else m.form = OrientedDiscLight{{light.position, radius}};
         counts(a.size1, a.size2);
         return m;
     }

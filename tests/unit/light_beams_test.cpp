@@ -166,7 +166,7 @@ TEST_CASE("Sphere beams: the tangent cone's equal-area pieces", "[lights]") {
         }
     }
     // On or inside the light: no beam, no grid.
-    const SphereLight unit{Vec3(0.0), 1.0};
+    const SphereLight unit{{Vec3(0.0), 1.0}};
     CHECK_FALSE(unit.beamFrom(Vec3(0.5, 0, 0), 0.0));
     CHECK_FALSE(unit.gridFrom(Vec3(0.5, 0, 0)));
 }

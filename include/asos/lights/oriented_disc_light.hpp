@@ -26,6 +26,7 @@
 #include "asos/geometry/frame.hpp"
 #include "asos/lights/beam_apex.hpp"
 #include "asos/lights/disc_beam.hpp"
+#include "asos/lights/round_light.hpp"
 
 namespace asos {
 
@@ -33,21 +34,10 @@ namespace asos {
 // light's centre): u and v of unit length, w the given direction.
 Frame povrayOrientFrame(const Vec3& w);
 
-struct OrientedDiscLight {
+// The disc turns with the point: its bounds are the ball's.
+struct OrientedDiscLight : RoundLight {
     static constexpr const char* kName = "oriented disc";
 
-    Vec3 centre{0.0};
-    double radius = 1.0;
-
-    // The disc's area.
-    double size() const { return kPi * radius * radius; }
-    double halfWidth() const { return radius; }
-    // The disc turns with the point: every position lies in the ball.
-    Bounds3 bounds() const {
-        Bounds3 b = Bounds3::of(centre - Vec3(radius));
-        b.extend(centre + Vec3(radius));
-        return b;
-    }
     // The ray from the apex through p meets the disc facing the apex.
     bool beamHolds(const Vec3& apex, const Vec3& p) const;
     // The answers of an AreaLightBeam (lights/light_form.hpp): the disc

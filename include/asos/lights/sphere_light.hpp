@@ -23,23 +23,13 @@
 #include "asos/geometry/tangent_cone.hpp"
 #include "asos/lights/beam_apex.hpp"
 #include "asos/lights/disc_beam.hpp"
+#include "asos/lights/round_light.hpp"
 
 namespace asos {
 
-struct SphereLight {
+struct SphereLight : RoundLight {
     static constexpr const char* kName = "spherical";
 
-    Vec3 centre{0.0};
-    double radius = 1.0;
-
-    // The area of the disc of its radius (the paper's A in I A).
-    double size() const { return kPi * radius * radius; }
-    double halfWidth() const { return radius; }
-    Bounds3 bounds() const {
-        Bounds3 b = Bounds3::of(centre - Vec3(radius));
-        b.extend(centre + Vec3(radius));
-        return b;
-    }
     // The tangent cone from the apex holds p.
     bool beamHolds(const Vec3& apex, const Vec3& p) const;
     // The answers of an AreaLightBeam (lights/light_form.hpp): the tangent
