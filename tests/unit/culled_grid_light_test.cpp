@@ -37,6 +37,16 @@ SceneDescription sphereOverFloor(const Vec3& axis2, int n1, int n2, bool orient)
     return d;
 }
 
+// The floor's point at x (under the sphere, across its penumbra, far out),
+// facing up.
+AreaLightQuery floorQuery(double x) {
+    AreaLightQuery q;
+    q.point = Vec3(x, 0, 0.2 * x);
+    q.normal = Vec3(0, 1, 0);
+    q.key = 7;
+    return q;
+}
+
 }  // namespace
 
 TEST_CASE("The culled grid: the grid's samples, without the rays one cone test decides", "[lights]") {
@@ -59,10 +69,7 @@ TEST_CASE("The culled grid: the grid's samples, without the rays one cone test d
         std::uint64_t gridRays = 0, culledRays = 0;
         // Under the occluder (umbra), across its penumbra, far out (lit).
         for (double x : {0.0, 0.6, 1.0, 1.5, 2.0, 3.0, 8.0, 30.0}) {
-            AreaLightQuery q;
-            q.point = Vec3(x, 0, 0.2 * x);
-            q.normal = up;
-            q.key = 7;
+            const AreaLightQuery q = floorQuery(x);
             RenderCounters counters;
             const std::span<const LightSample> g = gridAreaLightSamples(*scene, model, q, scratch, counters);
             const std::vector<LightSample> grid(g.begin(), g.end());
@@ -102,10 +109,7 @@ TEST_CASE("The culled reference of POV-Ray's emitter: its converged model, witho
         const LightModel& model = lights[0];
         AreaLightScratch scratch;
         for (double x : {0.0, 0.6, 1.0, 1.5, 2.0, 3.0, 8.0, 30.0}) {
-            AreaLightQuery q;
-            q.point = Vec3(x, 0, 0.2 * x);
-            q.normal = up;
-            q.key = 7;
+            const AreaLightQuery q = floorQuery(x);
             RenderCounters counters;
             const double reference = diffuseIrradiance(culledGridAreaLightSamples(*scene, model, q, scratch, counters), up).x;
             const bool decided = counters.shadowRays == 0;
