@@ -50,7 +50,6 @@ AreaLightQuery floorQuery(double x) {
 }  // namespace
 
 TEST_CASE("The culled grid: the grid's samples, without the rays one cone test decides", "[lights]") {
-    const Vec3 up(0, 1, 0);
     // Axes for a rectangle, a segment (second axis of zero length) and a sphere (orient).
     struct Form {
         Vec3 axis2;
