@@ -153,11 +153,17 @@ public:
         }
         // The shaded object is left out where it cannot shadow itself (a
         // convex or flat surface, toward light above its horizon); with
-        // POV-Ray's emitter, light below the horizon counts too, and there
-        // the object is an occluder like any other until a piece is wholly
-        // above (from behind the surface, its tangent plane already cuts the
-        // rays).
-        const bool shadedLeftOut = !povray_ || origin_.behind || aboveHorizon(q_.normal, root);
+        // POV-Ray's emitter, light below the horizon counts too: there a
+        // flat shape still cannot meet a ray from its surface, a convex
+        // solid meets those that enter it (selfClass), and any other object
+        // is an occluder like the rest until a piece is wholly above (from
+        // behind the surface, its tangent plane already cuts the rays).
+        const bool selfSure = povray_ && !origin_.behind && !q_.shadedCanSelfShadow;
+        const Primitive::SelfOcclusion self =
+            selfSure ? scene_.primitive(q_.shadedObject).selfOcclusion() : Primitive::SelfOcclusion::Any;
+        selfInterior_ = self == Primitive::SelfOcclusion::Interior;
+        const bool shadedLeftOut = !povray_ || origin_.behind || self == Primitive::SelfOcclusion::None ||
+                                   (!selfInterior_ && aboveHorizon(q_.normal, root));
 
         // Detection: the occluders of the whole beam.
         std::vector<Item>& rootItems = s_.items[0];
@@ -189,7 +195,8 @@ public:
             const Primitive& primitive = scene_.primitive(object);
             if (beyondLight(primitive)) return;
             ++c_.coneTests;
-            const ConeClass k = primitive.classify(prepared);
+            const ConeClass k = selfInterior_ && object == q_.shadedObject ? selfClass(root)
+                                                                           : primitive.classify(prepared);
             if (k.coverage != Coverage::Miss) rootItems.push_back({object, k});
         });
         // In object order, wherever the candidates came from.
@@ -295,9 +302,12 @@ public:
                     // The shaded object, an occluder below the horizon only.
                     const bool childAbove = povray_ && aboveHorizon(q_.normal, child);
                     for (std::uint32_t j = n.first; j < n.first + n.count; ++j) {
-                        if (childAbove && items[j].object == q_.shadedObject && !q_.shadedCanSelfShadow) continue;
+                        const bool shaded = items[j].object == q_.shadedObject && !q_.shadedCanSelfShadow;
+                        if (childAbove && shaded && !selfInterior_) continue;
                         ++c_.coneTests;
-                        const ConeClass k = scene_.primitive(items[j].object).classify(childPrepared);
+                        const ConeClass k = selfInterior_ && shaded
+                                                ? selfClass(child)
+                                                : scene_.primitive(items[j].object).classify(childPrepared);
                         if (k.coverage != Coverage::Miss) childItems.push_back({items[j].object, k});
                     }
                     const auto found = static_cast<std::uint32_t>(childItems.size()) - first;
@@ -318,6 +328,33 @@ public:
 
 private:
     enum class Verdict { Lit, Blocked, Marginal };
+
+    // The shaded object, a convex solid (Primitive::SelfOcclusion::Interior),
+    // over a piece: its rays below the plane tangent at the point enter the
+    // solid and leave it within the world box's diagonal, the others never
+    // meet it. So the piece misses it wholly above that plane, is covered
+    // wholly below it, and is marginal across it, where the plane is its one
+    // straight edge unless the light lies within the diagonal. (A ray that
+    // leaves the solid within the shadow tolerance, on a sphere within about
+    // 1e-3 / radius of the plane, or near a box's edge, is not counted as the
+    // ray test counts it: far below any EPS.)
+    ConeClass selfClass(const LightPiece& piece) const {
+        ConeClass k;
+        if (aboveHorizon(q_.outward, piece)) return k;
+        if (selfReach_ < 0.0) {
+            const Bounds3 b = scene_.primitive(q_.shadedObject).worldBounds();
+            selfReach_ = padUp(glm::length(b.hi - b.lo)) + kTolerance;
+        }
+        k.tNear = 0.0;
+        k.tFar = selfReach_;
+        if (belowHorizon(q_.outward, piece)) {
+            k.coverage = Coverage::Full;
+        } else {
+            k.coverage = Coverage::Marginal;
+            k.singleEdge = selfReach_ < beams_.nearestLightDistance(piece) - kTolerance;
+        }
+        return k;
+    }
 
     // A MAX-beam: one point sample, its central ray or with jitter a random
     // ray inside it, decided against its parent's occluders. A ray below
@@ -766,6 +803,8 @@ private:
     const bool povray_;  // POV-Ray's emitter: the visible fraction
     double visible_ = 0.0;
     std::uint64_t jitterKey_ = 0;
+    bool selfInterior_ = false;      // the shaded object is classified by selfClass
+    mutable double selfReach_ = -1.0;  // selfClass's reach, made on first use
 };
 
 // behindApex, for the light's form: `centre`, the light's position.

@@ -38,6 +38,7 @@ std::span<const LightSample> RayTracer::areaLightSamples(const ShadingPoint& poi
     q.lightIndex = static_cast<std::size_t>(point.lightIndex);
     q.point = point.position;
     q.normal = point.normal;
+    q.outward = point.hit->normal;
     q.shadedObject = static_cast<std::uint32_t>(point.hit->objectIndex);
     // As for point lights: only the inner side of an open tube (its normal
     // turned toward the viewer points inward) can be in its own shadow.

@@ -235,6 +235,22 @@ bool Primitive::canShadowItself() const {
     return visit([](const auto& shape) { return shape.canShadowItself(); });
 }
 
+Primitive::SelfOcclusion Primitive::selfOcclusion() const {
+    return visit([](const auto& shape) {
+        using S = std::decay_t<decltype(shape)>;
+        if constexpr (std::is_same_v<S, Plane> || std::is_same_v<S, Disc> || std::is_same_v<S, Polygon> ||
+                      std::is_same_v<S, EllipticDisc>) {
+            return SelfOcclusion::None;
+        } else if constexpr (std::is_same_v<S, Sphere> || std::is_same_v<S, Box> ||
+                             std::is_same_v<S, Cylinder> || std::is_same_v<S, TruncatedCone>) {
+            // Closed (capped), a convex solid; open, a surface that shadows itself.
+            return shape.canShadowItself() ? SelfOcclusion::Any : SelfOcclusion::Interior;
+        } else {
+            return SelfOcclusion::Any;
+        }
+    });
+}
+
 HoldingPlanes Primitive::holdingPlanes(const Vec3& worldPoint) const {
     HoldingPlanes h = visit([&](const auto& shape) { return shape.holdingPlanes(frame_.pointToLocal(worldPoint)); });
     // local n.x <= d with x = L w + o (L = localFromWorld) is (L^T n).w <= d - n.o.

@@ -61,7 +61,7 @@ struct LightSetupScene {
     // the sum over the samples of colour x cos(incidence).
     double received(LightMethod method, const AsosSettings& settings, const Vec3& point,
                     const Vec3& normal, RenderCounters& counters, std::uint32_t shaded = 0,
-                    std::optional<int> samples = std::nullopt) {
+                    std::optional<int> samples = std::nullopt, std::optional<Vec3> outward = std::nullopt) {
         LightSetup setup;
         setup.method = method;
         setup.sceneSettings = settings;
@@ -70,6 +70,7 @@ struct LightSetupScene {
         AreaLightQuery q;
         q.point = point;
         q.normal = normal;
+        q.outward = outward.value_or(normal);
         q.shadedObject = shaded;
         return diffuseIrradiance(areaLightSamples(*scene, lights, q, scratch, counters), normal).x;
     }
@@ -546,6 +547,20 @@ TEST_CASE("POV-Ray's emitter below the horizon: a solid shaded object hides it, 
     INFO("V " << V << ", asos " << asos / cosCentre << ", grid " << grid / cosCentre);
     CHECK(std::abs(asos / cosCentre - V) <= settings.eps);
     CHECK(std::abs(grid / cosCentre - V) <= 1.0 / 32.0);
+    // The shaded sphere is the one occluder and is known in closed form
+    // (rays below the tangent plane enter it): the beams subdivide along
+    // the plane's line across the light only, not down to MAX over all of
+    // it (64 x 64 MAX-beams).
+    CHECK(counters.shadowRays < 64 * 64);
+    // Seen from inside (the shading normal turned inward), the sphere's far
+    // side hides a light beyond it from the lowest point, whose rays toward
+    // it all enter the sphere.
+    LightSetupScene above(areaLight({0, 3, 0}, {1, 0, 0}, {0, 0, 1}, 5, 5, false, LightEmitter::Povray), {ball});
+    for (LightMethod method : {LightMethod::Asos, LightMethod::Grid}) {
+        RenderCounters inside;
+        CHECK(above.received(method, settings, {0, -1, 0}, {0, 1, 0}, inside, 1, std::nullopt, Vec3(0, -1, 0)) ==
+              0.0);
+    }
     // A vertical light standing across the ground plane: a point of the
     // plane sees all of it (its rays below the plane leave the plane).
     LightSetupScene flat(areaLight({0, 0.5, 3}, {2, 0, 0}, {0, 2, 0}, 9, 9, false, LightEmitter::Povray), {});

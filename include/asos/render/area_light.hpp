@@ -143,6 +143,7 @@ struct AreaLightQuery {
     std::size_t lightIndex = 0;
     Vec3 point{0.0};
     Vec3 normal{0.0, 1.0, 0.0};  // unit, turned toward the viewer (the shading normal)
+    Vec3 outward{0.0, 1.0, 0.0};  // unit, the surface's own, on its outward side (SurfaceHit::normal)
     // The object the point lies on: convex and flat shapes cannot shadow
     // themselves where they face the light and are left out of the occluders.
     std::uint32_t shadedObject = 0;

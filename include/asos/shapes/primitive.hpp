@@ -113,6 +113,17 @@ public:
     // The shadow tests leave the shaded object out otherwise.
     bool canShadowItself() const;
 
+    // Which rays from a point on the primitive's own surface can meet it
+    // again (past a tolerance), for the shadow tests of a point it holds:
+    // None, no ray (a plane, a flat shape: the ray leaves its plane at
+    // once); Interior, exactly the rays into the solid, those below the
+    // plane tangent at the point (outward normal), met where they leave it,
+    // within the world box's diagonal (a sphere, a box, a capped cylinder or
+    // cone); Any, where neither is shown (a surface that can shadow itself,
+    // or a shape not sorted here).
+    enum class SelfOcclusion { None, Interior, Any };
+    SelfOcclusion selfOcclusion() const;
+
     // What the depth order of two objects over a cone asks
     // (shapes/depth_order.hpp), in the world: the planes (unit normals) the
     // primitive lies behind, as seen from `worldPoint` (holding_planes.hpp),
