@@ -61,6 +61,7 @@ struct ObjectTree {
     bool noShadow = false;
     bool modified = false;  // a union has had a modifier: no more children
     std::size_t leaves = 1;  // the shapes and lights it holds (a union's, all its children's)
+    std::size_t nodes = 1;   // ObjectTrees in it, itself included: what a copy allocates
     AsosOptions asos;
     std::vector<ObjectTree> children;
     SourceLoc loc;
@@ -380,14 +381,14 @@ private:
         const Ast* ast_;
     };
     std::size_t depth_ = 0;  // nesting, for Nested
-    // The shapes and lights held by the unions being built, for checkMemory.
-    std::size_t unionLeaves_ = 0;
-    class HeldLeaves {
+    // The tree nodes held by the unions being built, for checkMemory.
+    std::size_t unionNodes_ = 0;
+    class HeldNodes {
     public:
-        HeldLeaves(Interpreter& self, const ObjectTree& tree) : self_(self), tree_(tree) {}
-        ~HeldLeaves() { self_.unionLeaves_ -= tree_.leaves; }
-        HeldLeaves(const HeldLeaves&) = delete;
-        HeldLeaves& operator=(const HeldLeaves&) = delete;
+        HeldNodes(Interpreter& self, const ObjectTree& tree) : self_(self), tree_(tree) {}
+        ~HeldNodes() { self_.unionNodes_ -= tree_.nodes - 1; }
+        HeldNodes(const HeldNodes&) = delete;
+        HeldNodes& operator=(const HeldNodes&) = delete;
 
     private:
         Interpreter& self_;

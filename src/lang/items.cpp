@@ -146,7 +146,7 @@ void Interpreter::checkObjects(const Node& at, std::size_t count, const char* wh
 void Interpreter::checkMemory(const Node& at, std::size_t bytes, const char* what) {
     constexpr double kMiB = 1024.0 * 1024.0;
     const double total = static_cast<double>(objects_.size() * sizeof(Object)) +
-                         static_cast<double>(unionLeaves_ * sizeof(ObjectTree)) + static_cast<double>(bytes);
+                         static_cast<double>(unionNodes_ * sizeof(ObjectTree)) + static_cast<double>(bytes);
     if (total <= static_cast<double>(options_.maxMemoryMiB) * kMiB) return;
     const auto mib = static_cast<std::uint64_t>(std::ceil(total / kMiB));
     error(at, std::string(what) + " would take about " + std::to_string(mib) +
@@ -254,7 +254,7 @@ ObjectTree Interpreter::evalObject(const Node& block) {
     case Word::Union: {
         t.kind = ObjectTree::Kind::Union;
         t.leaves = 0;
-        const HeldLeaves held(*this, t);
+        const HeldNodes held(*this, t);
         auto entry = [&](const Node& n) {
             if (isObjectBlock(n)) {
                 if (t.modified)
@@ -264,7 +264,8 @@ ObjectTree Interpreter::evalObject(const Node& block) {
                 // objects. The tree is counted before it grows.
                 checkObjects(n, t.leaves + child.leaves, "this union");
                 t.leaves += child.leaves;
-                unionLeaves_ += child.leaves;
+                t.nodes += child.nodes;
+                unionNodes_ += child.nodes;
                 t.children.push_back(std::move(child));
             } else {
                 t.modified = true;
@@ -280,7 +281,9 @@ ObjectTree Interpreter::evalObject(const Node& block) {
             const Value v = eval(base);
             const auto* o = std::get_if<std::shared_ptr<const ObjectTree>>(&v);
             if (!o) fail(base, referenceText(base) + " is " + describe(v) + ", not an object");
-            checkMemory(base, (*o)->leaves * sizeof(ObjectTree), "a copy of this object");  // before it is made
+            // Before the copy is made; counted twice, for the declared
+            // original stays alive beside it (a doubling union's peak).
+            checkMemory(base, 2 * (*o)->nodes * sizeof(ObjectTree), "a copy of this object");
             t = **o;
         } else {
             t = evalObject(base);
