@@ -19,6 +19,7 @@ namespace {
 
 struct ParseArgs {
     std::string scene;
+    lang::InterpreterOptions limits;  // --max-*: the limits of what the scene may ask for
     std::vector<std::string> includePaths;
     std::vector<std::string> defines;
     double clock = 0.0;
@@ -28,7 +29,7 @@ struct ParseArgs {
 };
 
 int runParse(const ParseArgs& args) {
-    lang::InterpreterOptions options;
+    lang::InterpreterOptions options = args.limits;
     for (const auto& dir : args.includePaths) options.includePaths.emplace_back(dir);
     for (const auto& text : args.defines) {
         std::optional<lang::Define> define = parseDefine(text);
@@ -72,6 +73,7 @@ void addParseCommand(CLI::App& app, CommandResult& result) {
     auto args = std::make_shared<ParseArgs>();
     CLI::App* cmd = app.add_subcommand("parse", "Parse a scene and print its canonical description");
     cmd->add_option("scene", args->scene, "Scene file (.pov)")->required();
+    addLimitOptions(*cmd, args->limits);
     cmd->add_option("-L,--library-path", args->includePaths,
                     "Folder searched by #include after the including file's and the scene's, before POV-Ray's own");
     cmd->add_option("-D,--define", args->defines, "NAME=VALUE declared before the scene runs");

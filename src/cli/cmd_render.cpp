@@ -37,6 +37,7 @@ namespace {
 
 struct RenderArgs {
     std::string scene;
+    lang::InterpreterOptions limits;  // --max-*: the limits of what the scene may ask for
     std::string output;
     int width = 640, height = 480;
     std::string method = "asos";
@@ -173,7 +174,7 @@ int runRender(const RenderArgs& args) {
         samplesAov = aov.substr(eq + 1);
         if (IoStatus s = checkOutputPath(*samplesAov); !s.ok()) problems.push_back("--aov: " + s.error);
     }
-    lang::InterpreterOptions options;
+    lang::InterpreterOptions options = args.limits;
     for (const auto& dir : args.includePaths) options.includePaths.emplace_back(dir);
     for (const auto& text : args.defines) {
         if (std::optional<lang::Define> define = parseDefine(text))
@@ -258,6 +259,7 @@ void addRenderCommand(CLI::App& app, CommandResult& result) {
     auto args = std::make_shared<RenderArgs>();
     CLI::App* cmd = app.add_subcommand("render", "Render a scene to an image file");
     cmd->add_option("scene", args->scene, "Scene file (.pov)")->required();
+    addLimitOptions(*cmd, args->limits);
     cmd->add_option("-o,--output", args->output,
                     "Image file; the format follows the extension (.png, .exr, .tif, ...)")
         ->required();

@@ -29,7 +29,10 @@ Mat4 axisRotation(int axis, double degrees) {
     double s, c;
     const double q = degrees / 90.0;
     if (q == std::floor(q)) {
-        const long k = ((static_cast<long>(q) % 4) + 4) % 4;
+        // fmod is exact, and defined for any whole q (a cast to an integer is
+        // not, beyond its range).
+        const double r = std::fmod(q, 4.0);
+        const auto k = static_cast<int>(r < 0 ? r + 4.0 : r);
         const double ss[4] = {0, 1, 0, -1}, cc[4] = {1, 0, -1, 0};
         s = ss[k];
         c = cc[k];

@@ -23,10 +23,12 @@ Value Interpreter::makeArray(const Node& n) {
             fail(n[d], "the size of an array must be a whole number, at least 1, not " + formatNumber(v - kPovEpsilon));
         const auto size = static_cast<std::uint32_t>(v);
         if (static_cast<double>(total) * size > static_cast<double>(options_.maxArrayElements))
-            fail(n[d], "this array would hold more than " + std::to_string(options_.maxArrayElements) + " elements");
+            fail(n[d], "this array would hold more than " + std::to_string(options_.maxArrayElements) +
+                           " elements, the limit (raise it with --max-array-elements)");
         total *= size;
         array->sizes.push_back(size);
     }
+    checkMemory(n, total * sizeof(Value), "this array");
     array->elements.assign(total, Unset{});
     if (n.count > dimensions) fillArray(*array, n[dimensions], 0, 0);
     return array;

@@ -55,6 +55,21 @@ std::string utf8(std::uint32_t c) {
 
 }  // namespace
 
+bool isFinite(const Num& n) {
+    const int count = n.colour ? 5 : n.dim;
+    for (int i = 0; i < count; ++i)
+        if (!std::isfinite(n.v[i])) return false;
+    return true;
+}
+
+std::string describeNumbers(const Num& n) {
+    if (n.isFloat()) return formatNumber(n.v[0]);
+    std::string s = "<";
+    const int count = n.colour ? 5 : n.dim;
+    for (int i = 0; i < count; ++i) s += (i ? ", " : "") + formatNumber(n.v[i]);
+    return s + ">";
+}
+
 std::string describe(const Num& n) {
     if (n.colour) return "a colour";
     if (n.dim == 1) return "a float";
@@ -201,7 +216,7 @@ double component(const Num& a, int i) { return a.isFloat() ? a.v[0] : a.v[i]; }
 // beyond 256 and precisions beyond 64 are clipped (POV-Ray's buffer is 256).
 std::string formatStr(double value, int width, int precision) {
     const std::string format = std::string("%") + (width < 0 ? "0" : "") + "*.*f";
-    const int w = std::min(std::abs(width), 256);
+    const int w = static_cast<int>(std::min<std::int64_t>(std::abs(std::int64_t{width}), 256));  // INT_MIN too
     const int p = precision < 0 ? 6 : std::min(precision, 64);
     const int size = std::snprintf(nullptr, 0, format.c_str(), w, p, value);
     std::string s(static_cast<std::size_t>(std::max(size, 0)), '\0');
@@ -314,6 +329,10 @@ Num Interpreter::binaryStep(const Node& n, const Num& acc) {
             if (y == 0.0) fail(n, "division by zero");
             r.v[i] = x / y;
         }
+        // Operands are finite (every value is): only an overflow leaves it.
+        if (!std::isfinite(r.v[i]))
+            fail(n, formatNumber(x) + " " + std::string(wordText(op)) + " " + formatNumber(y) +
+                        " overflows: the result is not a finite number");
     }
     return r;
 }
@@ -356,7 +375,10 @@ Value Interpreter::eval(const Node& n) {
             return uv;
         }
         case Word::Pi: return Num::scalar(3.1415926535897932384626);
-        case Word::Clock: return Num::scalar(options_.clock);
+        case Word::Clock:
+            if (!std::isfinite(options_.clock))
+                fail(n, "the clock must be a finite number, not " + formatNumber(options_.clock));
+            return Num::scalar(options_.clock);
         case Word::ClockOn: return Num::scalar(options_.clockOn ? 1.0 : 0.0);
         // No animation: POV-Ray's values for a single frame.
         case Word::ClockDelta: case Word::FrameNumber: case Word::InitialFrame: case Word::FinalFrame:
@@ -433,8 +455,14 @@ Value Interpreter::eval(const Node& n) {
     }
     case NodeKind::Colour:
         return evalColourNode(n, ColourChannels::Rgbft);
-    case NodeKind::Call:
-        return call(n);
+    case NodeKind::Call: {
+        // No value is NaN or infinite: a function's result that overflows
+        // (exp(1000), val("inf")) is refused where it is made.
+        Value v = call(n);
+        if (const auto* num = std::get_if<Num>(&v); num && !isFinite(*num))
+            fail(n, std::string(wordText(n.word)) + ": the result is not a finite number (" + describeNumbers(*num) + ")");
+        return v;
+    }
     default:
         fail(n, "this is not an expression");
     }
@@ -511,8 +539,20 @@ Value Interpreter::call(const Node& n) {
         return eval(args[a < 0 ? 1 : a == 0 ? 2 : 3]);
     }
     case Word::Concat: {
+        // `#declare S = concat(S, S)` in a loop doubles S: its length is
+        // checked before it is allocated.
         std::string s;
-        for (const Node& a : args) s += evalString(a);
+        for (const Node& a : args) {
+            std::string part = evalString(a);
+            if (s.size() + part.size() > options_.maxStringLength) {
+                error(n, "concat: the string would be " + std::to_string(s.size() + part.size()) +
+                             " characters long, over the limit of " + std::to_string(options_.maxStringLength) +
+                             " (raise it with --max-string-length)");
+                throw Stop{};  // as past every limit (checkObjects)
+            }
+            checkMemory(n, s.size() + part.size(), "concat");
+            s += part;
+        }
         return s;
     }
     case Word::Str: {

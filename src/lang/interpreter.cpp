@@ -5,6 +5,7 @@
 #include <cmath>
 #include <fstream>
 #include <map>
+#include <new>
 
 #include "asos/lang/parse.hpp"
 #include "src/lang/interpreter_impl.hpp"
@@ -36,6 +37,22 @@ Transform compose(const Transform& outer, const Transform& inner) {
     if (inner.isIdentity()) return outer;
     if (outer.isIdentity()) return inner;
     return outer * inner;
+}
+
+bool isFinite(const Vec3& v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); }
+
+bool isFinite(const Transform& t) {
+    for (int c = 0; c < 4; ++c)
+        for (int r = 0; r < 4; ++r)
+            if (!std::isfinite(t.matrix()[c][r]) || !std::isfinite(t.inverseMatrix()[c][r])) return false;
+    return true;
+}
+
+Transform Interpreter::composeAt(const Node& at, const Transform& outer, const Transform& inner) {
+    Transform t = compose(outer, inner);
+    if (!isFinite(t))
+        fail(at, "this transform and those before it overflow together: the result is not a finite number");
+    return t;
 }
 
 Interpreter::Interpreter(const InterpreterOptions& options, Diagnostics& diagnostics)
@@ -161,12 +178,25 @@ std::optional<SceneDescription> Interpreter::run(SourceFile& f) {
         const bool parsed = parseSceneEntries(f.text, f.name, names_, diagnostics_,
                                               [&](const Ast& ast, const Node& entry) {
                                                   ast_ = &ast;
-                                                  runEntries(std::span<const Node>(&entry, 1), handler);
+                                                  runTopLevel(entry, handler);
                                               });
         if (!parsed) ++errorCount_;
     } catch (const Stop&) {
     }
     return finish();
+}
+
+// What the limits (InterpreterOptions) did not foresee: memory runs out
+// while this statement runs. The run stops with an error at it rather than an
+// uncaught std::bad_alloc.
+void Interpreter::runTopLevel(const Node& entry, EntryHandler handler) {
+    try {
+        runEntries(std::span<const Node>(&entry, 1), handler);
+    } catch (const std::bad_alloc&) {
+        error(entry, "out of memory while running this statement: it asks for more than this machine has "
+                     "(lower what it makes, or --max-memory to stop it sooner)");
+        throw Stop{};
+    }
 }
 
 void Interpreter::applyDefines() {
@@ -543,9 +573,13 @@ void Interpreter::runInclude(const Node& n, EntryHandler handle) {
         for (const auto& dir : options_.libraryPaths) add(dir);
     }
     std::filesystem::path found;
+    std::filesystem::path notAFile;  // the first match that is a folder or a device (/dev/zero)
     std::error_code ec;
     auto tryPath = [&](const std::filesystem::path& candidate) {
-        if (!std::filesystem::is_regular_file(candidate, ec)) return false;
+        if (!std::filesystem::is_regular_file(candidate, ec)) {
+            if (notAFile.empty() && std::filesystem::exists(candidate, ec)) notAFile = candidate;
+            return false;
+        }
         found = std::filesystem::weakly_canonical(candidate, ec);
         if (ec) found = candidate;
         return true;
@@ -556,6 +590,9 @@ void Interpreter::runInclude(const Node& n, EntryHandler handle) {
         for (const auto& dir : folders)
             if (tryPath(dir / asked)) break;
     }
+    if (found.empty() && !notAFile.empty())
+        fatal(n[0], "cannot include '" + name + "': " + notAFile.lexically_normal().string() + " is " +
+                        (std::filesystem::is_directory(notAFile, ec) ? "a folder" : "not a regular file"));
     if (found.empty()) {
         std::string where;
         for (const auto& dir : folders) where += (where.empty() ? "" : ", ") + dir.string();

@@ -60,6 +60,8 @@ struct ObjectTree {
     std::shared_ptr<const Texture> texture;  // its own; null: inherited or the default
     bool noShadow = false;
     bool modified = false;  // a union has had a modifier: no more children
+    std::size_t leaves = 1;  // the shapes and lights it holds (a union's, all its children's)
+    std::size_t nodes = 1;   // ObjectTrees in it, itself included: what a copy allocates
     AsosOptions asos;
     std::vector<ObjectTree> children;
     SourceLoc loc;
@@ -150,6 +152,10 @@ inline std::string countOf(std::size_t n, std::string_view noun) {
 // "a float", "a vector", "a string", … for messages.
 std::string describe(const Value& v);
 std::string describe(const Num& n);
+// Every component is a finite number.
+bool isFinite(const Num& n);
+// "2.5", "<1, nan, 0>": the numbers themselves, for messages.
+std::string describeNumbers(const Num& n);
 
 // What a colour carries where it is used, as POV-Ray's Parse_Colour reads
 // it: all five components for a pigment's or the background's colour; red,
@@ -273,6 +279,7 @@ public:
 
 private:
     std::optional<SceneDescription> run(SourceFile& file);
+    void runTopLevel(const Node& entry, EntryHandler handler);
     BreakNode runBody(std::span<const Node> entries, EntryHandler handle);
     BreakNode runDirective(const Node& n, EntryHandler handle);
     BreakNode runSequence(const Node& seq, EntryHandler handle);
@@ -308,11 +315,20 @@ private:
     void applyVersionRules();
 
     // items.cpp
-    void placeObject(ObjectTree&& tree);
+    void placeObject(ObjectTree&& tree, const Node& at);
+    // The limits of InterpreterOptions: a request for `count` more objects
+    // (leaves of `tree`s), or for `bytes` (estimated) on top of the objects
+    // made so far, refused at `at` past its limit.
+    void checkObjects(const Node& at, std::size_t count, const char* what);
+    void checkMemory(const Node& at, std::size_t bytes, const char* what);
     void flatten(ObjectTree& node, const std::shared_ptr<const Texture>& inherited,
                  bool inheritedNoShadow, const AsosOptions& inheritedAsos);
     void applyObjectModifier(ObjectTree& tree, const Node& n, bool isShape);
-    void applyTransform(ObjectTree& tree, const Transform& m);
+    // `at`: the transform item, named when the result would not be finite.
+    void applyTransform(ObjectTree& tree, const Transform& m, const Node& at);
+    // compose(outer, inner), refused at `at` (the item that added `outer`)
+    // when the product overflows.
+    Transform composeAt(const Node& at, const Transform& outer, const Transform& inner);
     Light evalLight(const Node& block);
     void applyGlobalSettings(const Node& block);
     // `forLight`: the block is a light's, where `emitter` belongs.
@@ -365,6 +381,19 @@ private:
         const Ast* ast_;
     };
     std::size_t depth_ = 0;  // nesting, for Nested
+    // The tree nodes held by the unions being built, for checkMemory.
+    std::size_t unionNodes_ = 0;
+    class HeldNodes {
+    public:
+        HeldNodes(Interpreter& self, const ObjectTree& tree) : self_(self), tree_(tree) {}
+        ~HeldNodes() { self_.unionNodes_ -= tree_.nodes - 1; }
+        HeldNodes(const HeldNodes&) = delete;
+        HeldNodes& operator=(const HeldNodes&) = delete;
+
+    private:
+        Interpreter& self_;
+        const ObjectTree& tree_;
+    };
     std::vector<std::uint32_t> randomStreams_;  // seed(): POV-Ray's generators, by number
 
     SceneDescription scene_;
@@ -376,5 +405,8 @@ private:
 
 // Transforms: compose without touching exact values when one side is the identity.
 Transform compose(const Transform& outer, const Transform& inner);
+// Every entry of the transform and of its inverse is a finite number.
+bool isFinite(const Transform& t);
+bool isFinite(const Vec3& v);
 
 }  // namespace asos::lang

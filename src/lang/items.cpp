@@ -32,6 +32,12 @@ bool isObjectBlock(const Node& n) {
 // A declared value named where a block's entry may stand: Name or Name[i]….
 bool isReference(const Node& n) { return n.kind == NodeKind::Name || n.kind == NodeKind::Index; }
 
+// A light's position and area axes are finite numbers (a transform can
+// overflow them).
+bool finitePlacement(const Light& l) {
+    return isFinite(l.position) && (!l.area || (isFinite(l.area->axis1) && isFinite(l.area->axis2)));
+}
+
 bool isTransform(const Node& n) {
     return n.kind == NodeKind::Item && (n.word == Word::Translate || n.word == Word::Rotate ||
                                         n.word == Word::Scale || n.word == Word::Matrix);
@@ -106,7 +112,7 @@ void Interpreter::runTopEntry(const Node& n) {
         return;
     default:
         if (!isObjectBlock(n)) fail(n, "this is not a scene item");
-        placeObject(evalObject(n));
+        placeObject(evalObject(n), n);
     }
 }
 
@@ -122,7 +128,32 @@ Value Interpreter::evalDeclarable(const Node& n) {
     }
 }
 
-void Interpreter::placeObject(ObjectTree&& tree) { flatten(tree, nullptr, false, AsosOptions{}); }
+void Interpreter::placeObject(ObjectTree&& tree, const Node& at) {
+    checkObjects(at, objects_.size() + scene_.lights.size() + tree.leaves, "the scene");
+    checkMemory(at, tree.leaves * sizeof(Object), "the scene's objects");
+    flatten(tree, nullptr, false, AsosOptions{});
+}
+
+// Past a limit the run stops: going on would repeat the work that passed it
+// (a doubling union's next line copies the same large tree again).
+void Interpreter::checkObjects(const Node& at, std::size_t count, const char* what) {
+    if (count <= options_.maxObjects) return;
+    error(at, std::string(what) + " would hold " + std::to_string(count) + " objects, over the limit of " +
+                  std::to_string(options_.maxObjects) + " (raise it with --max-objects)");
+    throw Stop{};
+}
+
+void Interpreter::checkMemory(const Node& at, std::size_t bytes, const char* what) {
+    constexpr double kMiB = 1024.0 * 1024.0;
+    const double total = static_cast<double>(objects_.size() * sizeof(Object)) +
+                         static_cast<double>(unionNodes_ * sizeof(ObjectTree)) + static_cast<double>(bytes);
+    if (total <= static_cast<double>(options_.maxMemoryMiB) * kMiB) return;
+    const auto mib = static_cast<std::uint64_t>(std::ceil(total / kMiB));
+    error(at, std::string(what) + " would take about " + std::to_string(mib) +
+                  " MiB, over the limit of " + std::to_string(options_.maxMemoryMiB) +
+                  " MiB a scene may ask for (raise it with --max-memory)");
+    throw Stop{};
+}
 
 // Consumes `node` (moves its parts into the scene).
 void Interpreter::flatten(ObjectTree& node, const std::shared_ptr<const Texture>& inherited,
@@ -222,11 +253,20 @@ ObjectTree Interpreter::evalObject(const Node& block) {
         return t;
     case Word::Union: {
         t.kind = ObjectTree::Kind::Union;
+        t.leaves = 0;
+        const HeldNodes held(*this, t);
         auto entry = [&](const Node& n) {
             if (isObjectBlock(n)) {
                 if (t.modified)
                     fail(n, "the objects of a union come before its modifiers");
-                t.children.push_back(evalObject(n));
+                ObjectTree child = evalObject(n);
+                // A union of a declared union doubles it: 30 lines make 2^30
+                // objects. The tree is counted before it grows.
+                checkObjects(n, t.leaves + child.leaves, "this union");
+                t.leaves += child.leaves;
+                t.nodes += child.nodes;
+                unionNodes_ += child.nodes;
+                t.children.push_back(std::move(child));
             } else {
                 t.modified = true;
                 applyObjectModifier(t, n, false);
@@ -241,6 +281,9 @@ ObjectTree Interpreter::evalObject(const Node& block) {
             const Value v = eval(base);
             const auto* o = std::get_if<std::shared_ptr<const ObjectTree>>(&v);
             if (!o) fail(base, referenceText(base) + " is " + describe(v) + ", not an object");
+            // Before the copy is made; counted twice, for the declared
+            // original stays alive beside it (a doubling union's peak).
+            checkMemory(base, 2 * (*o)->nodes * sizeof(ObjectTree), "a copy of this object");
             t = **o;
         } else {
             t = evalObject(base);
@@ -258,10 +301,10 @@ ObjectTree Interpreter::evalObject(const Node& block) {
     return t;
 }
 
-void Interpreter::applyTransform(ObjectTree& tree, const Transform& m) {
+void Interpreter::applyTransform(ObjectTree& tree, const Transform& m, const Node& at) {
     switch (tree.kind) {
     case ObjectTree::Kind::Shape:
-        tree.worldFromObject = compose(m, tree.worldFromObject);
+        tree.worldFromObject = composeAt(at, m, tree.worldFromObject);
         break;
     case ObjectTree::Kind::Light: {
         auto light = std::make_shared<Light>(*tree.light);
@@ -270,16 +313,18 @@ void Interpreter::applyTransform(ObjectTree& tree, const Transform& m) {
             light->area->axis1 = m.vector(light->area->axis1);
             light->area->axis2 = m.vector(light->area->axis2);
         }
+        if (!finitePlacement(*light))
+            fail(at, "this transform moves a light_source out of range: its position is no longer finite");
         tree.light = std::move(light);
         break;
     }
     case ObjectTree::Kind::Union:
-        for (ObjectTree& child : tree.children) applyTransform(child, m);
+        for (ObjectTree& child : tree.children) applyTransform(child, m, at);
         break;
     }
     if (tree.texture) {
         auto moved = std::make_shared<Texture>(*tree.texture);
-        moved->pigment.worldFromPattern = compose(m, moved->pigment.worldFromPattern);
+        moved->pigment.worldFromPattern = composeAt(at, m, moved->pigment.worldFromPattern);
         tree.texture = std::move(moved);
     }
 }
@@ -294,7 +339,10 @@ Transform Interpreter::evalTransformItem(const Node& item) {
         const Vec3 s = evalVector(item[0]);
         if (s.x == 0 || s.y == 0 || s.z == 0)
             fail(item[0], "scale by zero (" + formatVector(s) + ") flattens everything");
-        return Transform::scale(s);
+        const Transform t = Transform::scale(s);
+        if (!isFinite(t))
+            fail(item[0], "scale by " + formatVector(s) + " is too small: its inverse is not a finite number");
+        return t;
     }
     default: {
         double m[12];
@@ -302,14 +350,16 @@ Transform Interpreter::evalTransformItem(const Node& item) {
         const double det = m[0] * (m[4] * m[8] - m[5] * m[7]) - m[1] * (m[3] * m[8] - m[5] * m[6]) +
                            m[2] * (m[3] * m[7] - m[4] * m[6]);
         if (det == 0 || !std::isfinite(det)) fail(item, "this matrix cannot be inverted");
-        return Transform::fromPovMatrix(m);
+        const Transform t = Transform::fromPovMatrix(m);
+        if (!isFinite(t)) fail(item, "this matrix cannot be inverted: its inverse is not a finite number");
+        return t;
     }
     }
 }
 
 void Interpreter::applyObjectModifier(ObjectTree& tree, const Node& n, bool isShape) {
     if (isTransform(n)) {
-        applyTransform(tree, evalTransformItem(n));
+        applyTransform(tree, evalTransformItem(n), n);
         return;
     }
     const bool isLight = tree.kind == ObjectTree::Kind::Light;
@@ -381,7 +431,7 @@ std::shared_ptr<const Pigment> Interpreter::evalPigment(const Node& block, const
     };
     auto entry = [&](const Node& n) {
         if (isTransform(n)) {
-            p->worldFromPattern = compose(evalTransformItem(n), p->worldFromPattern);
+            p->worldFromPattern = composeAt(n, evalTransformItem(n), p->worldFromPattern);
             stage = Stage::Modifiers;
         } else if (n.kind == NodeKind::Item && n.word == Word::Checker) {
             pattern(n);
@@ -580,7 +630,7 @@ std::shared_ptr<const Texture> Interpreter::evalTexture(const Node& block) {
             if (!declared) fail(n, referenceText(n) + " is " + describe(v) + ", not a texture");
             *t = **declared;
         } else if (isTransform(n)) {
-            t->pigment.worldFromPattern = compose(evalTransformItem(n), t->pigment.worldFromPattern);
+            t->pigment.worldFromPattern = composeAt(n, evalTransformItem(n), t->pigment.worldFromPattern);
         } else if (n.word == Word::Pigment) {
             t->pigment = *evalPigment(n, t->pigment);
         } else if (n.word == Word::Finish) {
@@ -629,6 +679,8 @@ Light Interpreter::evalLight(const Node& block) {
                 l.area->axis1 = m.vector(l.area->axis1);
                 l.area->axis2 = m.vector(l.area->axis2);
             }
+            if (!finitePlacement(l))
+                fail(n, "this transform moves the light_source out of range: its position is no longer finite");
             return;
         }
         switch (n.word) {
@@ -698,7 +750,7 @@ CameraValue Interpreter::evalCamera(const Node& block) {
             return;
         }
         if (isTransform(n)) {
-            transform = compose(evalTransformItem(n), transform);
+            transform = composeAt(n, evalTransformItem(n), transform);
             return;
         }
         Camera& c = cv.camera;
@@ -778,7 +830,20 @@ void Interpreter::applyGlobalSettings(const Node& block) {
             assumedGammaSet_ = true;
             break;
         }
-        case Word::MaxTraceLevel: g.maxTraceLevel = evalInt(n[0], 1); break;
+        case Word::MaxTraceLevel: {
+            const double v = evalFloat(n[0]);
+            if (!(v >= 1))
+                fail(n[0], "max_trace_level must be a whole number of at least 1, not " + formatNumber(v));
+            if (v > kMaxTraceLevelLimit) {
+                report(Severity::Warning, n[0],
+                       "max_trace_level is at most " + std::to_string(kMaxTraceLevelLimit) + " (as in POV-Ray 3.7): " +
+                           formatNumber(v) + " becomes " + std::to_string(kMaxTraceLevelLimit));
+                g.maxTraceLevel = kMaxTraceLevelLimit;
+            } else {
+                g.maxTraceLevel = static_cast<int>(v);  // POV-Ray truncates
+            }
+            break;
+        }
         case Word::NoiseGenerator: g.noiseGenerator = evalNoiseGenerator(n[0]); break;
         case Word::AmbientLight: g.ambientLight = evalRgb(n[0], "ambient_light"); break;
         case Word::Asos: g.asos = evalAsos(n, g.asos); break;

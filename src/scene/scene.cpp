@@ -1,10 +1,21 @@
 #include "asos/scene/scene.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <memory>
 #include <stdexcept>
 
+#include "asos/shapes/shape_issue.hpp"
+
 namespace asos {
+
+namespace {
+bool finiteBounds(const Bounds3& b) {
+    for (int axis = 0; axis < 3; ++axis)
+        if (!std::isfinite(b.lo[axis]) || !std::isfinite(b.hi[axis])) return false;
+    return true;
+}
+}  // namespace
 
 std::unique_ptr<Scene> Scene::build(SceneDescription description, Diagnostics& diagnostics) {
     std::unique_ptr<Scene> scene(new Scene());
@@ -23,6 +34,15 @@ std::unique_ptr<Scene> Scene::build(SceneDescription description, Diagnostics& d
         }
         const Primitive& p = byObject.back();
         const auto index = static_cast<std::uint32_t>(i);
+        if (p.bounded() && !finiteBounds(p.worldBounds())) {
+            // Finite numbers whose bounds overflow (a huge radius far away):
+            // refused here, where the object's location is known.
+            diagnostics.error(object.loc, "this object is too large: its bounding box is not finite (" +
+                                              formatVector(p.worldBounds().lo) + " to " +
+                                              formatVector(p.worldBounds().hi) + ")");
+            ok = false;
+            continue;
+        }
         if (p.bounded()) {
             scene->bounded_.push_back(index);
             bounds.push_back(p.worldBounds());

@@ -64,7 +64,10 @@ LocalFrame LocalFrame::make(const Transform& worldFromObject, const Mat3& object
     if (!finite(w) || !std::isfinite(f.worldOffset.x + f.worldOffset.y + f.worldOffset.z))
         throw std::invalid_argument("the object's transform is not finite");
     const double colNorms = glm::length(w[0]) * glm::length(w[1]) * glm::length(w[2]);
-    if (!(std::abs(glm::determinant(w)) > kThousandsOfUlps * colNorms))  // zero to rounding
+    const double volume = glm::determinant(w);
+    if (!std::isfinite(colNorms) || !std::isfinite(volume))  // finite entries, but their volume overflows
+        throw std::invalid_argument("the object's transform scales it too much: its volume is not a finite number");
+    if (!(std::abs(volume) > kThousandsOfUlps * colNorms))  // zero to rounding
         throw std::invalid_argument(
             "the object's transform is singular (a zero scale flattens the object)");
     if (!finite(f.localFromWorld) ||

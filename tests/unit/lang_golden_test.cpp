@@ -1,7 +1,7 @@
 // Golden files of the language: the dump of every example and of the focused
 // scenes in tests/golden/parse/ (NAME.pov → NAME.dump), and the diagnostics
-// of the mistakes and warnings in tests/golden/diag/ (NAME.pov → NAME.err,
-// exact text).
+// of the mistakes and warnings in tests/golden/diag/ and of the bad-scene
+// corpus in tests/golden/errors/ (NAME.pov → NAME.err, exact text).
 // Goldens are rewritten only by the golden switch (goldens.hpp,
 // scripts/update-goldens.sh); a failing comparison leaves what it got in the
 // build tree (build/golden-out/tests/golden/...) and the golden alone.
@@ -105,15 +105,17 @@ TEST_CASE("golden dumps of the examples and the focused scenes", "[lang][golden]
     }
 }
 
+namespace {
+
 // A scene named warning_*.pov is read, with warnings only; any other is a
 // mistake that stops it.
-TEST_CASE("golden diagnostics of mistakes", "[lang][golden]") {
-    const auto files = scenesIn(kSource / "tests" / "golden" / "diag");
-    REQUIRE(files.size() >= 30);
+void checkDiagnostics(const fs::path& folder, const lang::InterpreterOptions& options, std::size_t atLeast) {
+    const auto files = scenesIn(folder);
+    REQUIRE(files.size() >= atLeast);
     for (const auto& file : files) {
         INFO("scene " << fs::relative(file, kSource).string());
         Diagnostics diagnostics;
-        auto scene = lang::interpretFile(file, optionsFor(file), diagnostics);
+        auto scene = lang::interpretFile(file, options, diagnostics);
         if (file.filename().string().starts_with("warning_")) {
             CHECK(scene);
             CHECK_FALSE(diagnostics.hasErrors());
@@ -126,6 +128,26 @@ TEST_CASE("golden diagnostics of mistakes", "[lang][golden]") {
         golden.replace_extension(".err");
         compareGolden(golden, formatAll(diagnostics));
     }
+}
+
+}  // namespace
+
+TEST_CASE("golden diagnostics of mistakes", "[lang][golden]") {
+    checkDiagnostics(kSource / "tests" / "golden" / "diag", optionsFor(kSource), 30);
+}
+
+// The corpus of bad scenes: a class of mistake or a boundary each (limits,
+// nesting, float-to-integer conversions, non-finite values, the newer
+// constructs). The limits are lowered so that the scenes that pass them stay
+// small and quick; the messages name these values.
+TEST_CASE("golden diagnostics of the bad-scene corpus", "[lang][golden]") {
+    lang::InterpreterOptions options = optionsFor(kSource);
+    options.maxObjects = 50'000;
+    options.maxStringLength = 1'000'000;
+    options.maxArrayElements = 2'000'000;
+    options.maxMemoryMiB = 32;
+    options.maxLoopIterations = 1'000'000;
+    checkDiagnostics(kSource / "tests" / "golden" / "errors", options, 80);
 }
 
 TEST_CASE("parse, dump, parse, dump is a fixed point", "[lang][dump]") {

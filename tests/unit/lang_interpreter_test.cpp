@@ -3,12 +3,15 @@
 // `povray` with #debug), and the semantic errors it reports.
 #include <catch2/catch.hpp>
 
+#include <pthread.h>
+
 #include <cmath>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
 
 #include "asos/lang/interpreter.hpp"
+#include "asos/lang/parse.hpp"
 #include "interpret_text.hpp"
 
 using namespace asos;
@@ -324,6 +327,58 @@ TEST_CASE("nesting is bounded in total, across includes", "[lang][interpreter]")
     std::string sum = "1";
     for (int i = 1; i < 100000; ++i) sum += "+1";
     CHECK(floatOf(sum) == 100000);
+}
+
+namespace {
+// Runs `body` on a thread with a stack of `bytes` (a worker's, smaller than
+// the main thread's 8 MiB).
+void onThreadWithStack(std::size_t bytes, void (*body)()) {
+    pthread_attr_t attributes;
+    pthread_attr_init(&attributes);
+    REQUIRE(pthread_attr_setstacksize(&attributes, bytes) == 0);
+    pthread_t thread;
+    auto start = [](void* f) -> void* {
+        reinterpret_cast<void (*)()>(f)();
+        return nullptr;
+    };
+    REQUIRE(pthread_create(&thread, &attributes, start, reinterpret_cast<void*>(body)) == 0);
+    pthread_join(thread, nullptr);
+    pthread_attr_destroy(&attributes);
+}
+
+// Just within the nesting limit and just past it, for each kind of nesting:
+// read without a crash, or refused with a located error.
+int deepNestingOutcomes() {
+    int correct = 0;
+    const auto outcome = [&](const std::string& open, const std::string& inner, const std::string& close,
+                             const std::string& after = "") {
+        for (const std::size_t depth : {std::size_t{990}, kMaxNesting + 1}) {
+            std::string text = open == "(" ? "#declare X = " : "";
+            for (std::size_t i = 0; i < depth; ++i) text += open;
+            text += inner;
+            for (std::size_t i = 0; i < depth; ++i) text += close;
+            text += after;
+            Diagnostics d;
+            const bool read = interpretText(text, "deep.pov", {}, d).has_value();
+            const bool refused = !read && d.hasErrors() && d.all()[0].loc.line >= 1 &&
+                                 d.all()[0].message.find("nested too deep") != std::string::npos;
+            correct += depth <= kMaxNesting ? read : refused;
+        }
+    };
+    outcome("(", "1", ")", ";");
+    outcome("union { ", "sphere { 0, 1 }", " }");
+    outcome("#if (1) ", "sphere { 0, 1 }", " #end ");
+    outcome("object { ", "sphere { 0, 1 }", " }");
+    return correct;
+}
+}  // namespace
+
+TEST_CASE("deep nesting fits a 2 MiB stack and stops at the limit, on the main thread and on others",
+          "[lang][interpreter]") {
+    CHECK(deepNestingOutcomes() == 8);
+    static int onWorker = 0;
+    onThreadWithStack(std::size_t{2} << 20, [] { onWorker = deepNestingOutcomes(); });
+    CHECK(onWorker == 8);
 }
 
 TEST_CASE("command-line defines and the clock", "[lang][interpreter]") {

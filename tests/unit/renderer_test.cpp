@@ -264,3 +264,25 @@ TEST_CASE("Command-line ASOS options override global_settings, and objects refin
     CHECK(scene.finest(AsosSettings{0.5, 7, false}) == AsosSettings{0.1, 7, false});
     CHECK(AsosSettings{} == AsosSettings{1.0 / 64.0, 4, false});
 }
+
+TEST_CASE("max_trace_level is capped at POV-Ray's 256, and two mirrors fit a worker's stack", "[renderer]") {
+    // Two facing mirrors: every eye ray reflects until the trace level stops
+    // it. A description asking for 100000 levels gets 256, on worker threads
+    // (TBB's stacks are smaller than the main thread's).
+    SceneDescription s;
+    s.camera = lookAtCamera({0, 0, -0.5}, {0, 0, 1}, 30);
+    s.lights.push_back(pointLight({0, 0, 0}));
+    Texture mirror = litTexture(Vec3(0.5));
+    mirror.finish.reflection = Vec3(1.0);
+    s.objects.push_back(makeObject(PlaneShape{{0, 0, 1}, 1}, mirror));
+    s.objects.push_back(makeObject(PlaneShape{{0, 0, -1}, 1}, mirror));
+    s.globals.maxTraceLevel = 100000;
+    RenderSettings settings;
+    settings.width = 8;
+    settings.height = 8;
+    settings.method = RenderMethod::Single;
+    settings.threads = 4;
+    const RenderOutput out = renderOrFail(s, settings);
+    CHECK(out.stats.counters.eyeRays == 64u);
+    CHECK(out.stats.counters.reflectedRays == 64u * (kMaxTraceLevelLimit - 1));
+}

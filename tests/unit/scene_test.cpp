@@ -72,6 +72,22 @@ TEST_CASE("Scene build reports every meaningless object with its location", "[sc
     CHECK(diag.all()[1].loc.line == 9);
 }
 
+TEST_CASE("Scene build names what is wrong with an object too large to bound, at its location", "[scene]") {
+    SceneDescription d;
+    d.objects.push_back(sphereObject({1e308, 0, 0}, 1e308));  // finite numbers, infinite bounds
+    d.objects.push_back(sphereObject({0, 0, 0}, 1));
+    d.objects.back().worldFromObject = Transform::scale(Vec3(1e300));  // a volume of 1e900
+    d.objects[0].loc.line = 4;
+    d.objects[1].loc.line = 6;
+    Diagnostics diag;
+    CHECK_FALSE(Scene::build(d, diag));
+    REQUIRE(diag.all().size() == 2);
+    CHECK(diag.all()[0].loc.line == 4);
+    CHECK_THAT(diag.all()[0].message, Catch::Contains("too large: its bounding box is not finite"));
+    CHECK(diag.all()[1].loc.line == 6);
+    CHECK_THAT(diag.all()[1].message, Catch::Contains("scales it too much"));
+}
+
 // The scene's ray searches test translated spheres from a compact array and
 // every other object through its Primitive: both paths must give exactly the
 // primitive's own answers, hit record included.

@@ -33,7 +33,12 @@ struct InterpreterOptions {
     int imageHeight = 240;                            // `image_height`
     std::size_t maxErrors = 100;                      // then stop: one mistake in a loop repeats
     std::size_t maxLoopIterations = 100'000'000;      // all #while/#for iterations together
-    std::size_t maxArrayElements = 10'000'000;        // in one array
+    // What a scene may ask for, checked before it is allocated: past one, a
+    // located error names the limit and its option (docs/language.md, Limits).
+    std::size_t maxArrayElements = 10'000'000;        // in one array (--max-array-elements)
+    std::size_t maxObjects = 50'000'000;              // shapes and lights in the scene or a union (--max-objects)
+    std::size_t maxStringLength = 16'777'216;         // characters in one string (--max-string-length)
+    std::size_t maxMemoryMiB = 8'192;                 // objects, unions, arrays and strings, estimated (--max-memory)
 };
 
 // POV-Ray's include folders where POV-Ray is installed: the Library_Path

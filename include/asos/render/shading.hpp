@@ -62,7 +62,9 @@ struct ShadingSettings {
     double adcBailout = kDefaultAdcBailout;
 
     static ShadingSettings from(const GlobalSettings& g) {
-        return {g.ambientLight, g.maxTraceLevel, kDefaultAdcBailout};
+        // Capped here too, for a description not made by the interpreter: a
+        // deeper recursion could overflow a worker thread's stack.
+        return {g.ambientLight, std::clamp(g.maxTraceLevel, 1, kMaxTraceLevelLimit), kDefaultAdcBailout};
     }
 };
 

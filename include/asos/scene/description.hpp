@@ -173,12 +173,17 @@ struct Object {
     SourceLoc loc;
 };
 
+// The deepest max_trace_level, POV-Ray 3.7's MAX_TRACE_LEVEL_LIMIT: a scene
+// that asks for more gets this many, with a warning. Reflection recurses once
+// per level, so this also bounds the stack a render thread needs.
+inline constexpr int kMaxTraceLevelLimit = 256;
+
 struct GlobalSettings {
     // The working gamma. None: POV-Ray's gamma correction is off, as for a
     // scene older than 3.7 (by its #version, or without one) that does not set
     // assumed_gamma; its colours are then written to files as they are.
     std::optional<double> assumedGamma = 1.0;
-    int maxTraceLevel = 5;
+    int maxTraceLevel = 5;  // 1 to kMaxTraceLevelLimit
     Vec3 ambientLight{1.0};
     int noiseGenerator = 2;  // POV-Ray's default, the range-corrected original noise
     AsosOptions asos;

@@ -14,4 +14,18 @@ int runProgram(CLI::App& app, int argc, char** argv, const CommandResult& result
     return result.exitCode;
 }
 
+void addLimitOptions(CLI::App& cmd, lang::InterpreterOptions& options) {
+    cmd.add_option("--max-objects", options.maxObjects, "Most shapes and lights a scene may make (default 50000000)")
+        ->check(CLI::PositiveNumber);
+    cmd.add_option("--max-string-length", options.maxStringLength,
+                   "Most characters in one string of a scene (default 16777216)")
+        ->check(CLI::PositiveNumber);
+    cmd.add_option("--max-array-elements", options.maxArrayElements,
+                   "Most elements in one array of a scene (default 10000000)")
+        ->check(CLI::PositiveNumber);
+    cmd.add_option("--max-memory", options.maxMemoryMiB,
+                   "MiB that a scene's objects, arrays and strings may take, estimated before they are made (default 8192)")
+        ->check(CLI::PositiveNumber);
+}
+
 }  // namespace asos::cli

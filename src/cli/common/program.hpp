@@ -5,6 +5,8 @@
 // callback, and only the program prints and decides the exit code.
 #include <CLI/CLI.hpp>
 
+#include "asos/lang/interpreter.hpp"
+
 namespace asos::cli {
 
 struct CommandResult {
@@ -16,5 +18,9 @@ struct CommandResult {
 // CLI11's exit code for --help, --version and a mistake in the options, else
 // the command's.
 int runProgram(CLI::App& app, int argc, char** argv, const CommandResult& result);
+
+// --max-objects, --max-string-length, --max-array-elements and --max-memory:
+// the limits of what a scene may ask for, set in `options`.
+void addLimitOptions(CLI::App& cmd, lang::InterpreterOptions& options);
 
 }  // namespace asos::cli

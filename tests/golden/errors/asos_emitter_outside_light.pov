@@ -1,0 +1,2 @@
+// emitter outside a light's asos block.
+global_settings { asos { emitter panel } }

@@ -1,0 +1,2 @@
+// A background colour that overflows.
+background { rgb exp(800) }

@@ -1,0 +1,2 @@
+// degrees() that overflows.
+#declare X = degrees(1e308);

@@ -1,0 +1,2 @@
+// exp() that overflows.
+#declare X = exp(1000);

@@ -1,0 +1,2 @@
+// A number literal beyond a double.
+#declare X = 1e400;

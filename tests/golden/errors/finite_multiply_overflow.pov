@@ -1,0 +1,2 @@
+// A product that overflows.
+#declare X = 1e308 * 10;

@@ -1,0 +1,2 @@
+// val() of "inf".
+#declare X = val("-inf");

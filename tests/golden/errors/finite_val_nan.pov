@@ -1,0 +1,2 @@
+// val() of "nan".
+#declare X = val("nan");

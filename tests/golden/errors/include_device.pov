@@ -1,0 +1,2 @@
+// An #include of a device, not a file.
+#include "/dev/zero"

@@ -1,0 +1,2 @@
+// An #include of a folder.
+#include "nest"

@@ -1,0 +1,3 @@
+// An array index beyond any integer.
+#declare A = array[2];
+#declare A[1e300] = 1;

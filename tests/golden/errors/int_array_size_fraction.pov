@@ -1,0 +1,2 @@
+// An array size below 1.
+#declare A = array[0.5];

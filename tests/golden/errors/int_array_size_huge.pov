@@ -1,0 +1,2 @@
+// An array size beyond 32 bits.
+#declare A = array[1e10];

@@ -1,0 +1,2 @@
+// The asos block's max beyond int.
+global_settings { asos { max 1e10 } }

@@ -1,0 +1,2 @@
+// The asos block's max below 0.
+global_settings { asos { max -1 } }

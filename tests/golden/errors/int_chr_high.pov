@@ -1,0 +1,2 @@
+// chr() past the last Unicode code point.
+#declare S = chr(1114112);

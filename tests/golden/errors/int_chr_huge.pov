@@ -1,0 +1,2 @@
+// chr() of a huge code.
+#declare S = chr(1e300);

@@ -1,0 +1,2 @@
+// chr(0).
+#declare S = chr(0);

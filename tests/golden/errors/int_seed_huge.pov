@@ -1,0 +1,2 @@
+// seed() beyond int.
+#declare R = seed(1e10);

@@ -1,0 +1,2 @@
+// str() with a width beyond int.
+#declare S = str(1, 3e9, 2);

@@ -1,0 +1,2 @@
+// substr() past the end of the string.
+#declare S = substr("abc", 3, 2);

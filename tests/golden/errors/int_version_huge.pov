@@ -1,0 +1,2 @@
+// A #version beyond any POV-Ray.
+#version 1e300;

@@ -1,0 +1,3 @@
+// A #for over a range beyond the loop limit.
+#for (I, 0, 1e300)
+#end

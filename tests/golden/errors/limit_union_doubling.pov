@@ -1,0 +1,33 @@
+// A union doubled 30 times: refused by --max-memory before a copy is made, not by std::bad_alloc.
+#declare A = sphere { 0, 1 }
+#declare A = union { object { A } object { A } }
+#declare A = union { object { A } object { A } }
+#declare A = union { object { A } object { A } }
+#declare A = union { object { A } object { A } }
+#declare A = union { object { A } object { A } }
+#declare A = union { object { A } object { A } }
+#declare A = union { object { A } object { A } }
+#declare A = union { object { A } object { A } }
+#declare A = union { object { A } object { A } }
+#declare A = union { object { A } object { A } }
+#declare A = union { object { A } object { A } }
+#declare A = union { object { A } object { A } }
+#declare A = union { object { A } object { A } }
+#declare A = union { object { A } object { A } }
+#declare A = union { object { A } object { A } }
+#declare A = union { object { A } object { A } }
+#declare A = union { object { A } object { A } }
+#declare A = union { object { A } object { A } }
+#declare A = union { object { A } object { A } }
+#declare A = union { object { A } object { A } }
+#declare A = union { object { A } object { A } }
+#declare A = union { object { A } object { A } }
+#declare A = union { object { A } object { A } }
+#declare A = union { object { A } object { A } }
+#declare A = union { object { A } object { A } }
+#declare A = union { object { A } object { A } }
+#declare A = union { object { A } object { A } }
+#declare A = union { object { A } object { A } }
+#declare A = union { object { A } object { A } }
+#declare A = union { object { A } object { A } }
+object { A }

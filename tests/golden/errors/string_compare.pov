@@ -1,0 +1,3 @@
+// A string compared with a float.
+#if ("a" = 1)
+#end

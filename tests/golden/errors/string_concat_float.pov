@@ -1,0 +1,2 @@
+// concat() of a float.
+#declare S = concat("a", 1);

@@ -1,0 +1,5 @@
+// #switch on a string.
+#switch ("a")
+#case (1)
+  sphere { 0, 1 }
+#end
