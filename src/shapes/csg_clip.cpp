@@ -147,6 +147,23 @@ CsgClip::Side CsgClip::side(std::uint32_t index, const PreparedCone& cone) const
     if (node.leaf) {
         if (node.region < 0) return Side::Out;
         const Primitive& region = regions[static_cast<std::size_t>(node.region)];
+        // A box around the cone's points within a bounded range (their
+        // depth along the axis lies in [tMin cos, tMax], their distance from
+        // it below tMax sin): every region is a convex solid or a
+        // half-space, so holding the box's corners holds the box, and a
+        // bounded region clear of the box is clear of the cone.
+        if (std::isfinite(cone.tMax) && cone.cosHalf > 0.0) {
+            const Vec3 a = cone.apex + cone.tMin * cone.cosHalf * cone.axis, b = cone.apex + cone.tMax * cone.axis;
+            const Vec3 grow(cone.tMax * cone.sinHalf * (1.0 + kThousandsOfUlps) + kPositionTolerance * l1Norm(b));
+            const Bounds3 box{glm::min(a, b) - grow, glm::max(a, b) + grow};
+            const Bounds3 clear = region.worldBounds();
+            if (region.bounded() && (box.lo.x > clear.hi.x || box.hi.x < clear.lo.x || box.lo.y > clear.hi.y ||
+                                     box.hi.y < clear.lo.y || box.lo.z > clear.hi.z || box.hi.z < clear.lo.z))
+                return node.flip ? Side::In : Side::Out;
+            bool all = true;
+            for (int i = 0; i < 8 && all; ++i) all = region.inside(box.corner(i));
+            if (all) return node.flip ? Side::Out : Side::In;
+        }
         if (region.classify(cone).coverage != Coverage::Miss) return Side::Both;
         // The cone's part in range does not cross the region's surface, so it
         // lies on the side of any of its points: one on the axis away from
@@ -170,32 +187,33 @@ CsgClip::Side CsgClip::side(std::uint32_t index, const PreparedCone& cone) const
     return node.all ? Side::In : Side::Out;
 }
 
-ConeClass CsgClip::restrict(const ConeClass& own, const PreparedCone& cone, const Bounds3& bounds) const {
+ConeClass CsgClip::restrict(const ConeClass& own, const ConeClass& second, const PreparedCone& cone) const {
     if (own.coverage == Coverage::Miss) return own;
-    bool sure = true;
-    for (const Test& t : tests) {
-        const Side s = side(t.node, cone);
-        if (s == Side::Both) {
-            sure = false;
-            continue;
+    // What the tests say of the crossings within depths [t0, t1].
+    enum class Verdict { Kept, Dropped, Unsure };
+    const auto verdict = [&](double t0, double t1) {
+        PreparedCone span = cone;
+        span.tMin = std::max(cone.tMin, t0);
+        span.tMax = std::min(cone.tMax, t1);
+        Verdict v = Verdict::Kept;
+        for (const Test& t : tests) {
+            const Side s = side(t.node, span);
+            if (s == Side::Both) v = Verdict::Unsure;
+            else if ((s == Side::In) != t.wanted) return Verdict::Dropped;
         }
-        if ((s == Side::In) != t.wanted) return {};
-    }
-    if (sure) return own;
+        return v;
+    };
+    const Verdict first = verdict(own.tNear, own.tFar);
+    // Every nearest crossing kept: the leaf's own answer.
+    if (first == Verdict::Kept) return own;
+    const Verdict later = second.coverage == Coverage::Miss ? Verdict::Dropped : verdict(second.tNear, second.tFar);
+    if (first == Verdict::Dropped && later == Verdict::Dropped) return {};
     ConeClass out = own;
     out.coverage = Coverage::Marginal;
     out.singleEdge = false;
     out.creaseParts = 0;
-    if (!flat) {
-        // A kept hit may be a farther crossing than the nearest: up to the
-        // box's farthest corner.
-        double far2 = 0.0;
-        for (int i = 0; i < 8; ++i) {
-            const Vec3 d = bounds.corner(i) - cone.apex;
-            far2 = std::max(far2, glm::dot(d, d));
-        }
-        out.tFar = std::min(cone.tMax, std::max(own.tFar, std::sqrt(far2) * (1.0 + kThousandsOfUlps)));
-    }
+    if (first == Verdict::Dropped) out.tNear = second.tNear;
+    if (later != Verdict::Dropped) out.tFar = first == Verdict::Dropped ? second.tFar : std::max(own.tFar, second.tFar);
     return out;
 }
 

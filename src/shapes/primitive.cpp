@@ -124,7 +124,19 @@ ConeClass Primitive::classify(const Cone& worldCone) const {
 ConeClass Primitive::classify(const PreparedCone& cone) const {
     if (!clip_) [[likely]]
         return classifyOwn(cone);
-    return clip_->restrict(classifyOwn(cone), cone, worldBounds_);
+    const ConeClass own = classifyOwn(cone);
+    if (own.coverage == Coverage::Miss) return own;
+    // Every crossing of the leaf in the cone: its first within own's
+    // depths; no shape meets a line more than twice, so a curved leaf's
+    // second lies within them too, or among the nearest crossings past
+    // own.tFar (a flat leaf has none).
+    ConeClass second;
+    if (!clip_->flat) {
+        PreparedCone beyond = cone;
+        beyond.tMin = std::max(cone.tMin, own.tFar);
+        second = classifyOwn(beyond);
+    }
+    return clip_->restrict(own, second, cone);
 }
 
 ConeClass Primitive::classifyOwn(const PreparedCone& cone) const {

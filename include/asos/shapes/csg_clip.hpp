@@ -66,12 +66,13 @@ struct CsgClip {
     // inside: one side when the node's regions, missed by the cone or
     // combined, show it; Both otherwise.
     Side side(std::uint32_t node, const PreparedCone& cone) const;
-    // The leaf's own answer for the cone restricted to the kept part:
-    // Miss when a test fails over the whole cone, the own answer when every
-    // test holds over it, else Marginal with depths that allow for a
-    // farther crossing than the nearest (up to the far side of `bounds`,
-    // the leaf's box).
-    ConeClass restrict(const ConeClass& own, const PreparedCone& cone, const Bounds3& bounds) const;
+    // The leaf's own answer for the cone restricted to the kept part, from
+    // the tests asked over the depths of its nearest crossings (own's) and
+    // of its later ones (`second`: the leaf classified past own.tFar; Miss
+    // for a flat leaf): the own answer where every nearest crossing is
+    // kept, Miss where every crossing is dropped, else Marginal over the
+    // depths whose crossings may be kept.
+    ConeClass restrict(const ConeClass& own, const ConeClass& second, const PreparedCone& cone) const;
 };
 
 // A leaf's world transform: worldFromObject (the Object's) after the
