@@ -59,6 +59,16 @@ struct plane_block : if_must<kw_plane, block_open, plane_normal, opt_comma, plan
 struct union_entry;
 struct union_end : rbrace {};
 struct union_block : if_must<kw_union, block_open, arguments_end, entries<union_entry>, union_end> {};
+// difference | intersection | merge { objects and lights…  modifiers… }: the
+// union's entries (a macro called among them reads its body as a union's).
+struct difference_end : rbrace {};
+struct difference_block
+    : if_must<kw_difference, block_open, arguments_end, entries<union_entry>, difference_end> {};
+struct intersection_end : rbrace {};
+struct intersection_block
+    : if_must<kw_intersection, block_open, arguments_end, entries<union_entry>, intersection_end> {};
+struct merge_end : rbrace {};
+struct merge_block : if_must<kw_merge, block_open, arguments_end, entries<union_entry>, merge_end> {};
 
 // object { Name | A[i] | M(…) | an object,  modifiers… }
 struct object_reference : seq<expression> {};
@@ -67,7 +77,8 @@ struct object_block : if_must<kw_object, block_open, object_base, arguments_end,
                               object_end> {};
 
 struct object_statement : sor<sphere_block, box_block, cone_block, cylinder_block, disc_block,
-                              polygon_block, plane_block, union_block, object_block> {};
+                              polygon_block, plane_block, union_block, difference_block,
+                              intersection_block, merge_block, object_block> {};
 
 // --- light_source { <position>, colour  modifiers… } --------------------------------
 struct light_position : seq<expression> {};

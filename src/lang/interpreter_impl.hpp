@@ -48,12 +48,15 @@ struct Num {
     }
 };
 
-// An object while the scene runs: a shape, a light, or a union of those. Kept
-// as a tree until it is placed in the scene, because POV-Ray resolves a
-// union's texture for its untextured children only then.
+// An object while the scene runs: a shape, a light, or a union, merge,
+// intersection or difference of those (Kind::Union, its `op`). Kept as a tree
+// until it is placed in the scene, because POV-Ray resolves a union's texture
+// for its untextured children only then.
 struct ObjectTree {
     enum class Kind : std::uint8_t { Shape, Light, Union };
     Kind kind = Kind::Shape;
+    CsgTree::Op op = CsgTree::Op::Union;  // Kind::Union: which combination
+    bool inverse = false;                  // POV-Ray's `inverse`, toggled by each
     Shape shape;
     Transform worldFromObject;
     std::shared_ptr<const Light> light;      // Kind::Light (shared: changed by copying)
@@ -321,6 +324,9 @@ private:
     // made so far, refused at `at` past its limit.
     void checkObjects(const Node& at, std::size_t count, const char* what);
     void checkMemory(const Node& at, std::size_t bytes, const char* what);
+    // A CSG object (or an inverted union) as one Object per leaf.
+    void placeCsg(ObjectTree& node, const std::shared_ptr<const Texture>& inherited, bool inheritedNoShadow,
+                  const AsosOptions& inheritedAsos);
     void flatten(ObjectTree& node, const std::shared_ptr<const Texture>& inherited,
                  bool inheritedNoShadow, const AsosOptions& inheritedAsos);
     void applyObjectModifier(ObjectTree& tree, const Node& n, bool isShape);

@@ -7,7 +7,9 @@
 // transforms written after its texture, then the texture's own".
 //
 // Union rule: the union's transforms apply to every member; its texture goes,
-// when the union is placed in the scene, to the members that have none.
+// when the union is placed in the scene, to the members that have none. The
+// same holds for difference, intersection and merge (CSG), whose members are
+// kept as a tree (CsgTree) shared by one Object per leaf.
 #include <cmath>
 
 #include "asos/shapes/shape_issue.hpp"
@@ -22,7 +24,7 @@ bool isObjectBlock(const Node& n) {
     switch (n.word) {
     case Word::Sphere: case Word::Box: case Word::Cone: case Word::Cylinder: case Word::Disc:
     case Word::Polygon: case Word::Plane: case Word::Union: case Word::Object:
-    case Word::LightSource:
+    case Word::Difference: case Word::Intersection: case Word::Merge: case Word::LightSource:
         return true;
     default:
         return false;
@@ -178,9 +180,56 @@ void Interpreter::flatten(ObjectTree& node, const std::shared_ptr<const Texture>
         return;
     }
     case ObjectTree::Kind::Union:
+        // An inverted union is POV-Ray's intersection of its inverted
+        // members: a CSG, as the others.
+        if (node.op != CsgTree::Op::Union || node.inverse) {
+            placeCsg(node, texture, noShadow, asos);
+            return;
+        }
         for (ObjectTree& child : node.children) flatten(child, texture, noShadow, asos);
         return;
     }
+}
+
+void Interpreter::placeCsg(ObjectTree& root, const std::shared_ptr<const Texture>& inherited,
+                           bool inheritedNoShadow, const AsosOptions& inheritedAsos) {
+    // Filled in below, through this pointer, while the leaves' Objects
+    // already share it.
+    auto tree = std::make_shared<CsgTree>();
+    // Adds `node` (and its members) to the tree; its leaves become Objects
+    // in leaf order, its lights go to the scene.
+    auto add = [&](auto& self, ObjectTree& node, const std::shared_ptr<const Texture>& outer, bool outerNoShadow,
+                   const AsosOptions& outerAsos) -> std::uint32_t {
+        const std::shared_ptr<const Texture>& texture = node.texture ? node.texture : outer;
+        const bool noShadow = outerNoShadow || node.noShadow;
+        const AsosOptions asos = inherit(node.asos, outerAsos);
+        const auto index = static_cast<std::uint32_t>(tree->nodes.size());
+        tree->nodes.emplace_back();
+        tree->nodes[index].inverse = node.inverse;
+        if (node.kind == ObjectTree::Kind::Shape) {
+            const auto leaf = static_cast<std::uint32_t>(tree->leaves.size());
+            tree->nodes[index].leaf = leaf;
+            tree->leaves.push_back({std::move(node.shape), node.worldFromObject, index});
+            Object& o = objects_.add();
+            o.shape = CsgShape{tree, leaf};
+            o.texture = texture ? textures_.intern(texture) : defaultTexture_;
+            o.noShadow = noShadow;
+            o.asos = asos;
+            o.loc = std::move(node.loc);
+            return index;
+        }
+        tree->nodes[index].op = node.op;
+        for (ObjectTree& child : node.children) {
+            if (child.kind == ObjectTree::Kind::Light) {
+                flatten(child, texture, noShadow, asos);
+                continue;
+            }
+            const std::uint32_t c = self(self, child, texture, noShadow, asos);
+            tree->nodes[index].children.push_back(c);
+        }
+        return index;
+    };
+    add(add, root, inherited, inheritedNoShadow, inheritedAsos);
 }
 
 // --- objects ----------------------------------------------------------------------------------
@@ -251,21 +300,28 @@ ObjectTree Interpreter::evalObject(const Node& block) {
         t.kind = ObjectTree::Kind::Light;
         t.light = std::make_shared<const Light>(evalLight(block));
         return t;
-    case Word::Union: {
+    case Word::Union: case Word::Difference: case Word::Intersection: case Word::Merge: {
         t.kind = ObjectTree::Kind::Union;
+        t.op = block.word == Word::Union          ? CsgTree::Op::Union
+               : block.word == Word::Difference   ? CsgTree::Op::Difference
+               : block.word == Word::Intersection ? CsgTree::Op::Intersection
+                                                  : CsgTree::Op::Merge;
         t.leaves = 0;
         const HeldNodes held(*this, t);
+        bool hasObject = false;
+        const std::string named = (block.word == Word::Intersection ? "an " : "a ") + std::string(wordText(block.word));
         auto entry = [&](const Node& n) {
             if (isObjectBlock(n)) {
                 if (t.modified)
-                    fail(n, "the objects of a union come before its modifiers");
+                    fail(n, "the objects of " + named + " come before its modifiers");
                 ObjectTree child = evalObject(n);
                 // A union of a declared union doubles it: 30 lines make 2^30
                 // objects. The tree is counted before it grows.
-                checkObjects(n, t.leaves + child.leaves, "this union");
+                checkObjects(n, t.leaves + child.leaves, ("this " + std::string(wordText(block.word))).c_str());
                 t.leaves += child.leaves;
                 t.nodes += child.nodes;
                 unionNodes_ += child.nodes;
+                hasObject |= child.kind != ObjectTree::Kind::Light;
                 t.children.push_back(std::move(child));
             } else {
                 t.modified = true;
@@ -273,6 +329,8 @@ ObjectTree Interpreter::evalObject(const Node& block) {
             }
         };
         runEntries(args, EntryHandler(entry));
+        if (t.op != CsgTree::Op::Union && !hasObject)
+            fail(block, named + " needs at least one object");
         return t;
     }
     case Word::Object: {
@@ -384,6 +442,12 @@ void Interpreter::applyObjectModifier(ObjectTree& tree, const Node& n, bool isSh
     }
     case Word::NoShadow:
         tree.noShadow = true;
+        return;
+    case Word::Inverse:
+        // POV-Ray's: the object's inside and outside swap (each `inverse`
+        // toggles), which only a CSG around it shows.
+        if (isLight) fail(n, "a light_source has no inside to invert");
+        tree.inverse = !tree.inverse;
         return;
     case Word::Hollow:
         // POV-Ray's hollow lets media and fog inside the object; asos has

@@ -559,6 +559,9 @@ template <> struct action<g::disc_block> : CloseBlock<Word::Disc> {};
 template <> struct action<g::polygon_block> : CloseBlock<Word::Polygon> {};
 template <> struct action<g::plane_block> : CloseBlock<Word::Plane> {};
 template <> struct action<g::union_block> : CloseBlock<Word::Union> {};
+template <> struct action<g::difference_block> : CloseBlock<Word::Difference> {};
+template <> struct action<g::intersection_block> : CloseBlock<Word::Intersection> {};
+template <> struct action<g::merge_block> : CloseBlock<Word::Merge> {};
 template <> struct action<g::object_block> : CloseBlock<Word::Object> {};
 template <> struct action<g::light_source_block> : CloseBlock<Word::LightSource> {};
 template <> struct action<g::camera_block> : CloseBlock<Word::Camera> {};
@@ -636,6 +639,7 @@ template <> struct action<g::triangle_wave_item> : ItemAction<Word::TriangleWave
 template <> struct action<g::sine_wave_item> : ItemAction<Word::SineWave, 0> {};
 template <> struct action<g::open_item> : ItemAction<Word::Open, 0> {};
 template <> struct action<g::no_shadow_item> : ItemAction<Word::NoShadow, 0> {};
+template <> struct action<g::inverse_item> : ItemAction<Word::Inverse, 0> {};
 template <> struct action<g::area_light_item> : ItemAction<Word::AreaLight, 4> {};
 template <> struct action<g::adaptive_item> : ItemAction<Word::Adaptive, 1> {};
 template <> struct action<g::jitter_item> : ItemAction<Word::Jitter, 0> {};

@@ -139,8 +139,44 @@ void writeShape(Writer& w, const Shape& shape) {
             w.vec(p.normal) << ", ";
             w.num(p.distance) << '\n';
         }
+        // A CSG's leaves are written with their tree (writeCsg), never alone.
+        void operator()(const CsgShape&) const {}
     };
     std::visit(Visitor{w}, shape);
+}
+
+void writeTexture(Writer& w, const Texture& t);
+
+// An object's statement: its shape, transform, texture and modifiers
+// (`inverse` for a CSG's member).
+void writeObject(Writer& w, const Shape& shape, const Transform& worldFromObject, const Object& o, bool inverse) {
+    w.location(o.loc);
+    writeShape(w, shape);
+    if (!worldFromObject.isIdentity()) {
+        w << "  ";
+        w.matrix(worldFromObject) << '\n';
+    }
+    writeTexture(w, o.texture ? *o.texture : Texture{});
+    if (o.noShadow) w << "  no_shadow\n";
+    w.asos(o.asos, "  ");
+    if (inverse) w << "  inverse\n";
+    w << "}\n";
+}
+
+// A CSG's node and its members; `leaves` are the Objects of the tree's
+// leaves, in leaf order (their textures and modifiers).
+void writeCsg(Writer& w, const CsgTree& tree, std::uint32_t index, const Object* leaves) {
+    const CsgTree::Node& node = tree.nodes[index];
+    if (node.op == CsgTree::Op::Leaf) {
+        const CsgTree::Leaf& leaf = tree.leaves[node.leaf];
+        writeObject(w, leaf.shape, leaf.worldFromObject, leaves[node.leaf], node.inverse);
+        return;
+    }
+    static constexpr const char* kOps[] = {"union", "merge", "intersection", "difference"};
+    w << kOps[static_cast<int>(node.op)] << " {\n";
+    for (std::uint32_t child : node.children) writeCsg(w, tree, child, leaves);
+    if (node.inverse) w << "  inverse\n";
+    w << "}\n";
 }
 
 void writeTexture(Writer& w, const Texture& t) {
@@ -279,18 +315,17 @@ void writeDump(std::ostream& out, const SceneDescription& scene, const DumpOptio
         w << "}\n";
     }
 
-    for (const Object& o : scene.objects) {
+    for (std::size_t i = 0; i < scene.objects.size(); ++i) {
+        const Object& o = scene.objects[i];
+        const auto* csg = std::get_if<CsgShape>(&o.shape);
+        // A CSG's tree once, at its first leaf; the leaves' Objects follow
+        // it in leaf order.
+        if (csg && csg->leaf != 0) continue;
         w << '\n';
-        w.location(o.loc);
-        writeShape(w, o.shape);
-        if (!o.worldFromObject.isIdentity()) {
-            w << "  ";
-            w.matrix(o.worldFromObject) << '\n';
-        }
-        writeTexture(w, o.texture ? *o.texture : Texture{});
-        if (o.noShadow) w << "  no_shadow\n";
-        w.asos(o.asos, "  ");
-        w << "}\n";
+        if (csg)
+            writeCsg(w, *csg->tree, 0, &o);
+        else
+            writeObject(w, o.shape, o.worldFromObject, o, false);
     }
 }
 

@@ -5,6 +5,7 @@
 #include <type_traits>
 
 #include "asos/geometry/margins.hpp"
+#include "asos/shapes/csg_clip.hpp"
 
 namespace asos {
 
@@ -27,9 +28,61 @@ Primitive::Primitive(LocalShape shape, LocalFrame frame, const char* name)
         visit([&](const auto& s) { return s.worldBounds(frame_.worldFromLocal, frame_.worldOffset); }));
     sphereTolerance_ = l1Norm(localSphere_.center) +
                        (std::isfinite(localSphere_.radius) ? localSphere_.radius : 0.0);
+    bounded_ = std::isfinite(localSphere_.radius);
 }
 
-bool Primitive::bounded() const { return std::isfinite(localSphere_.radius); }
+Primitive Primitive::makeCsgLeaf(const CsgShape& shape, const Transform& worldFromObject) {
+    std::vector<ShapeIssue> issues = validate(shape);
+    if (!issues.empty()) throw std::invalid_argument(std::move(issues.front().message));
+    const CsgTree::Leaf& leaf = shape.tree->leaves[shape.leaf];
+    Primitive p = make(leaf.shape, csgLeafTransform(worldFromObject, leaf.worldFromObject));
+    auto clip = std::make_shared<CsgClip>(makeCsgClip(shape, worldFromObject));
+    clip->flat = p.visit([](const auto& s) { return s.holdingPlanes(Vec3(0.0)).flat; });
+    // Its box: the leaf's, within every subtree a kept hit must be inside
+    // (an intersection's members, a difference's first); left as the
+    // leaf's where that leaves nothing (no hit is kept then anyway).
+    const Bounds3 kept = padded(clip->keptBounds);
+    const Bounds3 own = p.bounded_ ? p.worldBounds_ : Bounds3{Vec3(-kInfinity), Vec3(kInfinity)};
+    const Bounds3 both{glm::max(own.lo, kept.lo), glm::min(own.hi, kept.hi)};
+    if (!both.empty()) {
+        p.worldBounds_ = both;
+        p.bounded_ = std::isfinite(both.lo.x) && std::isfinite(both.lo.y) && std::isfinite(both.lo.z) &&
+                     std::isfinite(both.hi.x) && std::isfinite(both.hi.y) && std::isfinite(both.hi.z);
+    }
+    p.clip_ = std::move(clip);
+    return p;
+}
+
+std::optional<LocalHit> Primitive::clippedHit(const Ray& worldRay, double tMin, double tMax) const {
+    const Crossings all = crossings(worldRay, tMin, tMax);
+    for (int i = 0; i < all.count; ++i)
+        if (clip_->keeps(worldRay.at(all.hits[i].t))) return all.hits[i];
+    return std::nullopt;
+}
+
+bool Primitive::clippedAny(const Ray& worldRay, double tMin, double tMax) const {
+    return clippedHit(worldRay, tMin, tMax).has_value();
+}
+
+Crossings Primitive::crossings(const Ray& worldRay, double tMin, double tMax) const {
+    const Ray ray = frame_.rayToLocal(worldRay);
+    Crossings out;
+    double from = tMin;
+    while (out.count < Crossings::kMax) {
+        const std::optional<LocalHit> hit = visit([&](const auto& s) { return s.intersect(ray, from, tMax); });
+        if (!hit) break;
+        out.hits[static_cast<std::size_t>(out.count++)] = *hit;
+        from = std::nextafter(hit->t, kInfinity);
+    }
+    return out;
+}
+
+bool Primitive::inside(const Vec3& worldPoint) const {
+    const Vec3 local = frame_.pointToLocal(worldPoint);
+    return visit([&](const auto& s) { return s.inside(local); });
+}
+
+bool Primitive::bounded() const { return bounded_; }
 
 Bounds3 Primitive::worldBounds() const { return worldBounds_; }
 
@@ -51,11 +104,15 @@ SurfaceHit Primitive::surfaceHit(const Ray& worldRay, const LocalHit& hit) const
 }
 
 bool Primitive::intersectAny(const Ray& worldRay, double tMin, double tMax) const {
+    if (clip_) [[unlikely]]
+        return clippedAny(worldRay, tMin, tMax);
     const Ray ray = frame_.rayToLocal(worldRay);
     return visit([&](const auto& s) { return s.intersectAny(ray, tMin, tMax); });
 }
 
 bool Primitive::intersectAnyFrom(const Vec3& localOrigin, const Vec3& worldDir, double tMin, double tMax) const {
+    if (clip_) [[unlikely]]
+        return clippedAny(Ray{frame_.pointToWorld(localOrigin), worldDir}, tMin, tMax);
     const Ray ray{localOrigin, frame_.kind == LocalFrame::Kind::Translate ? worldDir : frame_.localFromWorld * worldDir};
     return visit([&](const auto& s) { return s.intersectAny(ray, tMin, tMax); });
 }
@@ -65,6 +122,24 @@ ConeClass Primitive::classify(const Cone& worldCone) const {
 }
 
 ConeClass Primitive::classify(const PreparedCone& cone) const {
+    if (!clip_) [[likely]]
+        return classifyOwn(cone);
+    const ConeClass own = classifyOwn(cone);
+    if (own.coverage == Coverage::Miss) return own;
+    // Every crossing of the leaf in the cone: its first within own's
+    // depths; no shape meets a line more than twice, so a curved leaf's
+    // second lies within them too, or among the nearest crossings past
+    // own.tFar (a flat leaf has none).
+    ConeClass second;
+    if (!clip_->flat) {
+        PreparedCone beyond = cone;
+        beyond.tMin = std::max(cone.tMin, own.tFar);
+        second = classifyOwn(beyond);
+    }
+    return clip_->restrict(own, second, cone);
+}
+
+ConeClass Primitive::classifyOwn(const PreparedCone& cone) const {
     if (!cone.valid) [[unlikely]]
         return {Coverage::Marginal, 0.0, kInfinity, false};
     if (cone.tMin > cone.tMax) [[unlikely]]
@@ -200,11 +275,12 @@ ConeClass Primitive::classifyGeneral(const PreparedCone& cone) const {
 
 std::optional<TranslatedSphere> Primitive::translatedSphere() const {
     const Sphere* sphere = std::get_if<Sphere>(&shape_);
-    if (!sphere || frame_.kind != LocalFrame::Kind::Translate) return std::nullopt;
+    if (!sphere || frame_.kind != LocalFrame::Kind::Translate || clip_) return std::nullopt;
     return TranslatedSphere{frame_.localOffset, sphere->radius()};
 }
 
 bool Primitive::convex() const {
+    if (clip_) return false;  // a part of a surface
     return visit([](const auto& shape) { return shape.convex(); });
 }
 
@@ -232,6 +308,8 @@ bool Primitive::outside(const BeamHull& hull) const {
 }
 
 bool Primitive::canShadowItself() const {
+    // An inverted curved leaf's kept part (a hole's wall) faces itself.
+    if (clip_ && clip_->inverted && !clip_->flat) return true;
     return visit([](const auto& shape) { return shape.canShadowItself(); });
 }
 
@@ -253,6 +331,8 @@ Primitive::SelfOcclusion Primitive::selfOcclusion() const {
 
 HoldingPlanes Primitive::holdingPlanes(const Vec3& worldPoint) const {
     HoldingPlanes h = visit([&](const auto& shape) { return shape.holdingPlanes(frame_.pointToLocal(worldPoint)); });
+    // A part of a solid's surface may show a face that the whole hides.
+    if (clip_) h.thinContact = false;
     // local n.x <= d with x = L w + o (L = localFromWorld) is (L^T n).w <= d - n.o.
     for (int i = 0; i < h.count; ++i) {
         HalfSpace& p = h.planes[i];

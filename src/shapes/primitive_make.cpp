@@ -1,11 +1,13 @@
 // A description record to its Primitive, through the record's shape: its
 // validate and its place (beside each shape), found by the record's type.
 #include <stdexcept>
+#include <type_traits>
 #include <utility>
 #include <variant>
 #include <vector>
 
 #include "asos/geometry/frame.hpp"
+#include "asos/shapes/csg_clip.hpp"
 #include "asos/shapes/primitive.hpp"
 #include "asos/shapes/shape_issue.hpp"
 
@@ -30,10 +32,14 @@ Primitive Primitive::fromPlaced(std::variant<Placed<S>...>&& placed) {
 
 Primitive Primitive::make(const Shape& shape, const Transform& worldFromObject) {
     return std::visit(
-        [&](const auto& record) {
-            std::vector<ShapeIssue> issues = validate(record);
-            if (!issues.empty()) throw std::invalid_argument(std::move(issues.front().message));
-            return fromPlaced(place(record, worldFromObject));
+        [&]<class R>(const R& record) {
+            if constexpr (std::is_same_v<R, CsgShape>) {
+                return makeCsgLeaf(record, worldFromObject);
+            } else {
+                std::vector<ShapeIssue> issues = validate(record);
+                if (!issues.empty()) throw std::invalid_argument(std::move(issues.front().message));
+                return fromPlaced(place(record, worldFromObject));
+            }
         },
         shape);
 }

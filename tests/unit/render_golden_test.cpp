@@ -78,10 +78,11 @@ void compareWithPovray(const std::string& scene, RenderMethod method, const std:
 // recursion of reflection (reflection), the six primitives (primitives), the
 // brick pattern (brick), the working gamma: none (gamma_off, a scene
 // without #version or assumed_gamma) and 2.2 (assumed_gamma), and the map
-// patterns with POV-Ray's noise and turbulence (map_*).
+// patterns with POV-Ray's noise and turbulence (map_*), and CSG (csg).
 TEST_CASE("The renderer matches POV-Ray with one ray per pixel", "[golden][povray]") {
     for (const char* scene : {"flat_perspective", "flat_orthographic", "lighting", "reflection", "primitives",
-                              "brick", "gamma_off", "assumed_gamma", "map_plain", "map_noise", "map_turbulence"})
+                              "brick", "gamma_off", "assumed_gamma", "map_plain", "map_noise", "map_turbulence",
+                              "csg"})
         compareWithPovray(scene, RenderMethod::Single, "", "-A");
 }
 

@@ -13,7 +13,7 @@ namespace asos::lang {
     /* scene items and objects */                                                               \
     WORD(Camera, "camera") WORD(LightSource, "light_source") WORD(Sphere, "sphere") WORD(Box, "box")        \
     WORD(Cone, "cone") WORD(Cylinder, "cylinder") WORD(Disc, "disc") WORD(Polygon, "polygon")               \
-    WORD(Plane, "plane") WORD(Union, "union") WORD(Object, "object") WORD(GlobalSettings, "global_settings") \
+    WORD(Plane, "plane") WORD(Union, "union") WORD(Difference, "difference") WORD(Intersection, "intersection") WORD(Merge, "merge") WORD(Object, "object") WORD(GlobalSettings, "global_settings") \
     WORD(Background, "background")                                                                 \
     /* camera */                                                                                \
     WORD(Perspective, "perspective") WORD(Orthographic, "orthographic") WORD(Location, "location")       \
@@ -30,7 +30,7 @@ namespace asos::lang {
     WORD(NoShadow, "no_shadow") WORD(Asos, "asos") WORD(Eps, "eps") WORD(Highlights, "highlights")     \
     WORD(Emitter, "emitter") WORD(Povray, "povray") WORD(Panel, "panel") WORD(Checker, "checker")    \
     WORD(Brick, "brick") WORD(BrickSize, "brick_size") WORD(Mortar, "mortar")                          \
-    WORD(Hollow, "hollow") WORD(ColorMap, "color_map") WORD(ColourMap, "colour_map")                      \
+    WORD(Hollow, "hollow") WORD(Inverse, "inverse") WORD(ColorMap, "color_map") WORD(ColourMap, "colour_map")                      \
     WORD(Gradient, "gradient") WORD(Radial, "radial") WORD(Onion, "onion") WORD(Marble, "marble")          \
     WORD(Wood, "wood") WORD(Leopard, "leopard") WORD(Bozo, "bozo") WORD(Spotted, "spotted")                \
     WORD(Granite, "granite") WORD(Agate, "agate") WORD(AgateTurb, "agate_turb")                          \

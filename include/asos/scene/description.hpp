@@ -3,6 +3,7 @@
 // by every later stage (dump writer, scene build, renderer). No text, no
 // behaviour. Every record keeps the SourceLoc it came from. Field meanings and
 // defaults are POV-Ray 3.7's unless a comment says otherwise.
+#include <cstdint>
 #include <memory>
 #include <optional>
 #include <string>
@@ -101,8 +102,40 @@ struct PolygonShape { std::vector<Vec3> points; };
 // {p : dot(normalize(normal), p) = distance}, its inside on the -normal side.
 struct PlaneShape { Vec3 normal{0.0, 1.0, 0.0}; double distance = 0.0; };
 
+struct CsgTree;
+// One leaf of a CSG object (POV-Ray's difference, intersection, merge, or a
+// union inside one of those): the part of the leaf's surface that bounds the
+// tree's solid, with the leaf's own texture. The interpreter makes one Object
+// per leaf, in leaf order, all sharing the tree; the leaf's shape and full
+// transform are the tree's (CsgTree::Leaf), the Object's worldFromObject is
+// the identity.
+struct CsgShape {
+    std::shared_ptr<const CsgTree> tree;
+    std::uint32_t leaf = 0;
+};
+
 using Shape = std::variant<SphereShape, BoxShape, ConeShape, CylinderShape, DiscShape,
-                           PolygonShape, PlaneShape>;
+                           PolygonShape, PlaneShape, CsgShape>;
+
+// A CSG object as written: nodes (node 0 the root), each an operation over
+// its children or a leaf shape; `inverse` as POV-Ray's (toggled by each
+// `inverse` written). Transforms are applied to the leaves.
+struct CsgTree {
+    enum class Op : std::uint8_t { Union, Merge, Intersection, Difference, Leaf };
+    struct Node {
+        Op op = Op::Leaf;
+        bool inverse = false;
+        std::vector<std::uint32_t> children;  // node indices, in the order written
+        std::uint32_t leaf = 0;               // Op::Leaf: index into leaves
+    };
+    struct Leaf {
+        Shape shape;  // never a CsgShape
+        Transform worldFromObject;
+        std::uint32_t node = 0;
+    };
+    std::vector<Node> nodes;
+    std::vector<Leaf> leaves;
+};
 
 // One entry of a colour map: the colour at a pattern value.
 struct ColourMapEntry {
@@ -192,7 +225,7 @@ struct GlobalSettings {
 struct SceneDescription {
     Camera camera;
     std::vector<Light> lights;
-    std::vector<Object> objects;  // unions are flattened; order of appearance
+    std::vector<Object> objects;  // unions are flattened, a CSG gives one per leaf; order of appearance
     GlobalSettings globals;
     Color background{};  // its transmit darkens it (POV-Ray without alpha output)
     // The POV-Ray version the scene is read as, in hundredths as POV-Ray keeps

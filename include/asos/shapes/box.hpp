@@ -47,6 +47,10 @@ public:
     // (RigidBounds); the range [t0, t1] is set only past it.
     ConeClass classifyRanging(LocalCone& cone, double t0, double t1, const RigidBounds& back) const;
 
+    // POV-Ray's: the closed box, its faces included.
+    bool inside(const Vec3& p) const {
+        return p.x >= lo_.x && p.x <= hi_.x && p.y >= lo_.y && p.y <= hi_.y && p.z >= lo_.z && p.z <= hi_.z;
+    }
     bool convex() const { return true; }
     bool canShadowItself() const { return false; }
     // Its six face planes (a flat box's plane first); a solid seen from

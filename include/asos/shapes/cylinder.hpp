@@ -45,6 +45,7 @@ public:
     bool convex() const { return frustum_.capped(); }
     bool canShadowItself() const { return open_; }
     bool raysLeave(const LocalRays& rays) const { return frustum_.raysLeave(rays); }
+    bool inside(const Vec3& p) const { return frustum_.inside(p); }
     HoldingPlanes holdingPlanes(const Vec3& point) const { return frustum_.holdingPlanes(point); }
     double support(const Vec3& dir) const { return frustum_.support(dir); }
     template <class User>

@@ -36,6 +36,8 @@ public:
     // Without a hole, a convex region.
     bool convex() const { return !(hole_ > 0.0); }
     bool canShadowItself() const { return false; }  // flat
+    // POV-Ray's: the side below the normal, z < 0.
+    bool inside(const Vec3& p) const { return p.z < 0.0; }
     bool raysLeave(const LocalRays& rays) const { return rays.leaveZPlane(); }
     HoldingPlanes holdingPlanes(const Vec3&) const { return zPlaneHolding(); }
     double support(const Vec3& dir) const { return radius_ * std::sqrt(dir.x * dir.x + dir.y * dir.y); }

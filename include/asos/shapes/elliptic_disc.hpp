@@ -29,6 +29,9 @@ public:
     // Without a hole, a convex region.
     bool convex() const { return !(hole_ > 0.0); }
     bool canShadowItself() const { return false; }  // flat
+    // The disc's (disc.hpp): below the plane, on the side away from the
+    // normal, which the rigid frame keeps along +z.
+    bool inside(const Vec3& p) const { return p.z < 0.0; }
     bool raysLeave(const LocalRays& rays) const { return rays.leaveZPlane(); }
     HoldingPlanes holdingPlanes(const Vec3&) const { return zPlaneHolding(); }
     double support(const Vec3& dir) const {

@@ -28,6 +28,14 @@ public:
     bool capped() const { return capped_; }
     bool empty() const { return !(r0_ > 0.0 || r1_ > 0.0); }
     double radiusAt(double z) const { return r0_ + slope_ * z; }
+    // POV-Ray's inside of a cylinder or cone, open or not: the solid, its
+    // surface left out when capped and counted when open (POV-Ray moves the
+    // surface by 1e-10 of its unit shape either way).
+    bool inside(const Vec3& p) const {
+        const double r = radiusAt(p.z), rho2 = p.x * p.x + p.y * p.y;
+        if (capped_) return p.z > 0.0 && p.z < length_ && rho2 < r * r;
+        return p.z >= 0.0 && p.z <= length_ && rho2 <= r * r;
+    }
 
     BoundingSphere boundingSphere() const { return ball_; }
     Bounds3 worldBounds(const Mat3& worldFromLocal, const Vec3& offset) const;

@@ -1,4 +1,5 @@
 #pragma once
+#include <array>
 #include <cstdint>
 #include <optional>
 
@@ -15,6 +16,15 @@ struct LocalHit {
     Vec3 point{0.0};
     Vec3 normal{0.0, 0.0, 1.0};
     std::uint8_t part = 0;  // SurfaceHit::part
+};
+
+// Every crossing of a ray with a primitive's surface within a range, nearest
+// first (Primitive::crossings). No shape meets a line more than twice (a
+// convex solid, a quadric's side, a flat shape once); kMax leaves room.
+struct Crossings {
+    static constexpr int kMax = 4;
+    std::array<LocalHit, kMax> hits{};
+    int count = 0;
 };
 
 // A sphere holding the whole primitive, in its local frame.

@@ -45,6 +45,8 @@ public:
     bool convex() const { return false; }
     bool raysLeave(const LocalRays&) const { return false; }
     bool canShadowItself() const { return false; }  // flat
+    // POV-Ray's: strictly below, n.x < distance.
+    bool inside(const Vec3& p) const { return glm::dot(normal_, p) < distance_; }
     // Its own plane, both ways; unbounded across its normal (and the
     // support along it is never asked for exactly).
     HoldingPlanes holdingPlanes(const Vec3&) const {

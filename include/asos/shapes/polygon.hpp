@@ -35,6 +35,9 @@ public:
     // up to one full turn (repeated and collinear points aside).
     bool convex() const { return convex_; }
     bool canShadowItself() const { return false; }  // flat
+    // None: POV-Ray's polygon is a non-solid object (and `inverse` leaves
+    // it so).
+    bool inside(const Vec3&) const { return false; }
     bool raysLeave(const LocalRays& rays) const { return rays.leaveZPlane(); }
     HoldingPlanes holdingPlanes(const Vec3&) const { return zPlaneHolding(); }
     // The farthest vertex.

@@ -8,6 +8,7 @@
 // answer is the shape's own (PrimitiveShape, primitive_shape.hpp): Primitive
 // carries rays, cones and points into the local frame and dispatches once.
 #include <cstddef>
+#include <memory>
 #include <optional>
 #include <variant>
 
@@ -34,6 +35,8 @@
 
 namespace asos {
 
+struct CsgClip;
+
 // A sphere placed by a translation only, as Sphere's static tests take it:
 // the local ray is the world ray shifted by localOffset. The scene keeps these
 // in a compact array so that its ray search tests such spheres without
@@ -48,10 +51,12 @@ public:
     // The record's shape (validate, place: beside each shape) placed by
     // worldFromObject. Throws std::invalid_argument with the record's first
     // issue (shape_issue.hpp) for a meaningless shape, or for a singular
-    // transform.
+    // transform. A CsgShape makes its leaf's primitive with the clip that
+    // keeps the part of its surface bounding the tree's solid (csg_clip.hpp);
+    // every answer below is then that part's.
     static Primitive make(const Shape& shape, const Transform& worldFromObject);
 
-    bool bounded() const;         // false for planes
+    bool bounded() const;         // false for planes (unless a CSG bounds them)
     Bounds3 worldBounds() const;  // tight-ish, conservative; unspecified when !bounded()
     // The nearest hit with t in [tMin, tMax] of a ray with a unit direction.
     std::optional<SurfaceHit> intersect(const Ray& worldRay, double tMin, double tMax) const;
@@ -62,6 +67,14 @@ public:
     std::optional<LocalHit> intersectLocal(const Ray& worldRay, double tMin, double tMax) const;
     SurfaceHit surfaceHit(const Ray& worldRay, const LocalHit& hit) const;
     bool intersectAny(const Ray& worldRay, double tMin, double tMax) const;
+    // Every crossing of the shape's surface (without a CSG's clip) with t in
+    // [tMin, tMax], nearest first, in the local frame: each shape's
+    // intersect picks the nearest of candidates that do not depend on tMin,
+    // so asking again just past the last one found is exact.
+    Crossings crossings(const Ray& worldRay, double tMin, double tMax) const;
+    // Whether a world point is inside the shape (PrimitiveShape's inside;
+    // a CSG's clip aside).
+    bool inside(const Vec3& worldPoint) const;
     // The same for many rays from one origin (an area light's point samples):
     // the origin is carried into the local frame once, by originToLocal, and
     // intersectAnyFrom(originToLocal(o), d, lo, hi) == intersectAny({o, d}, lo, hi).
@@ -154,13 +167,23 @@ private:
     ConeClass classifyGeneral(const PreparedCone& cone) const;
     template <class F>
     decltype(auto) visit(F&& f) const;
+    ConeClass classifyOwn(const PreparedCone& cone) const;
+    // A CSG leaf's answers (clip_ set), out of line.
+    std::optional<LocalHit> clippedHit(const Ray& worldRay, double tMin, double tMax) const;
+    bool clippedAny(const Ray& worldRay, double tMin, double tMax) const;
+    static Primitive makeCsgLeaf(const CsgShape& shape, const Transform& worldFromObject);
 
+    // A CSG leaf's: which of its hits bound the tree's solid (null: all).
+    // First, beside the shape the ray tests read (not on a cache line of
+    // its own).
+    std::shared_ptr<const CsgClip> clip_;
     LocalShape shape_;
     LocalFrame frame_;
     const char* name_;
     Bounds3 worldBounds_;
     BoundingSphere localSphere_;
     double sphereTolerance_ = 0.0;  // scale of the local coordinates, for rounding tolerances
+    bool bounded_ = false;
 };
 
 namespace primitive_detail {
@@ -220,6 +243,10 @@ decltype(auto) Primitive::visit(F&& f) const {
 
 template <class F>
 decltype(auto) Primitive::withAnyTestFrom(const Vec3& worldOrigin, F&& f) const {
+    if (clip_) [[unlikely]]
+        return f([this, worldOrigin](const Vec3& worldDir, double tMin, double tMax) {
+            return clippedAny(Ray{worldOrigin, worldDir}, tMin, tMax);
+        });
     const Vec3 localOrigin = originToLocal(worldOrigin);
     const LocalFrame& frame = frame_;
     // The direction's local image, written out (glm's product is a call).
@@ -241,6 +268,8 @@ decltype(auto) Primitive::withAnyTestFrom(const Vec3& worldOrigin, F&& f) const 
 // Inline: it is the inner loop of every nearest-hit search.
 inline std::optional<LocalHit> Primitive::intersectLocal(const Ray& worldRay, double tMin,
                                                          double tMax) const {
+    if (clip_) [[unlikely]]
+        return clippedHit(worldRay, tMin, tMax);
     const Ray ray = frame_.rayToLocal(worldRay);
     return visit([&](const auto& s) { return s.intersect(ray, tMin, tMax); });
 }

@@ -14,6 +14,7 @@
 #include "asos/geometry/cone.hpp"
 #include "asos/geometry/ray.hpp"
 #include "asos/geometry/transform.hpp"
+#include "asos/scene/description.hpp"
 #include "asos/shapes/holding_planes.hpp"
 #include "asos/shapes/local_cone.hpp"
 #include "asos/shapes/local_hit.hpp"
@@ -52,6 +53,11 @@ concept PrimitiveShape = requires(const S& shape, const Mat3& worldFromLocal, co
     // depths held against the world range through `back` (Primitive).
     { shape.classify(cone) } -> std::same_as<ConeClass>;
     { shape.classifyRanging(unrangedCone, t, t, back) } -> std::same_as<ConeClass>;
+    // Whether a local point is inside, as POV-Ray's Inside (the object not
+    // inverted): the solid of a closed shape, the side below a flat shape's
+    // normal (a disc's, a plane's), nothing for a polygon (POV-Ray's
+    // non-solid objects). CSG asks it (csg_clip.hpp).
+    { shape.inside(point) } -> std::same_as<bool>;
     // Whether the shape is a convex set (Primitive::convex).
     { shape.convex() } -> std::same_as<bool>;
     // Whether no ray of `rays` meets it (Primitive::raysLeave; conservative).
@@ -90,7 +96,10 @@ concept ShapeRecord = requires(const R& record, const Transform& worldFromObject
 // Whether every alternative of a std::variant is a ShapeRecord.
 template <class Variant>
 inline constexpr bool kEveryAlternativeShapeRecord = false;
+// A CSG leaf (CsgShape) is made from its tree's records instead
+// (Primitive::make, csg_clip.hpp).
 template <class... R>
-inline constexpr bool kEveryAlternativeShapeRecord<std::variant<R...>> = (ShapeRecord<R> && ...);
+inline constexpr bool kEveryAlternativeShapeRecord<std::variant<R...>> =
+    ((ShapeRecord<R> || std::is_same_v<R, CsgShape>) && ...);
 
 }  // namespace asos

@@ -103,6 +103,8 @@ public:
     std::optional<ConeClass> classifyAcrossScale(const PreparedCone& cone,
                                                  const LocalFrame& frame) const;
 
+    // POV-Ray's: strictly within the radius.
+    bool inside(const Vec3& p) const { return glm::dot(p, p) < radius_ * radius_; }
     bool convex() const { return true; }
     bool canShadowItself() const { return false; }
     // No plane holds it flat; curved, it touches a plane at one point.

@@ -1,0 +1,90 @@
+#pragma once
+// POV-Ray's CSG (difference, intersection, merge, and a union inside one of
+// those) as clips on its leaves. Each leaf of a CSG tree is an object of its
+// own (its own texture, as POV-Ray's leaves keep theirs): the leaf's surface,
+// of which only the crossings that bound the tree's solid are kept. POV-Ray
+// keeps a hit of a member of an intersection when it is inside every other
+// member, of a merge when it is inside none, and of a union always; a
+// difference is the intersection of its first member and the others
+// inverted, and inverting a union makes it the intersection of its inverted
+// members, inverting an intersection the merge of its inverted members (so
+// an `inverse` changes which rule each node above the leaf applies). A
+// leaf's clip is the list of those tests from its ancestors: a sibling
+// subtree whose inside (POV-Ray's, with the inversions above it) the hit must
+// be in, or out of. See docs/geometry.md, "CSG".
+#include <cstdint>
+#include <vector>
+
+#include "asos/geometry/bounds.hpp"
+#include "asos/geometry/cone.hpp"
+#include "asos/scene/description.hpp"
+#include "asos/shapes/local_cone.hpp"
+#include "asos/shapes/primitive.hpp"
+#include "asos/shapes/shape_issue.hpp"
+
+namespace asos {
+
+struct CsgClip {
+    // A node of the tree as its inside tests see it (the inversions pushed
+    // down to the leaves, as POV-Ray does): a leaf inside its region (xor
+    // its inversion), or every child's inside (all) or any child's.
+    struct Node {
+        std::vector<std::uint32_t> children;  // a compound's
+        bool leaf = false;
+        bool all = false;   // a compound: every child's inside, not any
+        int region = -1;    // a leaf: index into regions; -1 for a polygon (never inside)
+        bool flip = false;  // a leaf: inverted an odd number of times
+    };
+    // A hit is kept iff inside(node) == wanted, for every test.
+    struct Test {
+        std::uint32_t node;
+        bool wanted;
+    };
+    // Where a cone's points lie against a node's inside.
+    enum class Side : std::uint8_t { In, Out, Both };
+
+    std::vector<Node> nodes;
+    // The solid leaves' regions, each the surface that bounds the leaf's
+    // inside: the leaf itself for a closed shape or a plane, the capped
+    // solid for an open cylinder or cone, the plane of a disc.
+    std::vector<Primitive> regions;
+    std::vector<Test> tests;
+    // The leaf meets a line at most once (a flat shape): its nearest hit is
+    // its only one.
+    bool flat = false;
+    // The leaf is inverted an odd number of times: a curved one's kept part
+    // (a hole's wall) can shadow itself.
+    bool inverted = false;
+    // A box holding the points every test can keep: the intersection of the
+    // boxes of the subtrees a hit must be inside (those not inverted).
+    Bounds3 keptBounds{Vec3(-kInfinity), Vec3(kInfinity)};
+
+    bool inside(std::uint32_t node, const Vec3& worldPoint) const;
+    // Whether a hit at the point is kept.
+    bool keeps(const Vec3& worldPoint) const;
+    // Where the points of the cone (within its range) lie against node's
+    // inside: one side when the node's regions, missed by the cone or
+    // combined, show it; Both otherwise.
+    Side side(std::uint32_t node, const PreparedCone& cone) const;
+    // The leaf's own answer for the cone restricted to the kept part, from
+    // the tests asked over the depths of its nearest crossings (own's) and
+    // of its later ones (`second`: the leaf classified past own.tFar; Miss
+    // for a flat leaf): the own answer where every nearest crossing is
+    // kept, Miss where every crossing is dropped, else Marginal over the
+    // depths whose crossings may be kept.
+    ConeClass restrict(const ConeClass& own, const ConeClass& second, const PreparedCone& cone) const;
+};
+
+// A leaf's world transform: worldFromObject (the Object's) after the
+// leaf's own (an identity left out, so that no -0 turns into 0).
+Transform csgLeafTransform(const Transform& worldFromObject, const Transform& leaf);
+
+// The clip of a CSG leaf, its regions placed by worldFromObject after each
+// leaf's own transform. Throws std::invalid_argument as Primitive::make.
+CsgClip makeCsgClip(const CsgShape& shape, const Transform& worldFromObject);
+
+// A CSG leaf record's issues: a tree and a leaf index that fit, the leaves'
+// own records' issues.
+std::vector<ShapeIssue> validate(const CsgShape& record);
+
+}  // namespace asos
