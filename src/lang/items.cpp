@@ -10,6 +10,7 @@
 // when the union is placed in the scene, to the members that have none.
 #include <cmath>
 
+#include "asos/scene/asos_settings.hpp"
 #include "asos/shapes/shape_issue.hpp"
 #include "src/lang/interpreter_impl.hpp"
 
@@ -793,7 +794,7 @@ AsosOptions Interpreter::evalAsos(const Node& block, AsosOptions start, bool for
         switch (n.word) {
         case Word::Eps: {
             const double e = evalFloat(n[0]);
-            if (!(e > 0) || !std::isfinite(e)) fail(n[0], "eps must be positive, not " + formatNumber(e));
+            if (std::string problem = epsProblem(e); !problem.empty()) fail(n[0], problem);
             start.eps = e;
             break;
         }
