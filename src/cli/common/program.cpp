@@ -1,5 +1,8 @@
 #include "cli/common/program.hpp"
 
+#include <iostream>
+#include <new>
+
 #include "asos/version.hpp"
 
 namespace asos::cli {
@@ -9,7 +12,14 @@ int runProgram(CLI::App& app, int argc, char** argv, const CommandResult& result
     try {
         app.parse(argc, argv);
     } catch (const CLI::ParseError& e) {
-        return app.exit(e);
+        if (e.get_exit_code() == static_cast<int>(CLI::ExitCodes::Success)) return app.exit(e);  // --help, --version
+        std::cerr << app.get_name() << ": error: " << e.what() << '\n' << kUsageHint << '\n';
+        return kExitBadCommandLine;
+    } catch (const std::bad_alloc&) {
+        // Anywhere: the interpreter, the renderer's worker threads (TBB passes
+        // their exception on), the encoders. Nothing has been written.
+        std::cerr << app.get_name() << ": error: out of memory (the scene or the image needs more than there is)\n";
+        return kExitBadScene;
     }
     return result.exitCode;
 }
