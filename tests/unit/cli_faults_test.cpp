@@ -124,7 +124,12 @@ TEST_CASE("a write that fails part way (a file size limit) leaves the old files 
             ASOS_EXE, dir, {"render", "scene.pov", "-o", name, "-W", "96", "-H", "72", "--quiet"}, limited);
         INFO(name << ": " << r.err);
         CHECK(r.exitCode == 3);
-        CHECK(r.err == "asos render: error: cannot write '" + std::string(name) + "': File too large\n");
+        // The formats asos writes the bytes of itself give the system's
+        // reason; TIFF, written by libtiff itself, gives libtiff's.
+        if (std::string(name) != "out.tif")
+            CHECK(r.err == "asos render: error: cannot write '" + std::string(name) + "': File too large\n");
+        else
+            CHECK(r.err.starts_with("asos render: error: cannot write 'out.tif': TIFFWriteScanline failed"));
         CHECK(asos::test::slurp(dir / name) == old);
         CHECK(filesIn(dir) == before);
     }
