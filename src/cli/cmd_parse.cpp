@@ -1,6 +1,7 @@
 // asos parse SCENE [-L dir]... [-D NAME=VALUE]... [--clock C] [--stats]
 // Prints the canonical dump of the scene description to stdout; diagnostics
-// (errors, warnings, #debug) go to stderr; exit status 1 after an error.
+// (errors, warnings, #debug) go to stderr; exit status 1 after an error in
+// the scene, 2 for a bad option, 3 when the scene cannot be read.
 #include <sys/resource.h>
 
 #include <chrono>
@@ -19,38 +20,30 @@ namespace {
 
 struct ParseArgs {
     std::string scene;
-    lang::InterpreterOptions limits;  // --max-*: the limits of what the scene may ask for
-    std::vector<std::string> includePaths;
-    std::vector<std::string> defines;
-    double clock = 0.0;
-    bool clockGiven = false;  // `clock_on` is 1 when --clock is given, as with POV-Ray's +K
+    SceneInputs inputs;
     bool stats = false;
     bool noLocations = false;
 };
 
 int runParse(const ParseArgs& args) {
-    lang::InterpreterOptions options = args.limits;
-    for (const auto& dir : args.includePaths) options.includePaths.emplace_back(dir);
-    for (const auto& text : args.defines) {
-        std::optional<lang::Define> define = parseDefine(text);
-        if (!define) {
-            std::cerr << "asos parse: error: -D wants NAME=VALUE with NAME an identifier that is not a "
-                         "keyword, not '"
-                      << text << "'\n";
-            return 1;
-        }
-        options.defines.push_back(std::move(*define));
+    CheckedSceneInputs checked = checkSceneInputs(args.inputs, "asos parse");
+    if (!checked.problems.empty()) {
+        for (const std::string& p : checked.problems) std::cerr << p;
+        std::cerr << kUsageHint << '\n';
+        return kExitBadCommandLine;
     }
-    options.libraryPaths = lang::povrayLibraryPaths();
-    options.clock = args.clock;
-    options.clockOn = args.clockGiven;
+    if (std::string e = unreadableScene(args.scene); !e.empty()) {
+        std::cerr << "asos parse: error: " << e << '\n';
+        return kExitIoFailure;
+    }
+    const lang::InterpreterOptions& options = checked.options;
 
     Diagnostics diagnostics;
     const auto start = std::chrono::steady_clock::now();
     auto scene = lang::interpretFile(args.scene, options, diagnostics);
     const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     for (const Diagnostic& d : diagnostics.all()) std::cerr << formatDiagnostic(d);
-    if (!scene) return 1;
+    if (!scene) return kExitBadScene;
 
     if (args.stats) {
         rusage usage{};
@@ -64,7 +57,7 @@ int runParse(const ParseArgs& args) {
     dumpOptions.locations = !args.noLocations;
     writeDump(std::cout, *scene, dumpOptions);
     std::cout.flush();
-    return std::cout ? 0 : 1;
+    return std::cout ? kExitSuccess : kExitIoFailure;
 }
 
 }  // namespace
@@ -73,13 +66,12 @@ void addParseCommand(CLI::App& app, CommandResult& result) {
     auto args = std::make_shared<ParseArgs>();
     CLI::App* cmd = app.add_subcommand("parse", "Parse a scene and print its canonical description");
     cmd->add_option("scene", args->scene, "Scene file (.pov)")->required();
-    addLimitOptions(*cmd, args->limits);
-    cmd->add_option("-L,--library-path", args->includePaths,
+    addLimitOptions(*cmd, args->inputs);
+    cmd->add_option("-L,--library-path", args->inputs.includePaths,
                     "Folder searched by #include after the including file's and the scene's, before POV-Ray's own");
-    cmd->add_option("-D,--define", args->defines, "NAME=VALUE declared before the scene runs");
-    cmd->add_option("--clock", args->clock, "Value of `clock`")->each([args](const std::string&) {
-        args->clockGiven = true;
-    });
+    cmd->add_option("-D,--define", args->inputs.defines,
+                    "NAME=VALUE declared before the scene runs: a number, a vector or a quoted string");
+    cmd->add_option("--clock", args->inputs.clock, "Value of `clock` (and `clock_on` 1)");
     cmd->add_flag("--stats", args->stats, "Print object count, time and peak memory instead of the dump");
     cmd->add_flag("--no-locations", args->noLocations, "Leave the source-location comments out of the dump");
     cmd->callback([args, &result] { result.exitCode = runParse(*args); });

@@ -5,20 +5,22 @@
 //   [--light-method asos|grid] [--light-samples N] [--shadow-apex surface|behind]
 //   [--bit-depth 8|16|half|float] [--threads N]
 //   [--seed S] [--region x0,y0,x1,y1] [--clock C] [-D NAME=VALUE]... [-L DIR]...
-//   [--stats] [--stats-json FILE] [--aov samples=FILE] [--quiet]
+//   [--stats] [--stats-json FILE] [--aov samples=FILE] [--max-memory SIZE] [--quiet]
 // Parses the scene, renders it (asos/render/renderer.hpp) and writes the
 // image through OpenImageIO, by extension, never leaving a half-written file.
-// Every option is checked before any work: a bad option or scene prints an
-// error and exits with status 1, writing nothing. docs/cli.md has the details.
+// Every option and every output is checked before any work; the outputs are
+// put in place all together, only once all are written. Exit codes: 0, 1 a
+// bad scene, 2 a bad command line, 3 a file that cannot be read or written
+// (docs/cli.md has the details).
 #include <unistd.h>
 
 #include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
-#include <fstream>
 #include <iostream>
 #include <memory>
+#include <new>
 #include <optional>
 #include <string>
 #include <vector>
@@ -28,8 +30,10 @@
 #include "asos/image/image_io.hpp"
 #include "asos/lang/interpreter.hpp"
 #include "asos/render/renderer.hpp"
+#include "asos/scene/asos_settings.hpp"
 #include "cli/common/arguments.hpp"
 #include "cli/commands.hpp"
+#include "cli/interrupt_deferral.hpp"
 
 namespace asos::cli {
 
@@ -37,7 +41,6 @@ namespace {
 
 struct RenderArgs {
     std::string scene;
-    lang::InterpreterOptions limits;  // --max-*: the limits of what the scene may ask for
     std::string output;
     int width = 640, height = 480;
     std::string method = "asos";
@@ -55,12 +58,9 @@ struct RenderArgs {
     std::string shadowApex = "surface";
     std::optional<std::string> bitDepth;
     int threads = 0;
-    std::uint64_t seed = 0;
+    std::string seed = "0";
     std::optional<std::string> region;
-    double clock = 0.0;
-    bool clockGiven = false;  // `clock_on` is 1 when --clock is given, as with POV-Ray's +K
-    std::vector<std::string> defines;
-    std::vector<std::string> includePaths;
+    SceneInputs inputs;
     bool stats = false;
     std::optional<std::string> statsJson;
     std::vector<std::string> aovs;
@@ -68,6 +68,25 @@ struct RenderArgs {
 };
 
 void fail(const std::string& message) { std::cerr << "asos render: error: " << message << '\n'; }
+
+// What a render of the settings needs at its peak, roughly: the colour and
+// samples images of the whole image (3 + 2 floats a pixel) while rendering,
+// then, for the pixels written, the samples converted for the file and the
+// encoded file in memory, a cropped copy, the heat map (36 bytes). The
+// scene itself is not counted.
+std::uint64_t estimateMemory(const RenderSettings& settings) {
+    const PixelRegion region = settings.region.value_or(PixelRegion::whole(settings.width, settings.height));
+    const auto pixels = std::uint64_t(settings.width) * std::uint64_t(settings.height);
+    const auto written = std::uint64_t(region.x1 - region.x0) * std::uint64_t(region.y1 - region.y0);
+    return 20 * pixels + 36 * written;
+}
+
+bool samePath(const std::string& a, const std::string& b) {
+    std::error_code ec1, ec2;
+    const auto ca = std::filesystem::weakly_canonical(std::filesystem::absolute(a), ec1);
+    const auto cb = std::filesystem::weakly_canonical(std::filesystem::absolute(b), ec2);
+    return ec1 || ec2 ? a == b : ca == cb;
+}
 
 // A progress bar on stderr, redrawn at most ten times a second.
 class ProgressBar {
@@ -109,6 +128,7 @@ int runRender(const RenderArgs& args) {
     if (args.eps) {
         const std::optional<double> eps = parseFraction(*args.eps);
         if (!eps) problems.push_back("--eps wants a number or a fraction A/B, not '" + *args.eps + "'");
+        else if (std::string e = epsProblem(*eps); !e.empty()) problems.push_back("--eps: " + e);
         else settings.asos.eps = *eps;
     }
     settings.asos.maxLevel = args.maxLevel;
@@ -148,12 +168,25 @@ int runRender(const RenderArgs& args) {
     else
         problems.push_back("--shadow-apex must be surface or behind, not '" + args.shadowApex + "'");
     settings.threads = args.threads;
-    settings.seed = args.seed;
+    if (const std::optional<std::uint64_t> seed = parseUnsigned(args.seed))
+        settings.seed = *seed;
+    else
+        problems.push_back("--seed wants a whole number from 0 to 18446744073709551615, not '" + args.seed + "'");
     if (std::string e = checkRenderSettings(settings); !e.empty()) problems.push_back(e);
-    if (args.region && settings.width >= 1 && settings.height >= 1) {
+    const bool sized = settings.width >= 1 && settings.height >= 1;
+    if (args.region && sized) {
         const RegionParse r = parseRegion(*args.region, settings.width, settings.height);
         if (!r.region) problems.push_back("--region: " + r.error);
         else settings.region = r.region;
+    }
+    // A --max-memory that is no size is reported with the scene's inputs.
+    const std::optional<std::uint64_t> maxMemory = parseByteSize(args.inputs.maxMemory);
+    if (maxMemory && sized && settings.width <= 65536 && settings.height <= 65536) {
+        const std::uint64_t needed = estimateMemory(settings);
+        if (needed > *maxMemory)
+            problems.push_back("a " + std::to_string(settings.width) + "x" + std::to_string(settings.height) +
+                               " render needs about " + formatByteSize(needed) + ", more than --max-memory (" +
+                               formatByteSize(*maxMemory) + "); give a larger --max-memory to render it");
     }
     SampleFormat sampleFormat = SampleFormat::Auto;
     if (args.bitDepth) {
@@ -163,7 +196,13 @@ int runRender(const RenderArgs& args) {
         else if (*args.bitDepth == "float") sampleFormat = SampleFormat::Float;
         else problems.push_back("--bit-depth must be 8, 16, half or float, not '" + *args.bitDepth + "'");
     }
-    if (IoStatus s = checkOutputPath(args.output, sampleFormat); !s.ok()) problems.push_back("-o: " + s.error);
+    // The outputs: each folder takes files, each format has a writer that
+    // can hold the samples of an image of this size.
+    const PixelRegion written = settings.region.value_or(
+        PixelRegion::whole(std::max(settings.width, 1), std::max(settings.height, 1)));
+    const int writtenWidth = written.x1 - written.x0, writtenHeight = written.y1 - written.y0;
+    if (IoStatus s = checkOutputPath(args.output, sampleFormat, writtenWidth, writtenHeight); !s.ok())
+        problems.push_back("-o: " + s.error);
     std::optional<std::string> samplesAov;
     for (const std::string& aov : args.aovs) {
         const auto eq = aov.find('=');
@@ -172,25 +211,33 @@ int runRender(const RenderArgs& args) {
             continue;
         }
         samplesAov = aov.substr(eq + 1);
-        if (IoStatus s = checkOutputPath(*samplesAov); !s.ok()) problems.push_back("--aov: " + s.error);
+        if (IoStatus s = checkOutputPath(*samplesAov, SampleFormat::Auto, writtenWidth, writtenHeight); !s.ok())
+            problems.push_back("--aov: " + s.error);
     }
-    lang::InterpreterOptions options = args.limits;
-    for (const auto& dir : args.includePaths) options.includePaths.emplace_back(dir);
-    for (const auto& text : args.defines) {
-        if (std::optional<lang::Define> define = parseDefine(text))
-            options.defines.push_back(std::move(*define));
-        else
-            problems.push_back("-D wants NAME=VALUE with NAME an identifier that is not a keyword, not '" +
-                               text + "'");
+    if (args.statsJson)
+        if (std::string e = checkWritable(*args.statsJson); !e.empty()) problems.push_back("--stats-json: " + e);
+    {
+        std::vector<std::string> outputs{args.output};
+        if (samplesAov) outputs.push_back(*samplesAov);
+        if (args.statsJson) outputs.push_back(*args.statsJson);
+        for (std::size_t i = 0; i < outputs.size(); ++i)
+            for (std::size_t k = i + 1; k < outputs.size(); ++k)
+                if (samePath(outputs[i], outputs[k]))
+                    problems.push_back("'" + outputs[k] + "' is named for two outputs (-o, --aov, --stats-json)");
     }
-    options.libraryPaths = lang::povrayLibraryPaths();
-    options.clock = args.clock;
-    options.clockOn = args.clockGiven;
+    CheckedSceneInputs inputs = checkSceneInputs(args.inputs, "asos render");
+    lang::InterpreterOptions& options = inputs.options;
     options.imageWidth = settings.width;
     options.imageHeight = settings.height;
-    if (!problems.empty()) {
+    if (!problems.empty() || !inputs.problems.empty()) {
         for (const std::string& p : problems) fail(p);
-        return 1;
+        for (const std::string& p : inputs.problems) std::cerr << p;
+        std::cerr << kUsageHint << '\n';
+        return kExitBadCommandLine;
+    }
+    if (std::string e = unreadableScene(args.scene); !e.empty()) {
+        fail(e);
+        return kExitIoFailure;
     }
 
     // The scene.
@@ -200,7 +247,7 @@ int runRender(const RenderArgs& args) {
     const double parseSeconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - parseStart).count();
     for (const Diagnostic& d : diagnostics.all()) std::cerr << formatDiagnostic(d);
-    if (!scene) return 1;
+    if (!scene) return kExitBadScene;
     diagnostics.clear();
 
     // The render.
@@ -210,47 +257,57 @@ int runRender(const RenderArgs& args) {
     std::optional<RenderOutput> out;
     try {
         out = render(*scene, settings, diagnostics);
+    } catch (const std::bad_alloc&) {
+        throw;  // runProgram's message
     } catch (const std::exception& e) {
         fail(e.what());
-        return 1;
+        return kExitBadScene;
     }
     for (const Diagnostic& d : diagnostics.all()) std::cerr << formatDiagnostic(d);
-    if (!out) return 1;
+    if (!out) return kExitBadScene;
     out->stats.times.parseSeconds = parseSeconds;
 
-    // The files.
-    const PixelRegion region = settings.region.value_or(PixelRegion::whole(settings.width, settings.height));
-    const bool cropped = region != PixelRegion::whole(settings.width, settings.height);
-    const Image& color = out->color;
+    // The files: each written whole beside its target first; all put in
+    // place only when all are written, so a failed run leaves every old file
+    // as it was.
+    InterruptDeferral interrupts;
+    const bool cropped = written != PixelRegion::whole(settings.width, settings.height);
+    std::vector<StagedFile> staged;
+    auto stage = [&](StagedResult r) {
+        if (r.file) staged.push_back(std::move(*r.file));
+        else fail(r.error);
+        return r.file.has_value();
+    };
     WriteOptions writeOptions;
     writeOptions.format = sampleFormat;
     writeOptions.assumedGamma = scene->globals.assumedGamma;
-    const IoStatus written = writeImage(
-        cropped ? color.cropped(region.x0, region.y0, region.x1, region.y1) : color, args.output,
-        writeOptions);
-    if (!written.ok()) {
-        fail(written.error);
-        return 1;
-    }
-    if (samplesAov) {
-        const Image& samples = out->samples;
-        const IoStatus s = writeSamplesAov(
-            cropped ? samples.cropped(region.x0, region.y0, region.x1, region.y1) : samples, *samplesAov);
-        if (!s.ok()) {
-            fail(s.error);
-            return 1;
-        }
-    }
+    if (!stage(stageImage(cropped ? out->color.cropped(written.x0, written.y0, written.x1, written.y1) : out->color,
+                          args.output, writeOptions)))
+        return kExitIoFailure;
+    if (samplesAov &&
+        !stage(stageSamplesAov(
+            cropped ? out->samples.cropped(written.x0, written.y0, written.x1, written.y1) : out->samples,
+            *samplesAov)))
+        return kExitIoFailure;
     if (args.statsJson) {
-        std::ofstream file(*args.statsJson);
-        file << statsToJson(out->stats);
-        if (!file.flush()) {
-            fail("cannot write '" + *args.statsJson + "'");
-            return 1;
-        }
+        const std::string json = statsToJson(out->stats);
+        const auto* bytes = reinterpret_cast<const unsigned char*>(json.data());
+        if (!stage(StagedFile::fromBytes(*args.statsJson, {bytes, json.size()}))) return kExitIoFailure;
     }
+    if (interrupts.caught()) {
+        staged.clear();
+        fail("interrupted while writing: no file written");
+        interrupts.endByCaughtSignal();
+    }
+    for (std::size_t i = 0; i < staged.size(); ++i)
+        if (std::string e = staged[i].commit(); !e.empty()) {
+            std::string done;
+            for (std::size_t k = 0; k < i; ++k) done += (done.empty() ? "" : ", ") + staged[k].target().string();
+            fail(e + (done.empty() ? "" : " (already written: " + done + ")"));
+            return kExitIoFailure;
+        }
     if (args.stats) std::cout << formatStatsTable(out->stats);
-    return 0;
+    return kExitSuccess;
 }
 
 }  // namespace
@@ -259,7 +316,7 @@ void addRenderCommand(CLI::App& app, CommandResult& result) {
     auto args = std::make_shared<RenderArgs>();
     CLI::App* cmd = app.add_subcommand("render", "Render a scene to an image file");
     cmd->add_option("scene", args->scene, "Scene file (.pov)")->required();
-    addLimitOptions(*cmd, args->limits);
+    addLimitOptions(*cmd, args->inputs);
     cmd->add_option("-o,--output", args->output,
                     "Image file; the format follows the extension (.png, .exr, .tif, ...)")
         ->required();
@@ -295,15 +352,14 @@ void addRenderCommand(CLI::App& app, CommandResult& result) {
     cmd->add_option("--bit-depth", args->bitDepth,
                     "8, 16 (sRGB-encoded integers, as POV-Ray's +FN8/+FN16), half or float (linear); "
                     "default 8 for integer formats, float for .exr");
-    cmd->add_option("--threads", args->threads, "Worker threads (default 0: all cores)");
-    cmd->add_option("--seed", args->seed, "Seed of the random numbers (default 0)");
+    cmd->add_option("--threads", args->threads, "Worker threads, at most 1024 (default 0: all cores)");
+    cmd->add_option("--seed", args->seed, "Seed of the random numbers, 0 to 2^64-1 (default 0)");
     cmd->add_option("--region", args->region,
                     "x0,y0,x1,y1: render columns x0..x1-1 and rows y0..y1-1 only, and write that part");
-    cmd->add_option("--clock", args->clock, "Value of `clock`")->each([args](const std::string&) {
-        args->clockGiven = true;
-    });
-    cmd->add_option("-D,--define", args->defines, "NAME=VALUE declared before the scene runs");
-    cmd->add_option("-L,--library-path", args->includePaths,
+    cmd->add_option("--clock", args->inputs.clock, "Value of `clock` (and `clock_on` 1)");
+    cmd->add_option("-D,--define", args->inputs.defines,
+                    "NAME=VALUE declared before the scene runs: a number, a vector or a quoted string");
+    cmd->add_option("-L,--library-path", args->inputs.includePaths,
                     "Folder searched by #include after the including file's and the scene's, before POV-Ray's own");
     cmd->add_flag("--stats", args->stats, "Print the render statistics");
     cmd->add_option("--stats-json", args->statsJson, "Write the render statistics as JSON");

@@ -1,5 +1,7 @@
 #include "asos/diag/diagnostics.hpp"
 
+#include <algorithm>
+
 namespace asos {
 
 namespace {
@@ -11,6 +13,36 @@ const char* severityName(Severity s) {
     case Severity::Debug: return "debug";
     }
     return "error";
+}
+
+// Echoed source lines longer than this are cut to a window around the caret:
+// a scene written on one 50 MB line must not echo 50 MB per error.
+constexpr std::size_t kEchoWidth = 200;
+
+bool isContinuationByte(char c) { return (static_cast<unsigned char>(c) & 0xC0) == 0x80; }
+
+// The part of `line` echoed, "…" marking what is cut, and the caret line.
+std::string echoSource(const std::string& line, int column) {
+    const std::size_t caret = column > 0 ? std::min<std::size_t>(std::size_t(column) - 1, line.size()) : 0;
+    std::size_t start = 0, end = line.size();
+    if (line.size() > kEchoWidth) {
+        start = caret > kEchoWidth / 2 ? caret - kEchoWidth / 2 : 0;
+        end = std::min(line.size(), start + kEchoWidth);
+        start = end - kEchoWidth;
+        // Whole UTF-8 characters only.
+        while (start > 0 && start < line.size() && isContinuationByte(line[start])) --start;
+        while (end < line.size() && isContinuationByte(line[end])) ++end;
+    }
+    std::string out;
+    if (start > 0) out += "\u2026";
+    out.append(line, start, end - start);
+    if (end < line.size()) out += "\u2026";
+    out += '\n';
+    if (start > 0) out += ' ';
+    // Keep tabs in the caret line so the caret lines up under the source.
+    for (std::size_t i = start; i < caret && i < end; ++i) out += line[i] == '\t' ? '\t' : ' ';
+    out += "^\n";
+    return out;
 }
 }  // namespace
 
@@ -30,14 +62,7 @@ std::string formatDiagnostic(const Diagnostic& d) {
     out += ": ";
     out += d.message;
     out += '\n';
-    if (!d.sourceLine.empty()) {
-        out += d.sourceLine;
-        out += '\n';
-        // Keep tabs in the caret line so the caret lines up under the source.
-        for (int i = 1; i < d.loc.column && i - 1 < static_cast<int>(d.sourceLine.size()); ++i)
-            out += d.sourceLine[i - 1] == '\t' ? '\t' : ' ';
-        out += "^\n";
-    }
+    if (!d.sourceLine.empty()) out += echoSource(d.sourceLine, d.loc.column);
     for (const DiagnosticContext& c : d.context) {
         out += "  ";
         out += c.what;

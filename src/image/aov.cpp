@@ -39,14 +39,20 @@ Image samplesHeatMap(const Image& samples, double maxRays) {
     return heat;
 }
 
-IoStatus writeSamplesAov(const Image& samples, const std::filesystem::path& path, double maxRays) {
+StagedResult stageSamplesAov(const Image& samples, const std::filesystem::path& path, double maxRays) {
     std::string ext = path.extension().string();
     std::transform(ext.begin(), ext.end(), ext.begin(),
                    [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
-    if (ext == ".exr") return writeImage(samples, path);
+    if (ext == ".exr") return stageImage(samples, path);
     if (samples.channelIndex("rays") < 0)
-        return {"cannot write the samples AOV to '" + path.string() + "': no \"rays\" channel"};
-    return writeImage(samplesHeatMap(samples, maxRays), path, {.transfer = Transfer::Raw});
+        return {std::nullopt, "cannot write the samples AOV to '" + path.string() + "': no \"rays\" channel"};
+    return stageImage(samplesHeatMap(samples, maxRays), path, {.transfer = Transfer::Raw});
+}
+
+IoStatus writeSamplesAov(const Image& samples, const std::filesystem::path& path, double maxRays) {
+    StagedResult staged = stageSamplesAov(samples, path, maxRays);
+    if (!staged.file) return {staged.error};
+    return {staged.file->commit()};
 }
 
 }  // namespace asos

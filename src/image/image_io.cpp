@@ -1,25 +1,18 @@
 // The one translation unit that includes OpenImageIO.
 #include "asos/image/image_io.hpp"
 
-#include <fcntl.h>
-#include <unistd.h>
-
 #include <algorithm>
 #include <cctype>
-#include <cerrno>
 #include <cmath>
 #include <cstdint>
-#include <cstdio>
-#include <cstring>
-#include <random>
 #include <span>
-#include <system_error>
 #include <vector>
 
+#include <OpenImageIO/filesystem.h>
 #include <OpenImageIO/imageio.h>
 
 #include "asos/image/encoding.hpp"
-#include "asos/util/function_ref.hpp"
+#include "asos/image/staged_file.hpp"
 #include "src/image/pfm.hpp"
 
 namespace asos {
@@ -27,25 +20,28 @@ namespace {
 
 namespace fs = std::filesystem;
 
-// A writer of our own, for a format OpenImageIO cannot write: linear float
+// An encoder of our own, for a format OpenImageIO cannot write: linear float
 // samples (its row in the table allows float only), interleaved, top row
-// first, into `file`. Returns why it failed, empty on success.
-using OwnWriter = std::string (*)(const fs::path& file, int width, int height, int channels,
-                                  std::span<const float> samples);
+// first, as the file's bytes.
+using OwnWriter = PfmBytes (*)(int width, int height, int channels, std::span<const float> samples);
 
 struct FormatCaps {
     const char* extension;
     bool uint8, uint16, half, float32;
     SampleFormat preferred;
     OwnWriter writer = nullptr;  // null: OpenImageIO writes it
+    // OpenImageIO's writer writes the file itself rather than into memory:
+    // 2.4's TIFF writer takes an IOProxy but writes a file without its image
+    // size through one (libtiff reads back what it wrote).
+    bool writesFile = false;
 };
 
 // What each format we know can store. An extension not listed here is still
 // written when OpenImageIO has a writer for it, as an 8-bit integer format.
 constexpr FormatCaps kFormats[] = {
     {".png", true, true, false, false, SampleFormat::UInt8},
-    {".tif", true, true, true, true, SampleFormat::UInt8},
-    {".tiff", true, true, true, true, SampleFormat::UInt8},
+    {".tif", true, true, true, true, SampleFormat::UInt8, nullptr, true},
+    {".tiff", true, true, true, true, SampleFormat::UInt8, nullptr, true},
     {".jpg", true, false, false, false, SampleFormat::UInt8},
     {".jpeg", true, false, false, false, SampleFormat::UInt8},
     {".bmp", true, false, false, false, SampleFormat::UInt8},
@@ -55,7 +51,7 @@ constexpr FormatCaps kFormats[] = {
     {".webp", true, false, false, false, SampleFormat::UInt8},
     {".exr", false, false, true, true, SampleFormat::Float},
     {".hdr", false, false, false, true, SampleFormat::Float},
-    {".pfm", false, false, false, true, SampleFormat::Float, writePfm},
+    {".pfm", false, false, false, true, SampleFormat::Float, encodePfm},
 };
 
 // writeImage hands our own writers float samples only.
@@ -92,6 +88,8 @@ bool isInteger(SampleFormat f) { return f == SampleFormat::UInt8 || f == SampleF
 struct ResolvedFormat {
     SampleFormat samples = SampleFormat::Auto;
     OwnWriter writer = nullptr;  // null: OpenImageIO writes it
+    bool writesFile = false;     // FormatCaps::writesFile
+    bool inTable = false;        // one of kFormats
     std::string error{};         // empty when the format can hold the samples
 };
 
@@ -122,7 +120,7 @@ ResolvedFormat resolveFormat(const fs::path& path, SampleFormat requested) {
                            (samples == SampleFormat::Half && caps->half) ||
                            (samples == SampleFormat::Float && caps->float32);
     if (!supported) return {.error = "'" + ext + "' files cannot store " + formatName(samples) + " samples"};
-    return {.samples = samples, .writer = caps->writer};
+    return {.samples = samples, .writer = caps->writer, .writesFile = caps->writesFile, .inTable = true};
 }
 
 OIIO::TypeDesc typeOf(SampleFormat f) {
@@ -134,75 +132,87 @@ OIIO::TypeDesc typeOf(SampleFormat f) {
     }
 }
 
-// A new, empty, uniquely named file next to `path` (created with O_EXCL so
-// that two writers never share it). Returns an empty path and sets `error`
-// when the directory cannot take it.
-fs::path createTemporaryFile(const fs::path& path, std::string& error) {
-    const fs::path dir = path.has_parent_path() ? path.parent_path() : fs::path(".");
-    std::random_device device;
-    for (int attempt = 0; attempt < 16; ++attempt) {
-        char suffix[32];
-        std::snprintf(suffix, sizeof suffix, ".tmp-%08x%08x", device(), device());
-        std::string name = ".";
-        name += path.filename().string();
-        name += suffix;
-        const fs::path candidate = dir / name;
-        const int fd = ::open(candidate.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0666);
-        if (fd >= 0) {
-            ::close(fd);
-            return candidate;
-        }
-        if (errno != EEXIST) {
-            error = "cannot create a file in '" + dir.string() + "': " + std::strerror(errno);
-            return {};
-        }
-    }
-    error = "cannot create a temporary file in '" + dir.string() + "'";
-    return {};
-}
-
-// Writes `path` through `fill`, which writes the whole file at the path it is
-// given and returns why it failed (empty on success): that path is a new
-// temporary file beside `path`, renamed onto it only when `fill` succeeded and
-// removed otherwise. Every format, OpenImageIO's or our own, goes through here.
-IoStatus writeThroughTemporary(const fs::path& path, FunctionRef<std::string(const fs::path&)> fill) {
-    std::string error;
-    const fs::path temporary = createTemporaryFile(path, error);
-    if (temporary.empty()) return {"cannot write '" + path.string() + "': " + error};
-    // Removes the temporary file however this returns, a throw included,
-    // unless it has taken the name.
-    struct Discard {
-        const fs::path& file;
-        bool renamed = false;
-        ~Discard() {
-            std::error_code ignored;
-            if (!renamed) fs::remove(file, ignored);
-        }
-    } discard{temporary};
-    if (std::string e = fill(temporary); !e.empty()) return {"cannot write '" + path.string() + "': " + e};
-    std::error_code ec;
-    fs::rename(temporary, path, ec);
-    if (ec) return {"cannot write '" + path.string() + "': " + ec.message()};
-    discard.renamed = true;
-    return {};
+// A writer's error on one line: some (jpeg2000) add lines of their own.
+std::string oneLine(std::string e) {
+    while (!e.empty() && e.back() == '\n') e.pop_back();
+    for (std::size_t at = e.find('\n'); at != std::string::npos; at = e.find('\n', at)) e.replace(at, 1, "; ");
+    return e;
 }
 
 std::string oiioError(const OIIO::ImageOutput& out) {
     std::string e = out.geterror();
-    return e.empty() ? OIIO::geterror() : e;
+    return oneLine(e.empty() ? OIIO::geterror() : e);
+}
+
+// Opens, writes and closes `out` (given its ioproxy, if any, already): every
+// step checked, and, for a writer outside asos's table (`tableFormat`
+// false), its error state after close too, since some (jpeg2000) report a
+// failed encode only there. (The TIFF writer leaves an error there about
+// its Exif directory on files it writes whole: the table's writers report
+// failures by their return values.) Returns why it failed, empty on success.
+std::string writeAll(OIIO::ImageOutput& out, const std::string& name, const OIIO::ImageSpec& spec,
+                     OIIO::TypeDesc type, const void* pixels, bool tableFormat) {
+    if (!out.open(name, spec)) return oiioError(out);
+    if (!out.write_image(type, pixels)) {
+        const std::string e = oiioError(out);
+        out.close();
+        return e;
+    }
+    if (!out.close()) return oiioError(out);
+    if (!tableFormat && out.has_error()) return oneLine(out.geterror());
+    return {};
+}
+
+struct Encoded {
+    std::vector<unsigned char> bytes;
+    std::string error;
+};
+
+// The file's bytes, encoded in memory by a writer that can write through an
+// IOProxy; `out` must support("ioproxy").
+Encoded encodeInMemory(OIIO::ImageOutput& out, const fs::path& path, const OIIO::ImageSpec& spec,
+                       OIIO::TypeDesc type, const void* pixels, bool tableFormat) {
+    Encoded e;
+    OIIO::Filesystem::IOVecOutput memory(e.bytes);
+    out.set_ioproxy(&memory);
+    e.error = writeAll(out, path.string(), spec, type, pixels, tableFormat);
+    out.set_ioproxy(nullptr);
+    return e;
 }
 
 }  // namespace
 
-IoStatus checkOutputPath(const fs::path& path, SampleFormat format) {
-    return {resolveFormat(path, format).error};
+IoStatus checkOutputPath(const fs::path& path, SampleFormat format, int width, int height) {
+    const ResolvedFormat resolved = resolveFormat(path, format);
+    if (!resolved.error.empty()) return {resolved.error};
+    if (std::string e = checkWritable(path); !e.empty()) return {e};
+    if (resolved.writer || findFormat(lowerExtension(path))) return {};
+    // A format outside the table: OpenImageIO has a writer, but some fail on
+    // some images and say so only after close (jpeg2000 on small ones), so
+    // encode a grey image of the size in memory first.
+    auto out = OIIO::ImageOutput::create(path.string());
+    if (!out || !out->supports("ioproxy")) return {};
+    const std::size_t count = std::size_t(std::max(width, 1)) * std::size_t(std::max(height, 1)) * 3;
+    const SampleFormat samples = resolved.samples;
+    std::vector<std::uint16_t> grey(count, samples == SampleFormat::UInt8 ? 128 : 32768);
+    std::vector<std::uint8_t> grey8(samples == SampleFormat::UInt8 ? count : 0, 128);
+    const OIIO::ImageSpec spec(std::max(width, 1), std::max(height, 1), 3, typeOf(samples));
+    const Encoded probe = encodeInMemory(*out, path, spec, typeOf(samples),
+                                         samples == SampleFormat::UInt8 ? static_cast<const void*>(grey8.data())
+                                                                        : static_cast<const void*>(grey.data()),
+                                         false);
+    if (!probe.error.empty() || probe.bytes.empty())
+        return {"cannot write '" + path.string() + "': the " + out->format_name() + " writer fails on a " +
+                std::to_string(spec.width) + "x" + std::to_string(spec.height) + " image" +
+                (probe.error.empty() ? std::string() : ": " + probe.error)};
+    return {};
 }
 
-IoStatus writeImage(const Image& image, const fs::path& path, const WriteOptions& options) {
+StagedResult stageImage(const Image& image, const fs::path& path, const WriteOptions& options) {
     if (image.width() <= 0 || image.height() <= 0)
-        return {"cannot write an empty image to '" + path.string() + "'"};
+        return {std::nullopt, "cannot write an empty image to '" + path.string() + "'"};
     const ResolvedFormat resolved = resolveFormat(path, options.format);
-    if (!resolved.error.empty()) return {resolved.error};
+    if (!resolved.error.empty()) return {std::nullopt, resolved.error};
     const SampleFormat format = resolved.samples;
 
     Transfer transfer = options.transfer;
@@ -244,11 +254,11 @@ IoStatus writeImage(const Image& image, const fs::path& path, const WriteOptions
     }
 
     if (resolved.writer) {
-        // Our own writer: its format holds float only (the static_assert on
+        // Our own encoder: its format holds float only (the static_assert on
         // kFormats), so `f32` is filled.
-        return writeThroughTemporary(path, [&](const fs::path& temporary) {
-            return resolved.writer(temporary, image.width(), image.height(), image.channels(), f32);
-        });
+        const PfmBytes encoded = resolved.writer(image.width(), image.height(), image.channels(), f32);
+        if (!encoded.error.empty()) return {std::nullopt, "cannot write '" + path.string() + "': " + encoded.error};
+        return StagedFile::fromBytes(path, encoded.bytes);
     }
 
     OIIO::ImageSpec spec(image.width(), image.height(), image.channels(), typeOf(format));
@@ -257,17 +267,26 @@ IoStatus writeImage(const Image& image, const fs::path& path, const WriteOptions
     spec.attribute("Software", "asos");
 
     auto out = OIIO::ImageOutput::create(path.string());
-    if (!out) return {"cannot write '" + path.string() + "': " + OIIO::geterror()};
-    return writeThroughTemporary(path, [&](const fs::path& temporary) -> std::string {
-        if (!out->open(temporary.string(), spec)) return oiioError(*out);
-        if (!out->write_image(typeOf(format), pixels)) {
-            const std::string e = oiioError(*out);
-            out->close();
-            return e;
-        }
-        if (!out->close()) return oiioError(*out);
-        return {};
+    if (!out) return {std::nullopt, "cannot write '" + path.string() + "': " + OIIO::geterror()};
+    if (out->supports("ioproxy") && !resolved.writesFile) {
+        // Encoded in memory, then written by StagedFile with every write
+        // checked: a codec never meets a full disk (libjpeg would end the
+        // process there).
+        const Encoded encoded = encodeInMemory(*out, path, spec, typeOf(format), pixels, resolved.inTable);
+        if (!encoded.error.empty()) return {std::nullopt, "cannot write '" + path.string() + "': " + encoded.error};
+        return StagedFile::fromBytes(path, encoded.bytes);
+    }
+    // A writer that only writes files itself: it writes the temporary file,
+    // which is then synced and checked.
+    return StagedFile::fromWriter(path, [&](const fs::path& temporary) {
+        return writeAll(*out, temporary.string(), spec, typeOf(format), pixels, resolved.inTable);
     });
+}
+
+IoStatus writeImage(const Image& image, const fs::path& path, const WriteOptions& options) {
+    StagedResult staged = stageImage(image, path, options);
+    if (!staged.file) return {staged.error};
+    return {staged.file->commit()};
 }
 
 ReadResult readImage(const fs::path& path) {

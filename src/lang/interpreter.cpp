@@ -1,8 +1,12 @@
 // Files, scopes and directives. Entries of a block (or of a file) are run in
 // order; a directive runs here and hands the entries of the branch it takes
 // back to the same handler, so #if and #while work alike in every block.
+#include <sys/stat.h>
+
 #include <algorithm>
+#include <cerrno>
 #include <cmath>
+#include <cstring>
 #include <fstream>
 #include <map>
 #include <new>
@@ -19,7 +23,20 @@ constexpr std::size_t kMaxIncludeDepth = 64;
 // longer chain (a runaway recursion has hundreds).
 constexpr std::size_t kContextEnds = 5;
 
+// Why `path` cannot be read as a source file, empty when it can: only a
+// regular file is opened (a FIFO would block, /dev/zero never end).
+std::string unreadableReason(const std::filesystem::path& path) {
+    struct stat st {};
+    if (::stat(path.c_str(), &st) != 0) return std::strerror(errno);
+    if (S_ISREG(st.st_mode)) return {};
+    if (S_ISDIR(st.st_mode)) return "it is a folder";
+    if (S_ISFIFO(st.st_mode)) return "it is a FIFO, not a regular file";
+    if (S_ISCHR(st.st_mode) || S_ISBLK(st.st_mode)) return "it is a device, not a regular file";
+    return "it is not a regular file";
+}
+
 std::optional<std::string> readFile(const std::filesystem::path& path) {
+    if (!unreadableReason(path).empty()) return std::nullopt;
     std::ifstream in(path, std::ios::binary | std::ios::ate);
     if (!in) return std::nullopt;
     const std::streamoff size = in.tellg();
@@ -98,7 +115,6 @@ std::vector<DiagnosticContext> Interpreter::context() const {
 }
 
 void Interpreter::report(Severity severity, const Node& at, std::string message, bool withSource) {
-    if (quiet_) return;
     Diagnostic d;
     d.severity = severity;
     d.loc = locOf(at);
@@ -142,11 +158,12 @@ void Interpreter::forwardSyntaxErrors(Diagnostics& syntax) {
 
 std::optional<SceneDescription> Interpreter::runFile(const std::filesystem::path& path) {
     std::error_code ec;
-    auto text = std::filesystem::is_directory(path, ec) ? std::nullopt : readFile(path);
+    auto text = readFile(path);
     if (!text) {
         Diagnostic d;
         d.loc.file = std::make_shared<const std::string>(path.string());
-        d.message = "cannot read the scene file";
+        const std::string why = unreadableReason(path);
+        d.message = "cannot read the scene file" + (why.empty() ? std::string() : ": " + why);
         diagnostics_.report(std::move(d));
         return std::nullopt;
     }
@@ -200,25 +217,32 @@ void Interpreter::runTopLevel(const Node& entry, EntryHandler handler) {
 }
 
 void Interpreter::applyDefines() {
+    // A value is an expression (a number, a vector, a quoted string), as
+    // POV-Ray's Declare=NAME=VALUE: one that does not parse or evaluate is an
+    // error located in the value (file "-D NAME"), and the scene is not run.
+    SourceFile* const scene = file_;
     for (const Define& define : options_.defines) {
-        // A value that parses and evaluates as an expression is one; anything
-        // else is a string, as with POV-Ray's Declare=NAME=VALUE.
-        Value value = define.value;
-        Diagnostics ignored;
-        const auto file = std::make_shared<const std::string>("-D " + define.name);
-        if (auto expr = parseExpression(define.value, file, names_, ignored)) {
-            const Ast* saved = ast_;
-            ast_ = &*expr;
-            quiet_ = true;
-            try {
-                value = eval(expr->root);
-            } catch (const Abandon&) {
-            }
-            quiet_ = false;
-            ast_ = saved;
+        SourceFile& f = files_.emplace_back();
+        f.name = std::make_shared<const std::string>("-D " + define.name);
+        f.text = define.value;
+        f.path = scene->path;
+        file_ = &f;
+        Diagnostics syntax;
+        auto expr = parseExpression(define.value, f.name, names_, syntax);
+        if (!expr) {
+            forwardSyntaxErrors(syntax);
+            continue;
         }
-        scopes_[0][names_.intern(define.name)] = Slot{std::move(value)};
+        const Ast* saved = ast_;
+        ast_ = &*expr;
+        try {
+            scopes_[0][names_.intern(define.name)] = Slot{eval(expr->root)};
+        } catch (const Abandon&) {
+        }
+        ast_ = saved;
     }
+    file_ = scene;
+    if (errorCount_ > 0) throw Stop{};
 }
 
 std::optional<SceneDescription> Interpreter::finish() {

@@ -344,7 +344,6 @@ private:
     const InterpreterOptions& options_;
     Diagnostics& diagnostics_;
     std::size_t errorCount_ = 0;
-    bool quiet_ = false;  // evaluating a -D value: failures mean "a string", not errors
     std::size_t iterations_ = 0;
 
     NameTable names_;

@@ -12,6 +12,7 @@
 // kept as a tree (CsgTree) shared by one Object per leaf.
 #include <cmath>
 
+#include "asos/scene/asos_settings.hpp"
 #include "asos/shapes/shape_issue.hpp"
 #include "src/lang/interpreter_impl.hpp"
 
@@ -922,7 +923,7 @@ AsosOptions Interpreter::evalAsos(const Node& block, AsosOptions start, bool for
         switch (n.word) {
         case Word::Eps: {
             const double e = evalFloat(n[0]);
-            if (!(e > 0) || !std::isfinite(e)) fail(n[0], "eps must be positive, not " + formatNumber(e));
+            if (std::string problem = epsProblem(e); !problem.empty()) fail(n[0], problem);
             start.eps = e;
             break;
         }

@@ -168,7 +168,9 @@ std::string checkRenderSettings(const RenderSettings& s) {
     if (s.patternFilter.value_or(false) && s.method != RenderMethod::Asos)
         add("the pattern filter needs the ASOS eye method (the classic methods sample patterns "
             "at points, as POV-Ray does)");
-    if (s.threads < 0) add("threads must not be negative");
+    if (s.threads < 0 || s.threads > kMaxThreads)
+        add("threads must be between 0 (every core) and " + std::to_string(kMaxThreads) + ", not " +
+            std::to_string(s.threads));
     if (s.tileSize < 1) add("tile size must be at least 1");
     if (s.region && s.width >= 1 && s.height >= 1 && !s.region->within(s.width, s.height))
         add("the region is empty or not inside the " + std::to_string(s.width) + "x" +

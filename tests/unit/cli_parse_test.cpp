@@ -73,14 +73,28 @@ TEST_CASE("asos parse takes -L, -D and --clock", "[cli]") {
     CHECK(r.out.find("sphere {\n  <1, 2, 3>, 6.5\n") != std::string::npos);
 
     const Result bad = runAsos({"parse", "opts.pov", "-D", "sphere=1"});
-    CHECK(bad.exitCode == 1);
+    CHECK(bad.exitCode == 2);  // a bad command line
     CHECK(bad.err.find("-D wants NAME=VALUE") != std::string::npos);
 }
 
 TEST_CASE("asos parse on a missing file fails cleanly", "[cli]") {
     const Result r = runAsos({"parse", "no-such-file.pov"});
+    CHECK(r.exitCode == 3);  // a file that cannot be read
+    CHECK(r.err == "asos parse: error: cannot read 'no-such-file.pov': No such file or directory\n");
+}
+
+TEST_CASE("asos parse echoes at most 200 bytes of a long source line", "[cli]") {
+    // One 1 MB line with a mistake in its middle: the echo is a window
+    // around the caret, "…" at both cuts, and the caret under the mistake.
+    std::string line(500000, ' ');
+    line += "sphere { 0, -1 }";
+    line += std::string(500000, ' ');
+    scene("long.pov", line + "\n");
+    const Result r = runAsos({"parse", "long.pov"});
     CHECK(r.exitCode == 1);
-    CHECK(r.err == "no-such-file.pov: error: cannot read the scene file\n");
+    CHECK(r.err.size() < 1000);
+    const std::string window = std::string(88, ' ') + "sphere { 0, -1 }" + std::string(96, ' ');
+    CHECK_THAT(r.err, Catch::Contains("\n\u2026" + window + "\u2026\n" + std::string(101, ' ') + "^\n"));
 }
 
 TEST_CASE("asos parse sets clock_on with --clock and finds POV-Ray's includes by itself", "[cli]") {

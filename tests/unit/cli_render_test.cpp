@@ -1,6 +1,6 @@
 // `asos render` as a user runs it: images written by extension, statistics,
-// the samples AOV; bad options and scenes give an error, exit status 1 and no
-// file; the same bytes for any thread count, and regions that tile the image.
+// the samples AOV; bad options (exit status 2) and scenes (1) give an error
+// and no file; the same bytes for any thread count, and regions that tile the image.
 #include <catch2/catch.hpp>
 
 #include <cmath>
@@ -128,7 +128,7 @@ TEST_CASE("asos render writes PFM through its own writer", "[cli]") {
     // PFM holds float only: an error before anything is rendered.
     fs::remove(dir / "deep.pfm");
     const Result deep = run({"-o", "deep.pfm", "--bit-depth", "16"});
-    CHECK(deep.exitCode == 1);
+    CHECK(deep.exitCode == 2);
     CHECK_THAT(deep.err, Catch::Contains("cannot store 16-bit samples"));
     CHECK_FALSE(fs::exists(dir / "deep.pfm"));
 }
@@ -142,7 +142,7 @@ TEST_CASE("asos render: bad options and scenes give an error and no file", "[cli
                                "abc", "--max", "11", "--jitter", "maybe", "--samples", "0", "--depth",
                                "9", "-W", "0", "--threads", "-1", "--aov", "normals=x.exr", "-D",
                                "1x=2"});
-    CHECK(r1.exitCode == 1);
+    CHECK(r1.exitCode == 2);
     for (const char* mention : {"--method", "--eps", "max", "--jitter", "samples", "depth",
                                 "image size", "threads", "--aov", "-D"})
         CHECK_THAT(r1.err, Catch::Contains(std::string("error: ")) && Catch::Contains(mention));
@@ -150,22 +150,22 @@ TEST_CASE("asos render: bad options and scenes give an error and no file", "[cli
 
     const Result r2 = runAsos({"render", scene, "-o", "bad.notaformat", "-W", "16", "-H", "12",
                                "--region", "0,0,100,100", "--eps", "1/0"});
-    CHECK(r2.exitCode == 1);
+    CHECK(r2.exitCode == 2);
     for (const char* mention : {"-o", "--region", "--eps"}) CHECK_THAT(r2.err, Catch::Contains(mention));
     const Result r4 = runAsos({"render", scene, "-o", "bad.png", "--bit-depth", "half"});
-    CHECK(r4.exitCode == 1);
+    CHECK(r4.exitCode == 2);
     CHECK_THAT(r4.err, Catch::Contains("cannot store half-float samples"));
     const Result r5 = runAsos({"render", scene, "-o", "bad.png", "--bit-depth", "12"});
-    CHECK(r5.exitCode == 1);
+    CHECK(r5.exitCode == 2);
     CHECK_THAT(r5.err, Catch::Contains("--bit-depth must be"));
     const Result r6 = runAsos({"render", scene, "-o", "bad.png", "--pattern-filter", "maybe"});
-    CHECK(r6.exitCode == 1);
+    CHECK(r6.exitCode == 2);
     CHECK_THAT(r6.err, Catch::Contains("--pattern-filter wants on or off"));
     const Result r7 = runAsos({"render", scene, "-o", "bad.png", "--method", "single", "--pattern-filter", "on"});
-    CHECK(r7.exitCode == 1);
+    CHECK(r7.exitCode == 2);
     CHECK_THAT(r7.err, Catch::Contains("pattern filter needs the ASOS eye method"));
     const Result r3 = runAsos({"render", scene, "-o", "bad.png", "-W", "16", "-H", "12", "--eps", "-0.5"});
-    CHECK(r3.exitCode == 1);
+    CHECK(r3.exitCode == 2);
     CHECK_THAT(r3.err, Catch::Contains("eps must be"));
     CHECK_FALSE(fs::exists(dir / "bad.png"));
 

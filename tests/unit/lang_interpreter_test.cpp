@@ -383,7 +383,7 @@ TEST_CASE("deep nesting fits a 2 MiB stack and stops at the limit, on the main t
 
 TEST_CASE("command-line defines and the clock", "[lang][interpreter]") {
     InterpreterOptions options;
-    options.defines = {{"Size", "2.5"}, {"Where", "<1, 2, 3>"}, {"Name", "hello"}, {"Q", "\"quoted\""}};
+    options.defines = {{"Size", "2.5"}, {"Where", "<1, 2, 3>"}, {"Name", "\"hello\""}, {"Q", "\"quoted\""}};
     options.clock = 0.25;
     Run run2 = run("sphere { Where, Size + clock }\n"
                                "#if (strlen(Name) = 5 & strlen(Q) = 6) box { 0, 1 } #end",
@@ -394,6 +394,17 @@ TEST_CASE("command-line defines and the clock", "[lang][interpreter]") {
     const auto& s = std::get<SphereShape>(scene.objects[0].shape);
     CHECK(s.center == Vec3(1, 2, 3));
     CHECK(s.radius == 2.75);
+
+    // A value that is not an expression (an unquoted word) or does not
+    // evaluate is an error located in the value, and the scene is not run.
+    InterpreterOptions bad;
+    bad.defines = {{"Word", "hello"}, {"Ratio", "1/0"}};
+    const Run refused = run("sphere { 0, 1 }\n", bad);
+    CHECK_FALSE(refused.scene);
+    CHECK(refused.errors() == "1:1: 'hello' is not declared\n1:2: division by zero\n");
+    REQUIRE(refused.diagnostics.all().size() == 2);
+    CHECK(refused.diagnostics.all()[0].loc.fileName() == "-D Word");
+    CHECK(refused.diagnostics.all()[1].loc.fileName() == "-D Ratio");
 }
 
 TEST_CASE("transforms and textures follow POV-Ray's order rules", "[lang][interpreter]") {

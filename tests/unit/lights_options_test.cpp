@@ -113,13 +113,13 @@ TEST_CASE("asos render: area light options, and their errors", "[lights][cli]") 
     CHECK(renderWith("grid", {"--method", "jitter", "--samples", "2", "--light-method", "grid", "--light-samples", "3"}).first == 0);
     CHECK(renderWith("behind", {"--shadow-apex", "behind"}).first == 0);
     const auto [badMethod, badMethodText] = renderWith("bad_method", {"--light-method", "stochastic"});
-    CHECK(badMethod == 1);
+    CHECK(badMethod == 2);  // a bad command line
     CHECK_THAT(badMethodText, Catch::Contains("--light-method"));
     const auto [badApex, badApexText] = renderWith("bad_apex", {"--method", "single", "--shadow-apex", "behind"});
-    CHECK(badApex == 1);
+    CHECK(badApex == 2);
     CHECK_THAT(badApexText, Catch::Contains("behind"));
     CHECK_FALSE(fs::exists(scratchDir() / "bad_apex.png"));
-    CHECK(renderWith("bad_samples", {"--light-samples", "0"}).first == 1);
+    CHECK(renderWith("bad_samples", {"--light-samples", "0"}).first == 2);
 }
 
 TEST_CASE("Area light renders are deterministic over threads and regions", "[lights]") {

@@ -27,8 +27,10 @@ inline std::string slurp(const std::filesystem::path& p) {
     return s.str();
 }
 
+// `inChild`, when given, runs in the child before the program starts (to set
+// a resource limit, say).
 inline ProgramResult runProgram(const char* program, const std::filesystem::path& dir,
-                                std::vector<std::string> args) {
+                                std::vector<std::string> args, void (*inChild)() = nullptr) {
     std::filesystem::create_directories(dir);
     const std::string tag = std::to_string(getpid());
     const std::filesystem::path out = dir / ("stdout-" + tag + ".txt");
@@ -38,6 +40,7 @@ inline ProgramResult runProgram(const char* program, const std::filesystem::path
         const int o = open(out.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
         const int e = open(err.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
         if (o < 0 || e < 0 || chdir(dir.c_str()) != 0) _exit(126);
+        if (inChild) inChild();
         dup2(o, STDOUT_FILENO);
         dup2(e, STDERR_FILENO);
         std::vector<char*> argv{const_cast<char*>(program)};

@@ -48,7 +48,8 @@ private:
 };
 
 // "file:line:col: error: message\n<source line>\n<spaces>^\n", then a line
-// per step of its context: "  in macro Foo called at file:line:col\n".
+// per step of its context: "  in macro Foo called at file:line:col\n". A
+// source line over 200 bytes is cut to 200 around the caret, "…" at each cut.
 std::string formatDiagnostic(const Diagnostic& d);
 
 // "file:line:col" (as much of it as is known).

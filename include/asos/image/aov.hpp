@@ -22,7 +22,11 @@ Vec3 heatMapColor(double t);
 // channel (std::invalid_argument otherwise).
 Image samplesHeatMap(const Image& samples, double maxRays = 0.0);
 
-// .exr: the channels as they are; anything else: the heat map.
+// .exr: the channels as they are; anything else: the heat map. Staged as
+// stageImage stages an image, to be committed by the caller.
+StagedResult stageSamplesAov(const Image& samples, const std::filesystem::path& path, double maxRays = 0.0);
+
+// stageSamplesAov, then commit.
 IoStatus writeSamplesAov(const Image& samples, const std::filesystem::path& path, double maxRays = 0.0);
 
 }  // namespace asos

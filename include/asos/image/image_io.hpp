@@ -8,6 +8,7 @@
 #include <string>
 
 #include "asos/image/image.hpp"
+#include "asos/image/staged_file.hpp"
 
 namespace asos {
 
@@ -35,18 +36,29 @@ struct IoStatus {
     bool ok() const { return error.empty(); }
 };
 
-// Writes `image` to `path`, choosing the file format by extension. The data
-// goes to a temporary file in the same directory, which is renamed to `path`
-// only when complete, so a failed or interrupted write never leaves a
-// half-written image under the requested name. Integer formats encode every
-// channel; linear float formats keep the channel names (EXR). PFM holds 3
-// channels (RGB) or 1 (grey): any other count, an alpha included, is an error.
+// Encodes `image` for `path`, choosing the file format by extension, and
+// writes it to a staged file beside `path` (asos/image/staged_file.hpp): in
+// place only when committed, so a failed or interrupted write never touches
+// the old file. Every format whose OpenImageIO writer takes an IOProxy (all
+// in the table in image_io.cpp, and most others) is encoded in memory and
+// its bytes written with every write checked; PFM is our own encoder; a
+// writer without IOProxy support writes the temporary file itself, which is
+// then synced and checked. Integer formats encode every channel; linear
+// float formats keep the channel names (EXR). PFM holds 3 channels (RGB) or
+// 1 (grey): any other count, an alpha included, is an error.
+StagedResult stageImage(const Image& image, const std::filesystem::path& path, const WriteOptions& options = {});
+
+// stageImage, then commit.
 IoStatus writeImage(const Image& image, const std::filesystem::path& path,
                     const WriteOptions& options = {});
 
-// Whether `path`'s extension names a format asos can write (OpenImageIO's
-// or PFM), and can store the given sample format. Empty error when it can.
-IoStatus checkOutputPath(const std::filesystem::path& path, SampleFormat format = SampleFormat::Auto);
+// Whether asos can write a width x height image to `path`: its extension
+// names a format asos can write (OpenImageIO's or PFM) that can store the
+// given sample format, its folder takes new files (checkWritable), and, for
+// a format outside asos's own table, the writer encodes such an image
+// without error. Empty error when it can.
+IoStatus checkOutputPath(const std::filesystem::path& path, SampleFormat format = SampleFormat::Auto,
+                         int width = 64, int height = 64);
 
 struct ReadResult {
     Image image;

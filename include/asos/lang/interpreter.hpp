@@ -17,7 +17,7 @@ namespace asos::lang {
 
 struct Define {
     std::string name;
-    std::string value;  // parsed as a float/vector expression, else taken as a string
+    std::string value;  // an expression: a number, a vector, a quoted string (an error otherwise)
 };
 
 struct InterpreterOptions {

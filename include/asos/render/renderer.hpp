@@ -29,6 +29,10 @@ enum class RenderMethod { Asos, Single, Grid, Jitter, Adaptive, Am1 };
 const char* methodName(RenderMethod method);
 std::optional<RenderMethod> parseMethod(std::string_view name);
 
+// The most worker threads a render takes: far beyond any machine's cores,
+// and below where TBB's own arena fails.
+inline constexpr int kMaxThreads = 1024;
+
 struct RenderSettings {
     RenderMethod method = RenderMethod::Asos;
     int width = 640, height = 480;
@@ -57,7 +61,7 @@ struct RenderSettings {
     // A sampler of area lights in place of the light method's (a
     // benchmark's reference from asos_testing): LightSetup::sampler.
     AreaLightSampler areaLightSampler = nullptr;
-    int threads = 0;            // 0: all cores
+    int threads = 0;            // 0: all cores; at most kMaxThreads
     std::uint64_t seed = 0;
     std::optional<PixelRegion> region;  // default: the whole image
     int tileSize = 16;

@@ -52,8 +52,16 @@ inline AsosSettings sceneAsosSettings(const GlobalSettings& globals, const AsosO
     return AsosSettings{}.refinedBy(globals.asos).refinedBy(commandLine);
 }
 
-// Empty when the options are usable; otherwise what is wrong (EPS negative or
-// not finite, MAX outside 0..kMaxAsosLevel). `what` names their source in the
+// The largest EPS accepted: a pixel's change is measured on colours in
+// [0, 1], so an EPS above 1 could only mean "never subdivide" by mistake.
+inline constexpr double kMaxAsosEps = 1.0;
+
+// Empty when `eps` is usable: a finite number above 0 and at most
+// kMaxAsosEps; otherwise what is wrong ("eps must be positive, not 0"). The
+// one rule for asos { eps }, global_settings and --eps.
+std::string epsProblem(double eps);
+
+// Empty when the options are usable; otherwise what is wrong (epsProblem, MAX outside 0..kMaxAsosLevel). `what` names their source in the
 // message ("--eps", "global_settings asos", ...).
 std::string checkAsosOptions(const AsosOptions& options, const std::string& what);
 

@@ -1,5 +1,8 @@
 #include "cli/common/program.hpp"
 
+#include <iostream>
+#include <new>
+
 #include "asos/version.hpp"
 
 namespace asos::cli {
@@ -9,23 +12,31 @@ int runProgram(CLI::App& app, int argc, char** argv, const CommandResult& result
     try {
         app.parse(argc, argv);
     } catch (const CLI::ParseError& e) {
-        return app.exit(e);
+        if (e.get_exit_code() == static_cast<int>(CLI::ExitCodes::Success)) return app.exit(e);  // --help, --version
+        std::cerr << app.get_name() << ": error: " << e.what() << '\n' << kUsageHint << '\n';
+        return kExitBadCommandLine;
+    } catch (const std::bad_alloc&) {
+        // Anywhere: the interpreter, the renderer's worker threads (TBB passes
+        // their exception on), the encoders. Nothing has been written.
+        std::cerr << app.get_name() << ": error: out of memory (the scene or the image needs more than there is)\n";
+        return kExitBadScene;
     }
     return result.exitCode;
 }
 
-void addLimitOptions(CLI::App& cmd, lang::InterpreterOptions& options) {
-    cmd.add_option("--max-objects", options.maxObjects, "Most shapes and lights a scene may make (default 50000000)")
+void addLimitOptions(CLI::App& cmd, SceneInputs& inputs) {
+    lang::InterpreterOptions& limits = inputs.limits;
+    cmd.add_option("--max-objects", limits.maxObjects, "Most shapes and lights a scene may make (default 50000000)")
         ->check(CLI::PositiveNumber);
-    cmd.add_option("--max-string-length", options.maxStringLength,
+    cmd.add_option("--max-string-length", limits.maxStringLength,
                    "Most characters in one string of a scene (default 16777216)")
         ->check(CLI::PositiveNumber);
-    cmd.add_option("--max-array-elements", options.maxArrayElements,
+    cmd.add_option("--max-array-elements", limits.maxArrayElements,
                    "Most elements in one array of a scene (default 10000000)")
         ->check(CLI::PositiveNumber);
-    cmd.add_option("--max-memory", options.maxMemoryMiB,
-                   "MiB that a scene's objects, arrays and strings may take, estimated before they are made (default 8192)")
-        ->check(CLI::PositiveNumber);
+    cmd.add_option("--max-memory", inputs.maxMemory,
+                   "Memory a scene's objects, arrays and strings and a render's images may take, estimated "
+                   "before they are made: 8G (default), 512M, a number of bytes");
 }
 
 }  // namespace asos::cli

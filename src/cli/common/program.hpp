@@ -6,21 +6,34 @@
 #include <CLI/CLI.hpp>
 
 #include "asos/lang/interpreter.hpp"
+#include "cli/common/arguments.hpp"
 
 namespace asos::cli {
 
+// The exit codes (docs/cli.md, "Exit codes").
+inline constexpr int kExitSuccess = 0;
+inline constexpr int kExitBadScene = 1;        // the scene: an error in it, or more memory than there is
+inline constexpr int kExitBadCommandLine = 2;  // the options, found before anything is read
+inline constexpr int kExitIoFailure = 3;       // a file that cannot be read or written
+
+// Printed after every command-line error.
+inline constexpr const char* kUsageHint = "Run with --help for more information.";
+
 struct CommandResult {
-    int exitCode = 0;
+    int exitCode = kExitSuccess;
 };
 
 // Adds --version ("NAME VERSION", the app's name and the project's
 // version), parses the command line and runs the chosen subcommand. Returns
-// CLI11's exit code for --help, --version and a mistake in the options, else
-// the command's.
+// 0 for --help and --version; for a mistake CLI11 finds in the options
+// (its codes 104-114) prints "NAME: error: MESSAGE" and the usage hint and
+// returns kExitBadCommandLine; for memory running out anywhere (a
+// std::bad_alloc, from any thread) prints a message and returns
+// kExitBadScene; else the command's code.
 int runProgram(CLI::App& app, int argc, char** argv, const CommandResult& result);
 
 // --max-objects, --max-string-length, --max-array-elements and --max-memory:
-// the limits of what a scene may ask for, set in `options`.
-void addLimitOptions(CLI::App& cmd, lang::InterpreterOptions& options);
+// the limits of what a scene (and a render) may ask for, set in `inputs`.
+void addLimitOptions(CLI::App& cmd, SceneInputs& inputs);
 
 }  // namespace asos::cli
