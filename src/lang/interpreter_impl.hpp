@@ -234,7 +234,7 @@ public:
     Color toColour(const Num& value, const Node& at, ColourChannels channels = ColourChannels::Rgbft);
     Num evalColourNode(const Node& n, ColourChannels channels);
     Vec3 evalRgb(const Node& n, std::string_view usedAs);
-    Color checkOpaque(const Color& c, const Node& at);
+    void checkOpaqueBottom(const TextureLayer& bottom, const Node& at);
     std::string evalString(const Node& n);
     const Value* lookup(std::uint32_t id) const;
     Value evalMacroValue(const Node& call);
@@ -376,5 +376,19 @@ private:
 
 // Transforms: compose without touching exact values when one side is the identity.
 Transform compose(const Transform& outer, const Transform& inner);
+
+// A transform moves every layer's pattern (POV-Ray's Transform_Textures).
+inline void moveLayers(Texture& t, const Transform& m) {
+    t.pigment.worldFromPattern = compose(m, t.pigment.worldFromPattern);
+    for (TextureLayer& layer : t.above) layer.pigment.worldFromPattern = compose(m, layer.pigment.worldFromPattern);
+}
+
+// `upper`'s layers, bottom first, over `t`'s.
+inline void layerOver(Texture& t, const Texture& upper) {
+    t.above.push_back(static_cast<const TextureLayer&>(upper));
+    t.above.insert(t.above.end(), upper.above.begin(), upper.above.end());
+}
+
+inline TextureLayer& topLayer(Texture& t) { return t.above.empty() ? t : t.above.back(); }
 
 }  // namespace asos::lang

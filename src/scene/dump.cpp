@@ -139,11 +139,18 @@ void writeShape(Writer& w, const Shape& shape) {
             w.vec(p.normal) << ", ";
             w.num(p.distance) << '\n';
         }
+        void operator()(const QuadricShape& q) const {
+            w << "quadric {\n  ";
+            w.vec(q.squares) << ", ";
+            w.vec(q.mixed) << ", ";
+            w.vec(q.linear) << ", ";
+            w.num(q.constant) << '\n';
+        }
     };
     std::visit(Visitor{w}, shape);
 }
 
-void writeTexture(Writer& w, const Texture& t) {
+void writeLayer(Writer& w, const TextureLayer& t) {
     const Pigment& p = t.pigment;
     w << "  texture {\n    pigment { ";
     switch (p.kind) {
@@ -216,6 +223,13 @@ void writeTexture(Writer& w, const Texture& t) {
     w.num(f.specular) << " roughness ";
     w.num(f.roughness) << " reflection ";
     w.rgb(f.reflection) << " }\n  }\n";
+}
+
+// A layered texture as POV-Ray layers textures on an object: each one
+// written goes over those before it.
+void writeTexture(Writer& w, const Texture& t) {
+    writeLayer(w, t);
+    for (const TextureLayer& layer : t.above) writeLayer(w, layer);
 }
 
 }  // namespace
