@@ -94,9 +94,11 @@ struct declared_name : name {};
 struct declared_target : seq<declared_name, star<subscript>> {};
 struct declare_equals : equals {};
 struct declare_semicolon : semicolon {};
-// A declared texture followed by another: POV-Ray's layered texture, which
-// asos does not support (named here rather than as a puzzle after it).
-struct layered_texture : at<TAO_PEGTL_KEYWORD("texture")> {};
+// A declared block followed by textures: POV-Ray's layered texture, each
+// one over the one before (the interpreter checks that the first is a
+// texture too). The frame opened around the first holds them all.
+struct texture_layers_open : success {};
+struct layered_texture : seq<at<TAO_PEGTL_KEYWORD("texture")>, texture_layers_open, plus<texture_block>> {};
 struct declarable_block : sor<object_statement, light_source_block, camera_block, pigment_block,
                               finish_block, texture_block, colour_map_block> {};
 // POV-Ray wants the ';' after a float, vector or colour, not after a string,
@@ -113,7 +115,7 @@ struct macro_value : seq<lone_macro_call, macro_call> {};
 struct lone_name : seq<at<indexed_name, not_at<sor<expression_continues, one<'('>>>>, indexed_name> {};
 struct missing_semicolon : success {};
 struct declared_value
-    : sor<seq<declarable_block, opt<semicolon>, opt<layered_texture>>, seq<array_value, opt<semicolon>>,
+    : sor<seq<declarable_block, opt<layered_texture>, opt<semicolon>>, seq<array_value, opt<semicolon>>,
           seq<sor<macro_value, lone_name>, sor<semicolon, missing_semicolon>>,
           seq<at<string_start>, expression, opt<semicolon>>, seq<expression, declare_semicolon>> {};
 struct declare_directive : if_must<declare_start, declared_target, declare_equals, declared_value> {};

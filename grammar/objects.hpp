@@ -54,6 +54,15 @@ struct plane_distance : seq<expression> {};
 struct plane_block : if_must<kw_plane, block_open, plane_normal, opt_comma, plane_distance,
                              arguments_end, object_body, object_end> {};
 
+// quadric { <A, B, C>, <D, E, F>, <G, H, I>, J }
+struct quadric_squares : seq<expression> {};
+struct quadric_mixed : seq<expression> {};
+struct quadric_linear : seq<expression> {};
+struct quadric_constant : seq<expression> {};
+struct quadric_block : if_must<kw_quadric, block_open, quadric_squares, opt_comma, quadric_mixed, opt_comma,
+                               quadric_linear, opt_comma, quadric_constant, arguments_end, object_body,
+                               object_end> {};
+
 // --- grouping ---------------------------------------------------------------------
 // union { objects and lights…  modifiers… }
 struct union_entry;
@@ -78,7 +87,7 @@ struct object_block : if_must<kw_object, block_open, object_base, arguments_end,
 
 struct object_statement : sor<sphere_block, box_block, cone_block, cylinder_block, disc_block,
                               polygon_block, plane_block, union_block, difference_block,
-                              intersection_block, merge_block, object_block> {};
+                              intersection_block, merge_block, object_block, quadric_block> {};
 
 // --- light_source { <position>, colour  modifiers… } --------------------------------
 struct light_position : seq<expression> {};

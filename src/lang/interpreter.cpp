@@ -253,15 +253,21 @@ std::optional<SceneDescription> Interpreter::finish() {
     // global_settings may set anywhere in the file.
     if (scene_.globals.noiseGenerator != GlobalSettings{}.noiseGenerator) {
         std::map<const Texture*, std::shared_ptr<const Texture>> moved;
+        auto usesScenes = [](const Pigment& pigment) {
+            return pigment.noiseGenerator == 0 && pigment.kind != Pigment::Kind::Solid &&
+                   pigment.kind != Pigment::Kind::Checker && pigment.kind != Pigment::Kind::Brick;
+        };
         for (Object& o : scene_.objects) {
-            const Pigment& pigment = o.texture->pigment;
-            if (pigment.noiseGenerator != 0 || pigment.kind == Pigment::Kind::Solid ||
-                pigment.kind == Pigment::Kind::Checker || pigment.kind == Pigment::Kind::Brick)
-                continue;
+            const Texture& texture = *o.texture;
+            bool any = usesScenes(texture.pigment);
+            for (const TextureLayer& layer : texture.above) any = any || usesScenes(layer.pigment);
+            if (!any) continue;
             auto& copy = moved[o.texture.get()];
             if (!copy) {
-                auto t = std::make_shared<Texture>(*o.texture);
-                t->pigment.noiseGenerator = scene_.globals.noiseGenerator;
+                auto t = std::make_shared<Texture>(texture);
+                if (usesScenes(t->pigment)) t->pigment.noiseGenerator = scene_.globals.noiseGenerator;
+                for (TextureLayer& layer : t->above)
+                    if (usesScenes(layer.pigment)) layer.pigment.noiseGenerator = scene_.globals.noiseGenerator;
                 copy = std::move(t);
             }
             o.texture = copy;
@@ -497,16 +503,20 @@ void Interpreter::runDefault(const Node& n) {
         switch (e.word) {
         case Word::Texture:
             defaultTexture_ = evalTexture(e);
+            checkOpaqueBottom(*defaultTexture_, e);
             break;
         case Word::Pigment: {
             auto t = std::make_shared<Texture>(*defaultTexture_);
-            t->pigment = *evalPigment(e, t->pigment);
+            TextureLayer& top = topLayer(*t);
+            top.pigment = *evalPigment(e, top.pigment);
+            if (t->above.empty()) checkOpaqueBottom(*t, e);
             defaultTexture_ = std::move(t);
             break;
         }
         case Word::Finish: {
             auto t = std::make_shared<Texture>(*defaultTexture_);
-            t->finish = *evalFinish(e, t->finish);
+            TextureLayer& top = topLayer(*t);
+            top.finish = *evalFinish(e, top.finish);
             defaultTexture_ = std::move(t);
             break;
         }

@@ -243,7 +243,7 @@ public:
     Color toColour(const Num& value, const Node& at, ColourChannels channels = ColourChannels::Rgbft);
     Num evalColourNode(const Node& n, ColourChannels channels);
     Vec3 evalRgb(const Node& n, std::string_view usedAs);
-    Color checkOpaque(const Color& c, const Node& at);
+    void checkOpaqueBottom(const TextureLayer& bottom, const Node& at);
     std::string evalString(const Node& n);
     const Value* lookup(std::uint32_t id) const;
     Value evalMacroValue(const Node& call);
@@ -319,6 +319,8 @@ private:
 
     // items.cpp
     void placeObject(ObjectTree&& tree, const Node& at);
+    // Moves every layer of `t` by `m` (a transform written at `at`).
+    void moveLayers(const Node& at, Texture& t, const Transform& m);
     // The limits of InterpreterOptions: a request for `count` more objects
     // (leaves of `tree`s), or for `bytes` (estimated) on top of the objects
     // made so far, refused at `at` past its limit.
@@ -413,5 +415,15 @@ Transform compose(const Transform& outer, const Transform& inner);
 // Every entry of the transform and of its inverse is a finite number.
 bool isFinite(const Transform& t);
 bool isFinite(const Vec3& v);
+
+// A transform moves every layer's pattern (POV-Ray's Transform_Textures).
+
+// `upper`'s layers, bottom first, over `t`'s.
+inline void layerOver(Texture& t, const Texture& upper) {
+    t.above.push_back(static_cast<const TextureLayer&>(upper));
+    t.above.insert(t.above.end(), upper.above.begin(), upper.above.end());
+}
+
+inline TextureLayer& topLayer(Texture& t) { return t.above.empty() ? t : t.above.back(); }
 
 }  // namespace asos::lang

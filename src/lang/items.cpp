@@ -26,6 +26,7 @@ bool isObjectBlock(const Node& n) {
     case Word::Sphere: case Word::Box: case Word::Cone: case Word::Cylinder: case Word::Disc:
     case Word::Polygon: case Word::Plane: case Word::Union: case Word::Object:
     case Word::Difference: case Word::Intersection: case Word::Merge: case Word::LightSource:
+    case Word::Quadric:
         return true;
     default:
         return false;
@@ -129,6 +130,11 @@ Value Interpreter::evalDeclarable(const Node& n) {
     case Word::ColorMap: return evalColourMap(n);
     default: return std::make_shared<const ObjectTree>(evalObject(n));
     }
+}
+
+void Interpreter::moveLayers(const Node& at, Texture& t, const Transform& m) {
+    t.pigment.worldFromPattern = composeAt(at, m, t.pigment.worldFromPattern);
+    for (TextureLayer& layer : t.above) layer.pigment.worldFromPattern = composeAt(at, m, layer.pigment.worldFromPattern);
 }
 
 void Interpreter::placeObject(ObjectTree&& tree, const Node& at) {
@@ -297,6 +303,10 @@ ObjectTree Interpreter::evalObject(const Node& block) {
         t.shape = PlaneShape{evalVector(args[0]), evalFloat(args[1])};
         checkShape();
         break;
+    case Word::Quadric:
+        t.shape = QuadricShape{evalVector(args[0]), evalVector(args[1]), evalVector(args[2]), evalFloat(args[3])};
+        checkShape();
+        break;
     case Word::LightSource:
         t.kind = ObjectTree::Kind::Light;
         t.light = std::make_shared<const Light>(evalLight(block));
@@ -383,7 +393,7 @@ void Interpreter::applyTransform(ObjectTree& tree, const Transform& m, const Nod
     }
     if (tree.texture) {
         auto moved = std::make_shared<Texture>(*tree.texture);
-        moved->pigment.worldFromPattern = composeAt(at, m, moved->pigment.worldFromPattern);
+        moveLayers(at, *moved, m);
         tree.texture = std::move(moved);
     }
 }
@@ -426,18 +436,29 @@ void Interpreter::applyObjectModifier(ObjectTree& tree, const Node& n, bool isSh
     case Word::Pigment: case Word::Finish: case Word::Texture: {
         if (isLight) fail(n, std::string("a light_source has no ") += wordText(n.word));
         if (n.word == Word::Texture) {
-            if (tree.texture)
-                fail(n, "this object already has a texture: layered textures are not supported by asos");
-            tree.texture = evalTexture(n);
+            std::shared_ptr<const Texture> texture = evalTexture(n);
+            if (tree.texture) {
+                // POV-Ray's Link_Textures: a texture on an object that has
+                // one goes over it.
+                auto layered = std::make_shared<Texture>(*tree.texture);
+                layerOver(*layered, *texture);
+                texture = std::move(layered);
+            } else {
+                checkOpaqueBottom(*texture, n);
+            }
+            tree.texture = std::move(texture);
             return;
         }
-        // pigment {} and finish {} change the texture the object has, or a
-        // copy of the default one.
+        // pigment {} and finish {} change the texture the object has (its
+        // top layer, as POV-Ray's Parse_Object_Mods), or a copy of the
+        // default one.
         auto texture = std::make_shared<Texture>(tree.texture ? *tree.texture : *defaultTexture_);
+        TextureLayer& top = topLayer(*texture);
         if (n.word == Word::Pigment)
-            texture->pigment = *evalPigment(n, texture->pigment);
+            top.pigment = *evalPigment(n, top.pigment);
         else
-            texture->finish = *evalFinish(n, texture->finish);
+            top.finish = *evalFinish(n, top.finish);
+        if (texture->above.empty()) checkOpaqueBottom(*texture, n);
         tree.texture = std::move(texture);
         return;
     }
@@ -501,8 +522,8 @@ std::shared_ptr<const Pigment> Interpreter::evalPigment(const Node& block, const
         } else if (n.kind == NodeKind::Item && n.word == Word::Checker) {
             pattern(n);
             p->kind = Pigment::Kind::Checker;
-            p->color1 = n.count > 0 ? checkOpaque(evalColour(n[0]), n[0]) : kCheckerBlue;
-            p->color2 = n.count > 1 ? checkOpaque(evalColour(n[1]), n[1]) : kCheckerGreen;
+            p->color1 = n.count > 0 ? evalColour(n[0]) : kCheckerBlue;
+            p->color2 = n.count > 1 ? evalColour(n[1]) : kCheckerGreen;
         } else if (n.kind == NodeKind::Item && n.word == Word::Brick) {
             pattern(n);
             // As POV-Ray: a brick pigment given brick again keeps its size and
@@ -513,8 +534,8 @@ std::shared_ptr<const Pigment> Interpreter::evalPigment(const Node& block, const
                 p->mortar = fresh.mortar;
             }
             p->kind = Pigment::Kind::Brick;
-            p->color1 = n.count > 0 ? checkOpaque(evalColour(n[0]), n[0]) : kBrickMortar;
-            p->color2 = n.count > 1 ? checkOpaque(evalColour(n[1]), n[1]) : kBrickRed;
+            p->color1 = n.count > 0 ? evalColour(n[0]) : kBrickMortar;
+            p->color2 = n.count > 1 ? evalColour(n[1]) : kBrickRed;
         } else if (n.kind == NodeKind::Item && isMapPattern(n.word)) {
             pattern(n);
             // As POV-Ray: a new pattern starts from its own defaults, but the
@@ -562,7 +583,7 @@ std::shared_ptr<const Pigment> Interpreter::evalPigment(const Node& block, const
             } else if (const auto* num = std::get_if<Num>(&v)) {
                 pattern(n);
                 p->kind = Pigment::Kind::Solid;
-                p->color1 = checkOpaque(toColour(*num, n), n);
+                p->color1 = toColour(*num, n);
                 p->color2 = Color{};
             } else {
                 fail(n, "expected a colour or a pigment, found " + describe(v));
@@ -640,7 +661,7 @@ std::shared_ptr<const ColourMapValue> Interpreter::evalColourMap(const Node& blo
         auto add = [&](const Node& valueNode, const Node& colourNode) {
             const double value = evalFloat(valueNode);
             if (map->entries.size() == 256) fail(n, "a colour map has at most 256 entries");
-            map->entries.push_back({value, checkOpaque(evalColour(colourNode), colourNode)});
+            map->entries.push_back({value, evalColour(colourNode)});
         };
         if (n.count == 2) {
             add(n[0], n[1]);
@@ -687,15 +708,30 @@ std::shared_ptr<const Finish> Interpreter::evalFinish(const Node& block, const F
 }
 
 std::shared_ptr<const Texture> Interpreter::evalTexture(const Node& block) {
+    // A layered texture's block holds its layers, lowest first, as positional
+    // children (the grammar's layered_texture); the first may be another kind
+    // of block.
+    if (block.flags > 0 && block[0].word != Word::Texture)
+        fail(block[0], "only textures are layered: this " + std::string(wordText(block[0].word)) +
+                           " is followed by a texture");
     auto t = std::make_shared<Texture>(*defaultTexture_);
+    bool layered = false;  // the block's layers so far
     auto entry = [&](const Node& n) {
-        if (isReference(n)) {
+        if (block.flags > 0) {
+            const std::shared_ptr<const Texture> layer = evalTexture(n);
+            if (layered) layerOver(*t, *layer);
+            else *t = *layer;
+            layered = true;
+        } else if (isReference(n)) {
             const Value v = eval(n);
             const auto* declared = std::get_if<std::shared_ptr<const Texture>>(&v);
             if (!declared) fail(n, referenceText(n) + " is " + describe(v) + ", not a texture");
             *t = **declared;
         } else if (isTransform(n)) {
-            t->pigment.worldFromPattern = composeAt(n, evalTransformItem(n), t->pigment.worldFromPattern);
+            moveLayers(n, *t, evalTransformItem(n));
+        } else if ((n.word == Word::Pigment || n.word == Word::Finish) && !t->above.empty()) {
+            fail(n, std::string("a ") + std::string(wordText(n.word)) +
+                        " in a layered texture's block is not supported by asos; give it to one of its layers");
         } else if (n.word == Word::Pigment) {
             t->pigment = *evalPigment(n, t->pigment);
         } else if (n.word == Word::Finish) {

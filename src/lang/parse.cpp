@@ -303,7 +303,19 @@ template <> struct action<g::cylinder_light> : Reject<g::cylinder_light> {};
 template <> struct action<g::cylinder_camera> : Reject<g::cylinder_camera> {};
 template <> struct action<g::texture_pattern> : Reject<g::texture_pattern> {};
 template <> struct action<g::reflection_block> : Reject<g::reflection_block> {};
-template <> struct action<g::layered_texture> : Reject<g::layered_texture> {};
+template <>
+struct action<g::texture_layers_open> {
+    static void apply0(Builder& b) { b.openAroundLast(); }
+};
+// A texture block whose children are the layers, lowest first: all of them
+// positional (a texture block's own entries are not).
+template <>
+struct action<g::layered_texture> {
+    static void apply0(Builder& b) {
+        const auto layers = static_cast<std::uint8_t>(std::min<std::size_t>(b.frameSize(), 255));
+        b.close(NodeKind::Block, Word::Texture, b.frameStart(), layers);
+    }
+};
 template <typename Keyword>
 struct action<g::pattern_of_blocks<Keyword>> : Reject<g::pattern_of_blocks<Keyword>> {};
 template <> struct action<g::unsupported_directive> : RejectDirective<g::unsupported_directive> {};
@@ -558,6 +570,7 @@ template <> struct action<g::cylinder_block> : CloseBlock<Word::Cylinder> {};
 template <> struct action<g::disc_block> : CloseBlock<Word::Disc> {};
 template <> struct action<g::polygon_block> : CloseBlock<Word::Polygon> {};
 template <> struct action<g::plane_block> : CloseBlock<Word::Plane> {};
+template <> struct action<g::quadric_block> : CloseBlock<Word::Quadric> {};
 template <> struct action<g::union_block> : CloseBlock<Word::Union> {};
 template <> struct action<g::difference_block> : CloseBlock<Word::Difference> {};
 template <> struct action<g::intersection_block> : CloseBlock<Word::Intersection> {};

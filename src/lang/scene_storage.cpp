@@ -1,5 +1,6 @@
 // Where the interpreter keeps what a big scene is made of: objects in large
 // chunks, textures shared by content.
+#include <algorithm>
 #include <cstring>
 
 #include "src/lang/interpreter_impl.hpp"
@@ -89,15 +90,20 @@ std::uint64_t hashOf(const Texture& t) {
     mix(h, f.phong);
     mix(h, f.specular);
     mix(h, f.reflection);
+    mix(h, static_cast<double>(t.above.size()));
     return h;
 }
 
-bool sameTexture(const Texture& a, const Texture& b) {
+bool sameLayer(const TextureLayer& a, const TextureLayer& b) {
     const Finish& f = a.finish;
     const Finish& g = b.finish;
     return a.pigment == b.pigment && f.ambient == g.ambient && f.diffuse == g.diffuse &&
            f.brilliance == g.brilliance && f.phong == g.phong && f.phongSize == g.phongSize &&
            f.specular == g.specular && f.roughness == g.roughness && f.reflection == g.reflection;
+}
+
+bool sameTexture(const Texture& a, const Texture& b) {
+    return sameLayer(a, b) && std::equal(a.above.begin(), a.above.end(), b.above.begin(), b.above.end(), sameLayer);
 }
 
 }  // namespace

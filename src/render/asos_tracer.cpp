@@ -83,7 +83,9 @@ AsosTracer::AsosTracer(const RayTracer& tracer, const CameraModel& camera,
         const Object& o = d.objects[i];
         objectSettings_.push_back(sceneSettings.refinedBy(o.asos));
         selfShadowing_.push_back(scene_.primitive(i).canShadowItself() ? 1 : 0);
-        patterned_.push_back(hasPattern(textureOf(o).pigment) ? 1 : 0);
+        // A layered texture's patterns are sampled at each leaf's point, as
+        // the map patterns are (docs/algorithm.md, "Layered textures").
+        patterned_.push_back(textureOf(o).above.empty() && hasPattern(textureOf(o).pigment) ? 1 : 0);
     }
     for (const Light& l : d.lights) {
         lightSettings_.push_back(sceneSettings.refinedBy(l.asos));
@@ -92,7 +94,7 @@ AsosTracer::AsosTracer(const RayTracer& tracer, const CameraModel& camera,
     highlighted_.reserve(d.objects.size());
     for (std::uint32_t i = 0; i < scene_.objectCount(); ++i)
         highlighted_.push_back(objectSettings_[i].highlights && !highlightLights_.empty() &&
-                                       hasHighlights(textureOf(d.objects[i]).finish)
+                                       hasHighlights(textureOf(d.objects[i]))
                                    ? 1
                                    : 0);
 
@@ -457,8 +459,7 @@ double AsosTracer::PixelTrace::highlightChange(const EyePyray& pyray, const Item
         return 0.0;
     c_.rayTests += 4;  // the corner rays against the object
     const SurfaceSpread spread = SurfaceSpread::over(pyray, *hit, scene_.primitive(front.object));
-    return highlightVariation(textureOf(scene_.object(front.object)).finish, asos_.highlightLights_,
-                              spread);
+    return highlightVariation(textureOf(scene_.object(front.object)), asos_.highlightLights_, spread);
 }
 
 Ray AsosTracer::PixelTrace::jitteredRay(const ImageSquare& square, int level, std::uint32_t ix,

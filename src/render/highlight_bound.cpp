@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "asos/lights/light_model.hpp"
+#include "asos/render/map_pattern.hpp"
 #include "asos/render/shading.hpp"
 
 namespace asos {
@@ -188,6 +189,39 @@ double highlightVariation(const Finish& finish, std::span<const Light> lights, c
         variation += error * largestComponent(light.color);
     }
     return variation;
+}
+
+bool hasHighlights(const Texture& t) {
+    return hasHighlights(t.finish) ||
+           std::any_of(t.above.begin(), t.above.end(), [](const TextureLayer& l) { return hasHighlights(l.finish); });
+}
+
+namespace {
+// The most any colour of the pigment lets through, in any channel.
+double mostLetThrough(const Pigment& pigment) {
+    auto most = [](const Color& c) { return largestComponent(layerTransmittance(c)); };
+    switch (pigment.kind) {
+        case Pigment::Kind::Solid: return most(pigment.color1);
+        case Pigment::Kind::Checker: case Pigment::Kind::Brick:
+            return std::max(most(pigment.color1), most(pigment.color2));
+        default: {
+            double m = 0.0;
+            for (const ColourMapEntry& e : colourMapOf(pigment)) m = std::max(m, most(e.color));
+            return m;
+        }
+    }
+}
+}  // namespace
+
+double highlightVariation(const Texture& texture, std::span<const Light> lights, const SurfaceSpread& spread) {
+    double total = 0.0;
+    double through = 1.0;  // the most the layers above let through
+    for (std::size_t i = texture.above.size() + 1; i-- > 0 && through > 0.0;) {
+        const TextureLayer& layer = i == 0 ? static_cast<const TextureLayer&>(texture) : texture.above[i - 1];
+        if (hasHighlights(layer.finish)) total += through * highlightVariation(layer.finish, lights, spread);
+        through *= mostLetThrough(layer.pigment);
+    }
+    return total;
 }
 
 }  // namespace asos

@@ -47,9 +47,13 @@ std::span<const LightSample> RayTracer::areaLightSamples(const ShadingPoint& poi
     q.rng = context.rng;
     q.key = context.key;
     q.footprint = context.footprint;
-    const Finish& finish = textureOf(scene_.object(q.shadedObject)).finish;
-    q.diffuseOnly = finish.brilliance == 1.0 && !(finish.phong > 0.0) && !(finish.specular > 0.0) &&
-                    !(point.light->fadePower > 0.0);
+    // Diffuse only: every layer's finish (their samples are shared).
+    const Texture& texture = textureOf(scene_.object(q.shadedObject));
+    auto diffuseOnly = [](const Finish& f) {
+        return f.brilliance == 1.0 && !(f.phong > 0.0) && !(f.specular > 0.0);
+    };
+    q.diffuseOnly = diffuseOnly(texture.finish) && !(point.light->fadePower > 0.0);
+    for (const TextureLayer& layer : texture.above) q.diffuseOnly = q.diffuseOnly && diffuseOnly(layer.finish);
     return asos::areaLightSamples(scene_, lights_, q, *context.scratch, counters);
 }
 

@@ -141,6 +141,13 @@ void writeShape(Writer& w, const Shape& shape) {
         }
         // A CSG's leaves are written with their tree (writeCsg), never alone.
         void operator()(const CsgShape&) const {}
+        void operator()(const QuadricShape& q) const {
+            w << "quadric {\n  ";
+            w.vec(q.squares) << ", ";
+            w.vec(q.mixed) << ", ";
+            w.vec(q.linear) << ", ";
+            w.num(q.constant) << '\n';
+        }
     };
     std::visit(Visitor{w}, shape);
 }
@@ -179,7 +186,7 @@ void writeCsg(Writer& w, const CsgTree& tree, std::uint32_t index, const Object*
     w << "}\n";
 }
 
-void writeTexture(Writer& w, const Texture& t) {
+void writeLayer(Writer& w, const TextureLayer& t) {
     const Pigment& p = t.pigment;
     w << "  texture {\n    pigment { ";
     switch (p.kind) {
@@ -252,6 +259,13 @@ void writeTexture(Writer& w, const Texture& t) {
     w.num(f.specular) << " roughness ";
     w.num(f.roughness) << " reflection ";
     w.rgb(f.reflection) << " }\n  }\n";
+}
+
+// A layered texture as POV-Ray layers textures on an object: each one
+// written goes over those before it.
+void writeTexture(Writer& w, const Texture& t) {
+    writeLayer(w, t);
+    for (const TextureLayer& layer : t.above) writeLayer(w, layer);
 }
 
 }  // namespace

@@ -100,6 +100,8 @@ TEST_CASE("objects and scene items", "[lang][grammar]") {
          "cylinder { 0, y, 1 open }", "disc { 0, y, 1 }", "disc { 0, y, 2, 1 }",
          "polygon { 4, <0,0>, <1,0>, <1,1>, <0,1> }", "polygon { 3 <0,0> <1,0> <0,1> }",
          "plane { y, 0 }", "union { sphere { 0, 1 } box { 0, 1 } pigment { rgb 1 } }",
+         "quadric { <1, 1, 0>, <0, 0, 0>, <0, 0, 0>, -1 }", "quadric { 1 0 0, -1 translate y }",
+         "sphere { 0, 1 texture { pigment { rgb 1 } } texture { pigment { rgbt 1 } } }",
          "object { Thing translate x }", "object { sphere { 0, 1 } scale 2 }",
          "light_source { <0,10,0>, rgb 1 }", "light_source { <0,10,0> color White shadowless }",
          "light_source { 0, 1 area_light x, z, 4, 4 adaptive 1 jitter circular orient }",

@@ -104,8 +104,8 @@ TEST_CASE("colours", "[lang][interpreter]") {
 }
 
 // Each use of a colour as POV-Ray's Parse_Colour reads it (checked with
-// `povray`): a surface's colour with filter or transmit would be transparent,
-// which asos refuses; a light's colour, ambient, reflection and ambient_light
+// `povray`): a surface's colour with filter or transmit would be transparent
+// in an object's bottom texture layer, which asos refuses (at the pigment); a light's colour, ambient, reflection and ambient_light
 // keep red, green and blue, a float there being a grey.
 TEST_CASE("filter and transmit where a colour is used", "[lang][interpreter]") {
     const std::string v37 = "#version 3.7; global_settings { assumed_gamma 1 }\n";
@@ -129,15 +129,19 @@ TEST_CASE("filter and transmit where a colour is used", "[lang][interpreter]") {
                                 "plane { y, 0 pigment { brick rgb 1 transmit 1 } }\n");
     CHECK_FALSE(transparent.scene);
     CHECK(transparent.errors() ==
-          "3:25: transparency is not supported by asos: this colour's filter 0.9 would make the surface "
-          "transparent in POV-Ray\n"
-          "4:25: transparency is not supported by asos: this colour's filter 0.5 and transmit 0.5 would make "
-          "the surface transparent in POV-Ray; a float as a colour sets filter and transmit too: write "
-          "'rgb 0.5' for a grey\n"
-          "5:38: transparency is not supported by asos: this colour's transmit 0.25 would make the surface "
-          "transparent in POV-Ray\n"
-          "6:30: transparency is not supported by asos: this colour's transmit 1 would make the surface "
-          "transparent in POV-Ray\n");
+          "3:15: transparency is not supported by asos: this pigment's colour rgbft <1, 1, 1, 0.9, 0> (filter "
+          "0.9) would make the surface transparent in POV-Ray (only a layer over another texture may let what "
+          "is under it show)\n"
+          "4:15: transparency is not supported by asos: this pigment's colour rgbft <0.5, 0.5, 0.5, 0.5, 0.5> "
+          "(filter 0.5 and transmit 0.5) would make the surface transparent in POV-Ray (only a layer over "
+          "another texture may let what is under it show); a float as a colour sets filter and transmit too: "
+          "write 'rgb 0.5' for a grey\n"
+          "5:14: transparency is not supported by asos: this pigment's colour rgbft <0, 0, 0, 0, 0.25> (transmit "
+          "0.25) would make the surface transparent in POV-Ray (only a layer over another texture may let what "
+          "is under it show)\n"
+          "6:14: transparency is not supported by asos: this pigment's colour rgbft <1, 1, 1, 0, 1> (transmit 1) "
+          "would make the surface transparent in POV-Ray (only a layer over another texture may let what is "
+          "under it show)\n");
 
     // A float is a grey where only red, green and blue are read: no warning.
     Run grey = run(v37 + "global_settings { ambient_light color 0.8 }\n"
@@ -174,6 +178,48 @@ TEST_CASE("filter and transmit where a colour is used", "[lang][interpreter]") {
     Run background = run(v37 + "background { rgbft <0.2, 0.3, 0.4, 0.5, 0.25> }");
     CHECK(ok(background).background == Color{{0.2, 0.3, 0.4}, 0.5, 0.25});
     CHECK(background.diagnostics.all().empty());
+}
+
+// POV-Ray's layered textures: `texture { A } texture { B }` puts B over A, in
+// a declaration and on an object (Link_Textures: a texture on an object that
+// has one goes over it); transforms move every layer, a pigment on the
+// object changes its top layer. Only the bottom layer must be opaque.
+TEST_CASE("Layered textures", "[lang][interpreter]") {
+    const std::string v37 = "#version 3.7; global_settings { assumed_gamma 1 }\n";
+    Run declared = run(v37 + "#declare T = texture { pigment { rgb <1, 0, 0> } }\n"
+                             "  texture { pigment { rgbt <0, 0, 1, 0.5> } finish { phong 1 } }\n"
+                             "  texture { pigment { rgbf <0, 1, 0, 0.25> } };\n"
+                             "sphere { 0, 1 texture { T scale 2 } }\n");
+    const Texture& t = *ok(declared).objects.at(0).texture;
+    CHECK(t.pigment.color1 == Color{{1, 0, 0}, 0, 0});
+    REQUIRE(t.above.size() == 2);
+    CHECK(t.above[0].pigment.color1 == Color{{0, 0, 1}, 0, 0.5});
+    CHECK(t.above[0].finish.phong == 1.0);
+    CHECK(t.above[1].pigment.color1 == Color{{0, 1, 0}, 0.25, 0});
+    for (const Pigment* p : {&t.pigment, &t.above[0].pigment, &t.above[1].pigment})
+        CHECK(p->worldFromPattern.point(Vec3(1, 1, 1)) == Vec3(2, 2, 2));
+
+    Run onObject = run(v37 + "sphere { 0, 1 pigment { checker rgb 1 rgb 0 } translate x\n"
+                             "  texture { pigment { rgbt <1, 1, 1, 0.7> } } finish { phong 0.5 } translate y }\n");
+    const Texture& o = *ok(onObject).objects.at(0).texture;
+    CHECK(o.pigment.kind == Pigment::Kind::Checker);
+    REQUIRE(o.above.size() == 1);
+    CHECK(o.above[0].finish.phong == 0.5);  // the top layer's
+    CHECK(o.finish.phong == 0.0);
+    CHECK(o.pigment.worldFromPattern.point(Vec3(0.0)) == Vec3(1, 1, 0));
+    CHECK(o.above[0].pigment.worldFromPattern.point(Vec3(0.0)) == Vec3(0, 1, 0));
+
+    Run refused = run(v37 + "sphere { 0, 1 texture { pigment { rgbt <1, 1, 1, 0.5> } } texture { pigment { rgb 1 } } }\n"
+                            "#declare P = pigment { rgb 1 } texture { pigment { rgb 0 } }\n"
+                            "#declare L = texture { pigment { rgb 1 } } texture { pigment { rgbt 1 } }\n"
+                            "sphere { 0, 1 texture { L pigment { rgb 0 } } }\n");
+    CHECK_FALSE(refused.scene);
+    CHECK(refused.errors() ==
+          "2:15: transparency is not supported by asos: this pigment's colour rgbft <1, 1, 1, 0, 0.5> (transmit "
+          "0.5) would make the surface transparent in POV-Ray (only a layer over another texture may let what "
+          "is under it show)\n"
+          "3:14: only textures are layered: this pigment is followed by a texture\n"
+          "5:27: a pigment in a layered texture's block is not supported by asos; give it to one of its layers\n");
 }
 
 TEST_CASE("#if, #while, #for, #declare, #local, #undef", "[lang][interpreter]") {

@@ -77,12 +77,13 @@ void compareWithPovray(const std::string& scene, RenderMethod method, const std:
 // background and 8-bit encoding (flat_*), the lighting model (lighting), the
 // recursion of reflection (reflection), the six primitives (primitives), the
 // brick pattern (brick), the working gamma: none (gamma_off, a scene
-// without #version or assumed_gamma) and 2.2 (assumed_gamma), and the map
-// patterns with POV-Ray's noise and turbulence (map_*), and CSG (csg).
+// without #version or assumed_gamma) and 2.2 (assumed_gamma), the map
+// patterns with POV-Ray's noise and turbulence (map_*), CSG (csg), and
+// layered textures (layered, and layered_legacy for a scene older than 3.7).
 TEST_CASE("The renderer matches POV-Ray with one ray per pixel", "[golden][povray]") {
     for (const char* scene : {"flat_perspective", "flat_orthographic", "lighting", "reflection", "primitives",
                               "brick", "gamma_off", "assumed_gamma", "map_plain", "map_noise", "map_turbulence",
-                              "csg"})
+                              "csg", "layered", "layered_legacy"})
         compareWithPovray(scene, RenderMethod::Single, "", "-A");
 }
 

@@ -239,3 +239,46 @@ TEST_CASE("A point light sample points at the light and scales by the lit fracti
     CHECK(directLight(Finish{}, Vec3(1.0), {0, 1, 0}, {0, -1, 0}, light,
                       pointLightSample({1, 1, 1}, Vec3(1.0), {1, 1, 1})) == Vec3(0.0));
 }
+
+// POV-Ray's ComputeLightedTexture for layers: each layer's own light times
+// its opacity (1 - (filter + transmit) in 3.7, measured with `povray`;
+// 1 - (filter x the largest component + transmit) before), seen through the filter colour of
+// the layers above (rgb x filter + transmit); reflections traced with the
+// weight the layers above leave (the greyscale of that filter colour).
+TEST_CASE("Layered textures: each layer lit and seen through those above", "[shading]") {
+    Texture t = flat({1, 0, 0});
+    t.finish.ambient = Vec3(1.0);
+    t.finish.diffuse = 0.0;
+    TextureLayer top;
+    top.pigment.color1 = Color{{0, 0, 1}, 0.0, 0.5};
+    top.finish.ambient = Vec3(1.0);
+    top.finish.diffuse = 0.0;
+    top.finish.reflection = Vec3(0.5);
+    t.above.push_back(top);
+    const SurfaceHit hit = planeHit();
+    const Ray ray{{0, 1, 0}, {0, -1, 0}};
+    auto noLights = [](const ShadingPoint&) { return std::span<const LightSample>(); };
+    double reflectedWeight = 0.0;
+    auto reflect = [&](const Ray&, int, double w) {
+        reflectedWeight = w;
+        return Vec3(0.0);
+    };
+    // Transmit 0.5: half of the top's blue, half of the red under it.
+    CHECK(near(shadeSurface({hit, t, ray}, {}, ShadingSettings{}, noLights, reflect), {0.5, 0.0, 0.5}));
+    CHECK(reflectedWeight == Approx(0.5));  // the top layer's: the ray's whole weight x 0.5
+    // Filter 0.5 of half blue: the top keeps half of its light and lets
+    // (0, 0, 0.25) through, which the red under it does not pass.
+    t.above[0].pigment.color1 = Color{{0, 0, 0.5}, 0.5, 0.0};
+    CHECK(near(shadeSurface({hit, t, ray}, {}, ShadingSettings{}, noLights, reflect), {0.0, 0.0, 0.25}));
+    // Before 3.7: 1 - 0.5 x max(0, 0, 0.5) of it.
+    ShadingSettings legacy;
+    legacy.legacyLayerOpacity = true;
+    CHECK(near(shadeSurface({hit, t, ray}, {}, legacy, noLights, reflect), {0.0, 0.0, 0.375}));
+    // The bottom's reflection is traced with the weight left to it: the
+    // greyscale of (0, 0, 0.5), 0.057, times its reflection.
+    t.finish.reflection = Vec3(0.2);
+    t.above[0].finish.reflection = Vec3(0.0);
+    t.above[0].pigment.color1 = Color{{0, 0, 1}, 0.5, 0.0};
+    shadeSurface({hit, t, ray}, {}, ShadingSettings{}, noLights, reflect);
+    CHECK(reflectedWeight == Approx(0.057 * 0.2));
+}

@@ -28,7 +28,7 @@ struct SphereWithoutRaysLeave : Sphere {
 
 static_assert(PrimitiveShape<Sphere> && PrimitiveShape<Box> && PrimitiveShape<Cylinder> &&
               PrimitiveShape<TruncatedCone> && PrimitiveShape<Disc> && PrimitiveShape<EllipticDisc> &&
-              PrimitiveShape<Polygon> && PrimitiveShape<Plane>);
+              PrimitiveShape<Polygon> && PrimitiveShape<Plane> && PrimitiveShape<Quadric>);
 static_assert(!PrimitiveShape<SphereWithoutSelfShadow>, "a missing answer is a compile error");
 static_assert(!PrimitiveShape<SphereWithoutRaysLeave>, "a missing answer is a compile error");
 static_assert(!PrimitiveShape<int>);
@@ -70,6 +70,7 @@ TEST_CASE("One validate per record: the interpreter and Primitive::make say the 
         {"disc { <0, 0, 0>, <0, 0, 0>, 1 }", DiscShape{{0, 0, 0}, {0, 0, 0}, 1, 0}},
         {"disc { <0, 0, 0>, y, 1, 2 }", DiscShape{{0, 0, 0}, {0, 1, 0}, 1, 2}},
         {"plane { <0, 0, 0>, 1 }", PlaneShape{{0, 0, 0}, 1}},
+        {"quadric { <0, 0, 0>, <0, 0, 0>, <0, 0, 0>, 1 }", QuadricShape{{0, 0, 0}, {0, 0, 0}, {0, 0, 0}, 1}},
         {"polygon { 3, <0, 0, 0>, <1, 0, 0>, <2, 0, 0> }", PolygonShape{{{0, 0, 0}, {1, 0, 0}, {2, 0, 0}}}},
         {"polygon { 4, <0, 0, 0>, <1, 0, 0>, <1, 1, 0>, <0, 1, 1> }",
          PolygonShape{{{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 1}}}},

@@ -15,6 +15,7 @@ namespace asos::lang {
     WORD(Cone, "cone") WORD(Cylinder, "cylinder") WORD(Disc, "disc") WORD(Polygon, "polygon")               \
     WORD(Plane, "plane") WORD(Union, "union") WORD(Difference, "difference") WORD(Intersection, "intersection") WORD(Merge, "merge") WORD(Object, "object") WORD(GlobalSettings, "global_settings") \
     WORD(Background, "background")                                                                 \
+    WORD(Quadric, "quadric")                                                                       \
     /* camera */                                                                                \
     WORD(Perspective, "perspective") WORD(Orthographic, "orthographic") WORD(Location, "location")       \
     WORD(LookAt, "look_at") WORD(Angle, "angle") WORD(Right, "right") WORD(Up, "up")                        \

@@ -47,6 +47,8 @@ struct ValueRange {
 
 // Whether the finish has highlights at all (phong or specular).
 inline bool hasHighlights(const Finish& f) { return f.phong > 0.0 || f.specular > 0.0; }
+// Whether any layer of the texture has highlights.
+bool hasHighlights(const Texture& t);
 
 // An interval that holds the highlight term of `light` (phong + specular as
 // directLight computes them, per unit of the light's colour, with its fade,
@@ -73,5 +75,12 @@ double highlightError(const Finish& finish, const Light& light, const SurfaceSpr
 // light's points each shade as a point light with a share of its colour, so
 // its error is the mean of theirs, taken over a 3 x 3 grid of its points.
 double highlightVariation(const Finish& finish, std::span<const Light> lights, const SurfaceSpread& spread);
+
+// The same for a layered texture: its layers' highlights add up, each seen
+// through the layers above it (shading.hpp, shadeSurface), so the sum of the
+// layers' variations, each times the most the layers above can let through
+// (the product of their largest rgb x filter + transmit over their colours).
+// The layers' patterns are point sampled; this bounds the highlights only.
+double highlightVariation(const Texture& texture, std::span<const Light> lights, const SurfaceSpread& spread);
 
 }  // namespace asos

@@ -27,7 +27,7 @@ public:
     // `lights`: how area lights are shadowed (render/scene_lights.hpp).
     explicit RayTracer(const Scene& scene, const LightSetup& lights = {})
         : scene_(scene),
-          shading_(ShadingSettings::from(scene.description().globals)),
+          shading_(ShadingSettings::from(scene.description())),
           lights_(scene.description(), lights) {}
 
     const Scene& scene() const { return scene_; }

@@ -14,8 +14,11 @@
 //  - the colour seen along the reflected ray.
 // All colours are linear RGB in the scene's working space.
 #include <algorithm>
+#include <array>
+#include <cmath>
 #include <optional>
 #include <span>
+#include <vector>
 
 #include "asos/geometry/hit.hpp"
 #include "asos/geometry/ray.hpp"
@@ -60,11 +63,15 @@ struct ShadingSettings {
     Vec3 ambientLight{1.0};
     int maxTraceLevel = 5;
     double adcBailout = kDefaultAdcBailout;
+    // A scene read as older than 3.7 takes a layer's own share of its light
+    // with POV-Ray's legacy formula (layerOpacity).
+    bool legacyLayerOpacity = false;
 
-    static ShadingSettings from(const GlobalSettings& g) {
+    static ShadingSettings from(const SceneDescription& d) {
         // Capped here too, for a description not made by the interpreter: a
         // deeper recursion could overflow a worker thread's stack.
-        return {g.ambientLight, std::clamp(g.maxTraceLevel, 1, kMaxTraceLevelLimit), kDefaultAdcBailout};
+        return {d.globals.ambientLight, std::clamp(d.globals.maxTraceLevel, 1, kMaxTraceLevelLimit),
+                kDefaultAdcBailout, d.version < 3.7};
     }
 };
 
@@ -85,6 +92,23 @@ struct ShadeRequest {
 // The pigment's colour at a world point: CheckerPattern and BrickPattern in
 // pattern space (1: color2).
 Color evaluatePigment(const Pigment& pigment, const Vec3& worldPoint);
+
+// POV-Ray's greyscale of a colour (its RED/GREEN/BLUE_INTENSITY weights).
+inline double povGreyscale(const Vec3& c) { return 0.297 * c.x + 0.589 * c.y + 0.114 * c.z; }
+
+// The share of its own light a texture layer of colour `c` keeps: 1 for an
+// opaque one. POV-Ray 3.7 (trace.cpp, ComputeLightedTexture, the colour's
+// opacity): 1 - (filter + transmit), measured with `povray`; a scene older
+// than 3.7 takes POV-Ray's legacy 1 - (filter x the colour's largest
+// component + transmit).
+inline double layerOpacity(const Color& c, bool legacy) {
+    const double filtered = legacy ? c.filter * std::max(c.rgb.x, std::max(c.rgb.y, c.rgb.z)) : c.filter;
+    return 1.0 - (filtered + c.transmit);
+}
+
+// What a layer of colour `c` lets through of the layers under it, per
+// channel: POV-Ray's rgbTransm, filter by the colour plus transmit.
+inline Vec3 layerTransmittance(const Color& c) { return c.rgb * c.filter + Vec3(c.transmit); }
 
 // The normal turned to face the incoming ray (POV-Ray flips it so).
 inline Vec3 facingNormal(const Vec3& normal, const Vec3& rayDir) {
@@ -129,33 +153,99 @@ inline Vec3 backgroundColor(const SceneDescription& scene) {
 //   the callee must skip the surface itself). Called only when the finish
 //   reflects, depth <= max_trace_level and weight >= adc_bailout, as POV-Ray's
 //   TraceRay decides; otherwise the reflection is black.
+// A texture layer as the shading sees it: lit with its finish, its pigment
+// scaled by its opacity, its light seen through the layers above it.
+struct ShadedLayer {
+    const Finish* finish = nullptr;
+    Vec3 pigment{0.0};  // the pigment's colour x its opacity
+    Vec3 through{1.0};  // what the layers above let through (POV-Ray's filCol)
+    double weight = 1.0;  // the ray's weight left for it (POV-Ray's trans)
+};
+
+// The texture's layers that the ray sees, top first: POV-Ray's loop in
+// ComputeLightedTexture, which stops where the layers above let less than
+// adc_bailout through. The bottom layer is opaque, so the ray ends there.
+// `bottomPigment`: the pigment's colour of a texture of one layer, when the
+// caller has it (ShadeRequest::pigment).
+template <std::size_t N>
+std::span<const ShadedLayer> shadedLayers(const Texture& texture, const Vec3& point,
+                                          const std::optional<Color>& bottomPigment,
+                                          const ShadingSettings& settings,
+                                          std::array<ShadedLayer, N>& storage,
+                                          std::vector<ShadedLayer>& overflow) {
+    const std::size_t count = texture.above.size() + 1;
+    ShadedLayer* out = storage.data();
+    if (count > N) {
+        overflow.resize(count);
+        out = overflow.data();
+    }
+    std::size_t n = 0;
+    Vec3 through(1.0);
+    double weight = 1.0;
+    for (std::size_t i = count; i-- > 0 && (n == 0 || weight > settings.adcBailout);) {
+        const TextureLayer& layer = i == 0 ? static_cast<const TextureLayer&>(texture) : texture.above[i - 1];
+        const Color c = (count == 1 && bottomPigment) ? *bottomPigment : evaluatePigment(layer.pigment, point);
+        out[n++] = {&layer.finish, c.rgb * layerOpacity(c, settings.legacyLayerOpacity), through, weight};
+        through *= layerTransmittance(c);
+        weight = std::min(1.0, std::fabs(povGreyscale(through)));
+    }
+    return {out, n};
+}
+
+// The shaded colour of a surface point.
+//
+// lightArriving(const ShadingPoint&) -> std::span<const LightSample>
+//   the light reaching the point from light `lightIndex`; the span must stay
+//   valid until the next call (e.g. a per-thread buffer). It is called only
+//   when some layer's finish uses lights; it may return no samples (light
+//   blocked, or facing away: samples from behind the surface are ignored
+//   anyway).
+// traceReflected(const Ray& ray, int depth, double weight) -> Vec3
+//   the colour along the mirror ray (unit direction, origin at the hit point:
+//   the callee must skip the surface itself). Called only when a layer's
+//   finish reflects, depth <= max_trace_level and weight >= adc_bailout, as
+//   POV-Ray's TraceRay decides; otherwise the reflection is black.
+//
+// A layered texture: each layer adds its ambient, diffuse and highlights, the
+// pigment's terms times its opacity, all times what the layers above let
+// through; each adds its reflection, traced with the weight the layers above
+// leave it, unfiltered (POV-Ray's ComputeLightedTexture).
 template <class LightFn, class ReflectFn>
 Vec3 shadeSurface(const ShadeRequest& req, std::span<const Light> lights,
                   const ShadingSettings& settings, LightFn&& lightArriving,
                   ReflectFn&& traceReflected) {
-    const Finish& finish = req.texture.finish;
     const Vec3 rayDir = glm::normalize(req.ray.dir);
     const Vec3 normal = facingNormal(req.hit.normal, rayDir);
     // Every term that uses the pigment (ambient, diffuse) is linear in it, so
     // a pigment averaged over a footprint gives the average of those terms.
-    const Vec3 pigment =
-        (req.pigment ? *req.pigment : evaluatePigment(req.texture.pigment, req.hit.position)).rgb;
+    std::array<ShadedLayer, 4> storage;
+    std::vector<ShadedLayer> overflow;
+    const std::span<const ShadedLayer> layers =
+        shadedLayers(req.texture, req.hit.position, req.pigment, settings, storage, overflow);
 
-    Vec3 color = ambientTerm(finish, pigment, settings.ambientLight);
-    if (usesLights(finish)) {
+    Vec3 color(0.0);
+    bool lit = false;
+    for (const ShadedLayer& l : layers) {
+        color += l.through * ambientTerm(*l.finish, l.pigment, settings.ambientLight);
+        lit = lit || usesLights(*l.finish);
+    }
+    if (lit) {
         for (int i = 0; i < static_cast<int>(lights.size()); ++i) {
             const ShadingPoint point{i, &lights[i], &req.hit, req.hit.position, normal, &req.ray,
                                      req.depth};
             for (const LightSample& s : lightArriving(point))
-                color += directLight(finish, pigment, normal, rayDir, lights[i], s);
+                for (const ShadedLayer& l : layers)
+                    if (usesLights(*l.finish))
+                        color += l.through * directLight(*l.finish, l.pigment, normal, rayDir, lights[i], s);
         }
     }
     // Reflection (POV-Ray's ComputeReflectivity, ComputeReflection, and the
     // trace-level and ADC tests at the top of TraceRay).
-    const Vec3& reflection = finish.reflection;
-    if (reflection != Vec3(0.0)) {
+    for (const ShadedLayer& l : layers) {
+        const Vec3& reflection = l.finish->reflection;
+        if (reflection == Vec3(0.0)) continue;
         const double weight =
-            req.weight * std::max(reflection.x, std::max(reflection.y, reflection.z));
+            req.weight * l.weight * std::max(reflection.x, std::max(reflection.y, reflection.z));
         if (req.depth < settings.maxTraceLevel && weight >= settings.adcBailout) {
             const Ray mirror{req.hit.position, reflectDirection(rayDir, normal)};
             color += reflection * Vec3(traceReflected(mirror, req.depth + 1, weight));

@@ -102,6 +102,16 @@ struct PolygonShape { std::vector<Vec3> points; };
 // {p : dot(normalize(normal), p) = distance}, its inside on the -normal side.
 struct PlaneShape { Vec3 normal{0.0, 1.0, 0.0}; double distance = 0.0; };
 
+// POV-Ray's quadric { <A, B, C>, <D, E, F>, <G, H, I>, J }: the points
+// A x^2 + B y^2 + C z^2 + D xy + E xz + F yz + G x + H y + I z + J = 0, its
+// inside where the sum is negative.
+struct QuadricShape {
+    Vec3 squares{0.0};  // A, B, C
+    Vec3 mixed{0.0};    // D, E, F
+    Vec3 linear{0.0};   // G, H, I
+    double constant = 0.0;  // J
+};
+
 struct CsgTree;
 // One leaf of a CSG object (POV-Ray's difference, intersection, merge, or a
 // union inside one of those): the part of the leaf's surface that bounds the
@@ -115,7 +125,7 @@ struct CsgShape {
 };
 
 using Shape = std::variant<SphereShape, BoxShape, ConeShape, CylinderShape, DiscShape,
-                           PolygonShape, PlaneShape, CsgShape>;
+                           PolygonShape, PlaneShape, QuadricShape, CsgShape>;
 
 // A CSG object as written: nodes (node 0 the root), each an operation over
 // its children or a leaf shape; `inverse` as POV-Ray's (toggled by each
@@ -182,9 +192,19 @@ struct Finish {
     Vec3 reflection{0.0};
 };
 
-struct Texture {
+// One layer of a texture: its pigment and the finish it is lit with.
+struct TextureLayer {
     Pigment pigment;
     Finish finish;
+};
+
+// The texture's own pigment and finish are its bottom layer. `above` holds
+// POV-Ray's layered texture (`texture { A } texture { B }`: B over A), lowest
+// first: each layer is lit with its own finish, and what it lets through
+// (its colour's filter and transmit) shows the layers under it
+// (docs/rendering.md, "Layered textures"). The bottom layer is opaque.
+struct Texture : TextureLayer {
+    std::vector<TextureLayer> above;
 };
 
 // POV-Ray's default texture (black pigment, default finish), shared.

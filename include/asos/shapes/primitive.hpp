@@ -30,6 +30,7 @@
 #include "asos/shapes/plane.hpp"
 #include "asos/shapes/polygon.hpp"
 #include "asos/shapes/primitive_shape.hpp"
+#include "asos/shapes/quadric.hpp"
 #include "asos/shapes/sphere.hpp"
 #include "asos/shapes/truncated_cone.hpp"
 
@@ -152,7 +153,8 @@ private:
     // The local shapes, each answering PrimitiveShape. A description record
     // (an alternative of Shape, answering ShapeRecord) becomes one of them.
     using LocalShape =
-        std::variant<Sphere, Box, TruncatedCone, Cylinder, Disc, Polygon, Plane, EllipticDisc>;
+        std::variant<Sphere, Box, TruncatedCone, Cylinder, Disc, Polygon, Plane, EllipticDisc,
+                     Quadric>;
     static_assert(kEveryAlternativePrimitiveShape<LocalShape>,
                   "every local shape answers PrimitiveShape (primitive_shape.hpp)");
 
