@@ -1,1 +1,0 @@
-difference { box { 0, 1 } sphere { 0, 0.5 } }
