@@ -3,6 +3,7 @@
 # configures and builds a Release tree in ./build. Safe to run repeatedly.
 #   scripts/setup.sh            library, command line and tests
 #   ASOS_EXTRA_PACKAGES="..."   more packages to install
+#   ASOS_SETUP_ONLY_PACKAGES=1  install the packages, build nothing
 # POV-Ray comes too: its include files are what `#include "colors.inc"` finds,
 # the tests compare with it, and its example scenes are the corpus test's.
 set -euo pipefail
@@ -22,6 +23,8 @@ if ((${#missing[@]})); then
   $sudo apt-get update -qq
   DEBIAN_FRONTEND=noninteractive $sudo apt-get install -y -qq --no-install-recommends "${missing[@]}" >/dev/null
 fi
+
+[[ -n ${ASOS_SETUP_ONLY_PACKAGES:-} ]] && exit 0  # the packages only (scripts/fuzz.sh)
 
 build=${ASOS_BUILD_DIR:-build}
 cmake -S . -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=Release >/dev/null
