@@ -94,15 +94,6 @@ std::string writeCases(const std::vector<Case>& cases) {
     return out;
 }
 
-std::set<std::string> filesIn(const fs::path& dir) {
-    std::set<std::string> names;
-    for (const auto& e : fs::directory_iterator(dir)) {
-        const std::string name = e.path().filename().string();
-        if (!name.starts_with("stdout-") && !name.starts_with("stderr-")) names.insert(name);
-    }
-    return names;
-}
-
 }  // namespace
 
 TEST_CASE("asos refuses bad command lines with the golden message and exit code", "[cli][golden]") {
@@ -117,7 +108,7 @@ TEST_CASE("asos refuses bad command lines with the golden message and exit code"
     std::ofstream(dir / "scene.pov") << "camera { location <0, 1, -3> look_at 0 }\n"
                                         "light_source { <2, 4, -3>, 1 }\nsphere { 0, 1 }\n";
     REQUIRE(mkfifo((dir / "fifo.pov").c_str(), 0644) == 0);
-    const std::set<std::string> before = filesIn(dir);
+    const std::set<std::string> before = asos::test::filesIn(dir);
 
     const bool update = asos::test::updatingGoldens();
     std::vector<Case> got = cases;
@@ -130,7 +121,7 @@ TEST_CASE("asos refuses bad command lines with the golden message and exit code"
             CHECK(r.exitCode == cases[i].exitCode);
             CHECK(r.err == cases[i].err);
         }
-        CHECK(filesIn(dir) == before);  // nothing written, no temporary file left
+        CHECK(asos::test::filesIn(dir) == before);  // nothing written, no temporary file left
     }
     const std::string text = writeCases(got);
     const fs::path out = asos::test::goldenOutput(golden);

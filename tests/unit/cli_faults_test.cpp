@@ -46,16 +46,6 @@ void writeScene(const fs::path& file) {
                            "#end\n";
 }
 
-// The files of `dir` other than the test harness's stdout/stderr captures.
-std::set<std::string> filesIn(const fs::path& dir) {
-    std::set<std::string> names;
-    for (const auto& e : fs::directory_iterator(dir)) {
-        const std::string name = e.path().filename().string();
-        if (!name.starts_with("stdout-") && !name.starts_with("stderr-")) names.insert(name);
-    }
-    return names;
-}
-
 // An old output, to be found intact.
 std::string plantOld(const fs::path& file) {
     std::string old = "old contents of " + file.filename().string() + "\n";
@@ -119,7 +109,7 @@ TEST_CASE("a write that fails part way (a file size limit) leaves the old files 
     };
     for (const char* name : {"out.png", "out.jpg", "out.exr", "out.pfm", "out.tif"}) {
         const std::string old = plantOld(dir / name);
-        const std::set<std::string> before = filesIn(dir);
+        const std::set<std::string> before = asos::test::filesIn(dir);
         const asos::test::ProgramResult r = asos::test::runProgram(
             ASOS_EXE, dir, {"render", "scene.pov", "-o", name, "-W", "96", "-H", "72", "--quiet"}, limited);
         INFO(name << ": " << r.err);
@@ -131,13 +121,13 @@ TEST_CASE("a write that fails part way (a file size limit) leaves the old files 
         else
             CHECK(r.err.starts_with("asos render: error: cannot write 'out.tif': TIFFWriteScanline failed"));
         CHECK(asos::test::slurp(dir / name) == old);
-        CHECK(filesIn(dir) == before);
+        CHECK(asos::test::filesIn(dir) == before);
     }
 
     // Half-failed: the image fits, the statistics do not: neither is put in place.
     const std::string oldImage = plantOld(dir / "small.png");
     const std::string oldStats = plantOld(dir / "stats.json");
-    const std::set<std::string> before = filesIn(dir);
+    const std::set<std::string> before = asos::test::filesIn(dir);
     auto tiny = [] {
         const rlimit limit{400, 400};
         setrlimit(RLIMIT_FSIZE, &limit);
@@ -151,7 +141,7 @@ TEST_CASE("a write that fails part way (a file size limit) leaves the old files 
     CHECK(r.err == "asos render: error: cannot write 'stats.json': File too large\n");
     CHECK(asos::test::slurp(dir / "small.png") == oldImage);
     CHECK(asos::test::slurp(dir / "stats.json") == oldStats);
-    CHECK(filesIn(dir) == before);
+    CHECK(asos::test::filesIn(dir) == before);
 
     // Without the limit the same run writes both.
     const asos::test::ProgramResult ok = asos::test::runAsos(
@@ -185,7 +175,7 @@ TEST_CASE("a full disk (a full tmpfs) leaves the old image and exits 3", "[cli][
             while (filler.write(block.data(), block.size()) && filler.flush()) {
             }
         }
-        const std::set<std::string> before = filesIn(disk);
+        const std::set<std::string> before = asos::test::filesIn(disk);
         const std::string output = "disk/" + std::string(name);
         const asos::test::ProgramResult r =
             asos::test::runAsos(dir, {"render", "scene.pov", "-o", output, "-W", "96", "-H", "72", "--quiet"});
@@ -193,7 +183,7 @@ TEST_CASE("a full disk (a full tmpfs) leaves the old image and exits 3", "[cli][
         CHECK(r.exitCode == 3);
         CHECK(r.err == "asos render: error: cannot write '" + output + "': No space left on device\n");
         CHECK(asos::test::slurp(disk / name) == old);
-        CHECK(filesIn(disk) == before);
+        CHECK(asos::test::filesIn(disk) == before);
         fs::remove(disk / "filler");
     }
 }
@@ -231,7 +221,7 @@ TEST_CASE("a read-only folder is refused before rendering", "[cli][faults]") {
     CHECK(r.err == "asos render: error: -o: cannot write 'ro/out.png': folder 'ro': " + reason +
                        "\nRun with --help for more information.\n");
     CHECK(asos::test::slurp(ro / "out.png") == old);
-    CHECK(filesIn(ro) == std::set<std::string>{"out.png"});
+    CHECK(asos::test::filesIn(ro) == std::set<std::string>{"out.png"});
 }
 
 TEST_CASE("SIGINT or SIGKILL during the render leaves the old image", "[cli][faults]") {
@@ -240,7 +230,7 @@ TEST_CASE("SIGINT or SIGKILL during the render leaves the old image", "[cli][fau
     writeScene(dir / "scene.pov");
     for (const int signal : {SIGINT, SIGKILL}) {
         const std::string old = plantOld(dir / "out.png");
-        const std::set<std::string> before = filesIn(dir);
+        const std::set<std::string> before = asos::test::filesIn(dir);
         // Seconds of work: the signal comes during the render.
         const Child c = spawnAsos(dir, {"render", "scene.pov", "-o", "out.png", "-W", "2000", "-H", "1500",
                                         "--threads", "1", "--quiet"});
@@ -254,7 +244,7 @@ TEST_CASE("SIGINT or SIGKILL during the render leaves the old image", "[cli][fau
         CHECK(WTERMSIG(status) == signal);  // a shell reports 128 + the signal: 130 for SIGINT
         CHECK(seconds < 2.0);               // promptly
         CHECK(asos::test::slurp(dir / "out.png") == old);
-        std::set<std::string> after = filesIn(dir);
+        std::set<std::string> after = asos::test::filesIn(dir);
         CHECK(after == before);
     }
 }
@@ -270,7 +260,7 @@ TEST_CASE("SIGINT or SIGKILL during the write leaves the old image or the whole 
     for (const int signal : {SIGINT, SIGKILL}) {
         for (int attempt = 0; attempt < 3; ++attempt) {
             const std::string old = plantOld(dir / "out.pfm");
-            const std::set<std::string> before = filesIn(dir);
+            const std::set<std::string> before = asos::test::filesIn(dir);
             const Child c = spawnAsos(dir, args);
             // Wait until it has the output open in the folder, then signal it.
             bool during = false;
@@ -287,7 +277,7 @@ TEST_CASE("SIGINT or SIGKILL during the write leaves the old image or the whole 
             if (!done) waitpid(c.pid, &status, 0);
             const std::string now = asos::test::slurp(dir / "out.pfm");
             INFO("signal " << signal << ", attempt " << attempt);
-            CHECK(filesIn(dir) == before);  // no temporary file
+            CHECK(asos::test::filesIn(dir) == before);  // no temporary file
             if (!during) continue;          // it finished first: try again
             ++landed;
             if (WIFSIGNALED(status)) {

@@ -8,6 +8,7 @@
 
 #include <filesystem>
 #include <fstream>
+#include <set>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -76,6 +77,17 @@ inline std::filesystem::path testCaseDir(const std::string& suite, const std::st
 
 inline ProgramResult runAsos(const std::filesystem::path& dir, std::vector<std::string> args) {
     return runProgram(ASOS_EXE, dir, std::move(args));
+}
+
+// The files of `dir` other than the stdout/stderr captures runAsos leaves
+// there: what a command wrote.
+inline std::set<std::string> filesIn(const std::filesystem::path& dir) {
+    std::set<std::string> names;
+    for (const auto& e : std::filesystem::directory_iterator(dir)) {
+        const std::string name = e.path().filename().string();
+        if (!name.starts_with("stdout-") && !name.starts_with("stderr-")) names.insert(name);
+    }
+    return names;
 }
 
 }  // namespace asos::test
