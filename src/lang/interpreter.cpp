@@ -1,8 +1,6 @@
 // Files, scopes and directives. Entries of a block (or of a file) are run in
 // order; a directive runs here and hands the entries of the branch it takes
 // back to the same handler, so #if and #while work alike in every block.
-#include <sys/stat.h>
-
 #include <algorithm>
 #include <cerrno>
 #include <cmath>
@@ -12,6 +10,7 @@
 #include <new>
 
 #include "asos/lang/parse.hpp"
+#include "asos/lang/source_kind.hpp"
 #include "src/lang/interpreter_impl.hpp"
 
 namespace asos::lang {
@@ -23,15 +22,17 @@ constexpr std::size_t kMaxIncludeDepth = 64;
 // longer chain (a runaway recursion has hundreds).
 constexpr std::size_t kContextEnds = 5;
 
-// Why `path` cannot be read as a source file, empty when it can: only a
-// regular file is opened (a FIFO would block, /dev/zero never end).
+// Why `path` cannot be read as a source file, empty when it can.
 std::string unreadableReason(const std::filesystem::path& path) {
-    struct stat st {};
-    if (::stat(path.c_str(), &st) != 0) return std::strerror(errno);
-    if (S_ISREG(st.st_mode)) return {};
-    if (S_ISDIR(st.st_mode)) return "it is a folder";
-    if (S_ISFIFO(st.st_mode)) return "it is a FIFO, not a regular file";
-    if (S_ISCHR(st.st_mode) || S_ISBLK(st.st_mode)) return "it is a device, not a regular file";
+    const SourceCheck c = checkSource(path);
+    switch (c.kind) {
+    case SourceKind::Regular: return {};
+    case SourceKind::Unreachable: return std::strerror(c.error);
+    case SourceKind::Folder: return "it is a folder";
+    case SourceKind::Fifo: return "it is a FIFO, not a regular file";
+    case SourceKind::Device: return "it is a device, not a regular file";
+    case SourceKind::Other: break;
+    }
     return "it is not a regular file";
 }
 
@@ -626,7 +627,7 @@ void Interpreter::runInclude(const Node& n, EntryHandler handle) {
     }
     if (found.empty() && !notAFile.empty())
         fatal(n[0], "cannot include '" + name + "': " + notAFile.lexically_normal().string() + " is " +
-                        (std::filesystem::is_directory(notAFile, ec) ? "a folder" : "not a regular file"));
+                        (checkSource(notAFile).kind == SourceKind::Folder ? "a folder" : "not a regular file"));
     if (found.empty()) {
         std::string where;
         for (const auto& dir : folders) where += (where.empty() ? "" : ", ") + dir.string();

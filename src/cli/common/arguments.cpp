@@ -1,7 +1,5 @@
 #include "cli/common/arguments.hpp"
 
-#include <sys/stat.h>
-
 #include <algorithm>
 #include <cctype>
 #include <cerrno>
@@ -11,6 +9,7 @@
 #include <cstring>
 #include <filesystem>
 
+#include "asos/lang/source_kind.hpp"
 #include "asos/lang/words.hpp"
 
 namespace asos::cli {
@@ -150,13 +149,16 @@ CheckedSceneInputs checkSceneInputs(const SceneInputs& inputs, const std::string
 }
 
 std::string unreadableScene(const std::string& path) {
-    struct stat st {};
-    if (::stat(path.c_str(), &st) != 0) return "cannot read '" + path + "': " + std::strerror(errno);
-    if (S_ISREG(st.st_mode)) return {};
-    const char* what = S_ISDIR(st.st_mode)                          ? "a folder"
-                       : S_ISFIFO(st.st_mode)                       ? "a FIFO"
-                       : S_ISCHR(st.st_mode) || S_ISBLK(st.st_mode) ? "a device"
-                                                                    : "a socket";
+    const lang::SourceCheck c = lang::checkSource(path);
+    const char* what = nullptr;
+    switch (c.kind) {
+    case lang::SourceKind::Regular: return {};
+    case lang::SourceKind::Unreachable: return "cannot read '" + path + "': " + std::strerror(c.error);
+    case lang::SourceKind::Folder: what = "a folder"; break;
+    case lang::SourceKind::Fifo: what = "a FIFO"; break;
+    case lang::SourceKind::Device: what = "a device"; break;
+    case lang::SourceKind::Other: what = "a socket"; break;
+    }
     return "cannot read '" + path + "': it is " + std::string(what) + ", not a scene file";
 }
 
