@@ -52,6 +52,20 @@ Frustum::SideQuadratic Frustum::sideQuadratic(const Profile& f, const Vec3& orig
     q.shift = glm::dot(center - origin, d);
     if (dd != 1.0) q.shift /= dd;
     q.o = origin + q.shift * d - center;
+    // C = |o.xy|^2 - r(o.z)^2 is only as good as the larger of its terms. On
+    // a steep slope (a short, wide frustum) r(o.z) at the nearest point can
+    // dwarf the distance the answer depends on; there the line's crossing
+    // of the plane z = centre, where r is the centre's own radius, is better.
+    if (f.slope != 0.0 && d.z != 0.0) {
+        const double r = f.r0 + f.slope * (q.centerZ + q.o.z);
+        const double crossing = (q.centerZ - origin.z) / d.z;
+        const Vec3 o = origin + crossing * d - center;
+        const double rc = f.r0 + f.slope * q.centerZ;
+        if (o.x * o.x + o.y * o.y + rc * rc < q.o.x * q.o.x + q.o.y * q.o.y + r * r) {
+            q.shift = crossing;
+            q.o = Vec3(o.x, o.y, 0.0);
+        }
+    }
     const double k = f.slope;
     const double rz = f.r0 + k * (q.centerZ + q.o.z);
     q.a = d.x * d.x + d.y * d.y - k * k * d.z * d.z;

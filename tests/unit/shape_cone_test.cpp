@@ -106,13 +106,55 @@ TEST_CASE("Cone degenerate input", "[shapes][cone]") {
     CHECK_FALSE(std::isnan(a.tNear + a.tFar));
 }
 
+TEST_CASE("Cone far shorter than wide: the fuzzer's finding", "[shapes][cone][regression]") {
+    // fuzz/findings/fuzz_cone-miss-166adf41: a frustum 1.6e-9 long and 0.75
+    // wide. Its side's quadratic, set up at the point of the ray nearest the
+    // tip, lost every digit to r(z)^2 there: a ray passing 13 units away
+    // "hit" the cap while the classification (rightly) said Miss.
+    const Mat4 m(Vec4(0.87769136735949682, -0.32764192500672673, 0.34972651120626114, 0.0),
+                 Vec4(0.44222699236423274, 0.83491679597572543, -0.32764192500672673, 0.0),
+                 Vec4(-0.18464330718198665, 0.44222699236423268, 0.87769136735949682, 0.0),
+                 Vec4(-4.6093073826210169, -0.56862745098039191, -0.56862745098039191, 1.0));
+    const Primitive c = cone({-3.9372549019607845, -3.9372549019607845, -3.9372549015079059}, 0.75293004653033102,
+                             {-3.9372549004401094, -3.9372549019607845, -3.9372549019607845}, 0.023548366041744456,
+                             false, Transform(m));
+    const Vec3 apex(-1.1372549019607838, -1.1372549019607838, -5.0588235294117503);
+    CHECK_FALSE(c.intersect(Ray{apex, glm::normalize(Vec3(-0.57807298942379093, -0.57696114824648292,
+                                                          -0.577015989650843))},
+                            0.0, kInfinity));
+    Cone k;
+    k.apex = apex;
+    k.axis = Vec3(-0.57735026918962584);
+    k.halfAngle = 0.0044313725490196078;
+    k.tMin = 5.1270294433580776e-14;
+    const ConeClass answer = c.classify(PreparedCone(k, true));
+    CHECK(probeCone(c, k, answer, {}, true).violations == 0);
+    // The same shape untransformed: rays along the axis hit the caps where
+    // they are; rays beside it miss.
+    const Primitive flat = cone({0, 0, 0}, 0.75, {0, 1e-9, 0}, 0.02);
+    auto hit = flat.intersect(Ray{{0.5, -3, 0}, {0, 1, 0}}, 0.0, kInfinity);
+    REQUIRE(hit);
+    CHECK(hit->t == Approx(3.0).epsilon(1e-12));
+    CHECK(hit->normal.y == Approx(-1.0));
+    hit = flat.intersect(Ray{{0.01, 3, 0}, {0, -1, 0}}, 0.0, kInfinity);
+    REQUIRE(hit);
+    CHECK(hit->t == Approx(3.0 - 1e-9).epsilon(1e-12));
+    CHECK(hit->normal.y == Approx(1.0));
+    for (const double x : {0.8, 2.0, 13.0})
+        CHECK_FALSE(flat.intersect(Ray{{x, -3, 0.1}, glm::normalize(Vec3(0.01, 1, 0.02))}, 0.0, kInfinity));
+    CHECK_FALSE(flat.intersect(Ray{{-13, -7, 5}, glm::normalize(Vec3(1, 0.55, -0.31))}, 0.0, kInfinity));
+}
+
 TEST_CASE("Cone cone classification is conservative (property)", "[shapes][cone][property]") {
     using namespace shapetest;
     const PropertyStats stats = runConeProperty("cone", 0xc0e5ull, 100000, [](Rng& rng) {
         ShapeCase sc;
         const Vec3 base(rng.uniform(-2, 2), rng.uniform(-2, 2), rng.uniform(-2, 2));
         const Vec3 dir = rng.chance(0.3) ? Vec3(0, 1, 0) : rng.unitVector();
-        const double length = rng.logUniform(-1.0, 0.7);
+        // Now and then a frustum far shorter than it is wide: its side's
+        // slope is steep, the quadratic of a ray far from its tip badly
+        // conditioned (fuzz/findings/fuzz_cone-miss-166adf41).
+        const double length = rng.chance(0.1) ? rng.logUniform(-9.0, -3.0) : rng.logUniform(-1.0, 0.7);
         const Vec3 cap = base + length * dir;
         double r0 = rng.logUniform(-1.3, 0.5);
         double r1 = rng.chance(0.25) ? 0.0 : rng.logUniform(-1.3, 0.5);
