@@ -1,6 +1,7 @@
 // The docs as code: every ```pov snippet of docs/*.md and docs/manual/ is
-// read by the interpreter, and every scene of examples/ renders at 64 x 48
-// without an error. The rule that wraps a snippet is docs/goldens.md's
+// read by the interpreter, and every scene of examples/ opens with a comment
+// that names the command rendering it and renders at 64 x 48 without an
+// error. The rule that wraps a snippet is docs/goldens.md's
 // ("Snippets in the docs"): the fence's word after `pov` says what it is.
 #include <catch2/catch.hpp>
 
@@ -137,6 +138,11 @@ TEST_CASE("every example renders at 64 x 48 without an error", "[docs][examples]
         const asos::test::ProgramResult r =
             asos::test::runAsos(dir, {"render", scene.string(), "-o", png, "-W", "64", "-H", "48", "--quiet"});
         INFO(name << ":\n" << r.err);
+        // It opens with a comment saying what it shows and the command that renders it.
+        std::ifstream in(scene);
+        std::string opening, line;
+        while (std::getline(in, line) && line.starts_with("//")) opening += line + '\n';
+        CHECK(opening.find("asos render ") != std::string::npos);
         CHECK(r.exitCode == 0);
         CHECK(r.err.find(": error:") == std::string::npos);
         CHECK(fs::exists(dir / png));
