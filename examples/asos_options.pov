@@ -6,7 +6,7 @@
 // beams); an object's or light's unset fields come from global_settings.
 // POV-Ray does not know this block: this scene is for asos only.
 //
-// With asos:     build/asos parse examples/asos_options.pov   (renderer: see README)
+// With asos:     asos render examples/asos_options.pov -o asos_options.png
 
 #version 3.7;
 

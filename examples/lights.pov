@@ -2,7 +2,7 @@
 // (an area light with one axis of zero length) and a spherical light
 // (`circular orient` with equal axes). POV-Ray 3.7 renders it too.
 //
-// With asos:     build/asos parse examples/lights.pov   (renderer: see README)
+// With asos:     asos render examples/lights.pov -o lights.png
 // With POV-Ray:  povray +W640 +H480 +A0.1 examples/lights.pov
 
 #version 3.7;

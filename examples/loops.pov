@@ -3,7 +3,7 @@
 // an object together with the pigment it already has. POV-Ray 3.7 renders it
 // too.
 //
-// With asos:     build/asos parse examples/loops.pov   (renderer: see README)
+// With asos:     asos render examples/loops.pov -o loops.png
 // With POV-Ray:  povray +W640 +H480 +A0.1 examples/loops.pov
 
 #version 3.7;

@@ -5,15 +5,16 @@
 //   [--light-method asos|grid] [--light-samples N] [--shadow-apex surface|behind]
 //   [--bit-depth 8|16|half|float] [--threads N]
 //   [--seed S] [--region x0,y0,x1,y1] [--clock C] [-D NAME=VALUE]... [-L DIR]...
+//   [--frames A-B [--subset C-D] [--clock-from F] [--clock-to T]]
 //   [--stats] [--stats-json FILE] [--aov samples=FILE] [--max-memory SIZE] [--quiet]
 // Parses the scene, renders it (asos/render/renderer.hpp) and writes the
 // image through OpenImageIO, by extension, never leaving a half-written file.
 // Every option and every output is checked before any work; the outputs are
-// put in place all together, only once all are written. Exit codes: 0, 1 a
-// bad scene, 2 a bad command line, 3 a file that cannot be read or written
-// (docs/cli.md has the details).
-#include <unistd.h>
-
+// put in place all together, only once all are written. An animation
+// (--frames) parses, renders and writes each frame in turn, and stops at the
+// first that fails, leaving those written. Exit codes: 0, 1 a bad scene, 2 a
+// bad command line, 3 a file that cannot be read or written (docs/cli.md has
+// the details).
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -31,9 +32,11 @@
 #include "asos/lang/interpreter.hpp"
 #include "asos/render/renderer.hpp"
 #include "asos/scene/asos_settings.hpp"
+#include "cli/animation.hpp"
 #include "cli/common/arguments.hpp"
 #include "cli/commands.hpp"
 #include "cli/interrupt_deferral.hpp"
+#include "cli/progress_report.hpp"
 
 namespace asos::cli {
 
@@ -61,6 +64,7 @@ struct RenderArgs {
     std::string seed = "0";
     std::optional<std::string> region;
     SceneInputs inputs;
+    AnimationArgs animation;
     bool stats = false;
     std::optional<std::string> statsJson;
     std::vector<std::string> aovs;
@@ -88,30 +92,135 @@ bool samePath(const std::string& a, const std::string& b) {
     return ec1 || ec2 ? a == b : ca == cb;
 }
 
-// A progress bar on stderr, redrawn at most ten times a second.
-class ProgressBar {
-public:
-    void update(const TileProgress& p) {
-        const auto now = std::chrono::steady_clock::now();
-        const bool done = p.tilesDone == p.tilesTotal;
-        if (!done && now - lastDraw_ < std::chrono::milliseconds(100)) return;
-        lastDraw_ = now;
-        const double fraction = p.pixelsTotal > 0 ? double(p.pixelsDone) / double(p.pixelsTotal) : 1.0;
-        const int filled = static_cast<int>(fraction * kWidth);
-        const double seconds = std::chrono::duration<double>(now - start_).count();
-        std::string bar(static_cast<std::size_t>(filled), '#');
-        bar.resize(kWidth, ' ');
-        std::fprintf(stderr, "\r[%s] %3d%%  %.1f s", bar.c_str(), static_cast<int>(fraction * 100.0),
-                     seconds);
-        if (done) std::fputc('\n', stderr);
-        std::fflush(stderr);
-    }
-
-private:
-    static constexpr int kWidth = 40;
-    std::chrono::steady_clock::time_point start_ = std::chrono::steady_clock::now();
-    std::chrono::steady_clock::time_point lastDraw_{};
+// The files one render writes: the image, and the samples AOV and the
+// statistics where asked for.
+struct Outputs {
+    std::string image;
+    std::optional<std::string> samplesAov;
+    std::optional<std::string> statsJson;
 };
+
+// What every frame shares, checked before the first.
+struct Job {
+    std::string scene;
+    RenderSettings settings;
+    SampleFormat sampleFormat = SampleFormat::Auto;
+    PixelRegion written;
+    bool stats = false;
+};
+
+// Parses the scene with `options`, renders it and writes `outputs`: one
+// still, or one frame of an animation. Returns the exit code.
+int renderOnce(const Job& job, const lang::InterpreterOptions& options, const Outputs& outputs,
+               ProgressReport& progress) {
+    // The scene.
+    Diagnostics diagnostics;
+    const auto parseStart = std::chrono::steady_clock::now();
+    std::optional<SceneDescription> scene = lang::interpretFile(job.scene, options, diagnostics);
+    const double parseSeconds =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - parseStart).count();
+    for (const Diagnostic& d : diagnostics.all()) std::cerr << formatDiagnostic(d);
+    if (!scene) return kExitBadScene;
+    diagnostics.clear();
+
+    // The render.
+    RenderSettings settings = job.settings;
+    if (progress.wanted()) settings.progress = [&progress](const TileProgress& p) { progress.update(p); };
+    std::optional<RenderOutput> out;
+    try {
+        out = render(*scene, settings, diagnostics);
+    } catch (const std::bad_alloc&) {
+        throw;  // runProgram's message
+    } catch (const std::exception& e) {
+        progress.interrupt();
+        fail(e.what());
+        return kExitBadScene;
+    }
+    progress.interrupt();
+    for (const Diagnostic& d : diagnostics.all()) std::cerr << formatDiagnostic(d);
+    if (!out) return kExitBadScene;
+    out->stats.times.parseSeconds = parseSeconds;
+
+    // The files: each written whole beside its target first; all put in
+    // place only when all are written, so a failed run leaves every old file
+    // as it was.
+    InterruptDeferral interrupts;
+    const PixelRegion& written = job.written;
+    const bool cropped = written != PixelRegion::whole(settings.width, settings.height);
+    std::vector<StagedFile> staged;
+    auto stage = [&](StagedResult r) {
+        if (r.file) staged.push_back(std::move(*r.file));
+        else fail(r.error);
+        return r.file.has_value();
+    };
+    WriteOptions writeOptions;
+    writeOptions.format = job.sampleFormat;
+    writeOptions.assumedGamma = scene->globals.assumedGamma;
+    if (!stage(stageImage(cropped ? out->color.cropped(written.x0, written.y0, written.x1, written.y1) : out->color,
+                          outputs.image, writeOptions)))
+        return kExitIoFailure;
+    if (outputs.samplesAov &&
+        !stage(stageSamplesAov(
+            cropped ? out->samples.cropped(written.x0, written.y0, written.x1, written.y1) : out->samples,
+            *outputs.samplesAov)))
+        return kExitIoFailure;
+    if (outputs.statsJson) {
+        const std::string json = statsToJson(out->stats);
+        const auto* bytes = reinterpret_cast<const unsigned char*>(json.data());
+        if (!stage(StagedFile::fromBytes(*outputs.statsJson, {bytes, json.size()}))) return kExitIoFailure;
+    }
+    if (interrupts.caught()) {
+        staged.clear();
+        fail("interrupted while writing: no file written");
+        interrupts.endByCaughtSignal();
+    }
+    for (std::size_t i = 0; i < staged.size(); ++i)
+        if (std::string e = staged[i].commit(); !e.empty()) {
+            std::string done;
+            for (std::size_t k = 0; k < i; ++k) done += (done.empty() ? "" : ", ") + staged[k].target().string();
+            fail(e + (done.empty() ? "" : " (already written: " + done + ")"));
+            return kExitIoFailure;
+        }
+    if (job.stats) std::cout << formatStatsTable(out->stats);
+    return kExitSuccess;
+}
+
+Outputs frameOutputs(const Outputs& patterns, const Animation& animation, int frame) {
+    auto name = [&](const std::optional<std::string>& p) {
+        return p ? std::optional(animation.fileName(*p, frame)) : std::nullopt;
+    };
+    return {animation.fileName(patterns.image, frame), name(patterns.samplesAov), name(patterns.statsJson)};
+}
+
+// The frames one after another, each parsed anew with its clock; the first
+// that fails ends the run, naming it and the frames already written.
+int renderFrames(const Job& job, const Animation& animation, const lang::InterpreterOptions& options,
+                 const Outputs& patterns, ProgressReport& progress) {
+    const int count = animation.frameCount();
+    for (int frame = animation.firstFrame(); frame <= animation.lastFrame(); ++frame) {
+        const int index = frame - animation.firstFrame() + 1;
+        const Outputs outputs = frameOutputs(patterns, animation, frame);
+        char clock[32];
+        std::snprintf(clock, sizeof clock, "%.6g", animation.clockAt(frame));
+        progress.start("frame " + std::to_string(frame) + " (" + std::to_string(index) + " of " +
+                       std::to_string(count) + ") ");
+        if (job.stats) std::cout << "Frame " << frame << " (clock " << clock << ")\n";
+        const int code = renderOnce(job, animation.frameOptions(options, frame), outputs, progress);
+        if (code != kExitSuccess) {
+            fail("frame " + std::to_string(frame) + " (clock " + clock + ") failed; " +
+                 (index == 1 ? std::string("no frame written")
+                             : "frames " + std::to_string(animation.firstFrame()) + "-" + std::to_string(frame - 1) +
+                                   " are written"));
+            return code;
+        }
+        char seconds[32];
+        std::snprintf(seconds, sizeof seconds, "%.2f", progress.seconds());
+        progress.frameWritten("Rendered frame " + std::to_string(frame) + " (" + std::to_string(index) + " of " +
+                              std::to_string(count) + ", clock " + clock + ") to " + outputs.image + " in " +
+                              seconds + " s");
+    }
+    return kExitSuccess;
+}
 
 int runRender(const RenderArgs& args) {
     // Options first: nothing is parsed or rendered before they all make sense.
@@ -196,30 +305,47 @@ int runRender(const RenderArgs& args) {
         else if (*args.bitDepth == "float") sampleFormat = SampleFormat::Float;
         else problems.push_back("--bit-depth must be 8, 16, half or float, not '" + *args.bitDepth + "'");
     }
+    // The animation: its frames, and the names its outputs take for each.
+    Animation::Parse animation = Animation::parse(args.animation);
+    problems.insert(problems.end(), animation.problems.begin(), animation.problems.end());
+    if (args.animation.frames && args.inputs.clock)
+        problems.push_back("--clock and --frames together: --frames gives each frame its clock "
+                           "(--clock-from, --clock-to)");
     // The outputs: each folder takes files, each format has a writer that
-    // can hold the samples of an image of this size.
+    // can hold the samples of an image of this size. An animation's are
+    // checked by its first frame's names.
+    Outputs patterns{args.output, std::nullopt, args.statsJson};
+    for (const std::string& aov : args.aovs) {
+        const auto eq = aov.find('=');
+        if (eq == std::string::npos || aov.substr(0, eq) != "samples" || eq + 1 == aov.size())
+            problems.push_back("--aov wants samples=FILE, not '" + aov + "'");
+        else
+            patterns.samplesAov = aov.substr(eq + 1);
+    }
+    Outputs first = patterns;
+    if (animation.animation) {
+        const Animation& a = *animation.animation;
+        for (const auto& [option, pattern] : {std::pair{"-o", std::optional(patterns.image)},
+                                              std::pair{"--aov", patterns.samplesAov},
+                                              std::pair{"--stats-json", patterns.statsJson}})
+            if (pattern)
+                if (std::string e = frameNameProblem(option, *pattern, a); !e.empty()) problems.push_back(e);
+        first = frameOutputs(patterns, a, a.firstFrame());
+    }
     const PixelRegion written = settings.region.value_or(
         PixelRegion::whole(std::max(settings.width, 1), std::max(settings.height, 1)));
     const int writtenWidth = written.x1 - written.x0, writtenHeight = written.y1 - written.y0;
-    if (IoStatus s = checkOutputPath(args.output, sampleFormat, writtenWidth, writtenHeight); !s.ok())
+    if (IoStatus s = checkOutputPath(first.image, sampleFormat, writtenWidth, writtenHeight); !s.ok())
         problems.push_back("-o: " + s.error);
-    std::optional<std::string> samplesAov;
-    for (const std::string& aov : args.aovs) {
-        const auto eq = aov.find('=');
-        if (eq == std::string::npos || aov.substr(0, eq) != "samples" || eq + 1 == aov.size()) {
-            problems.push_back("--aov wants samples=FILE, not '" + aov + "'");
-            continue;
-        }
-        samplesAov = aov.substr(eq + 1);
-        if (IoStatus s = checkOutputPath(*samplesAov, SampleFormat::Auto, writtenWidth, writtenHeight); !s.ok())
+    if (first.samplesAov)
+        if (IoStatus s = checkOutputPath(*first.samplesAov, SampleFormat::Auto, writtenWidth, writtenHeight); !s.ok())
             problems.push_back("--aov: " + s.error);
-    }
-    if (args.statsJson)
-        if (std::string e = checkWritable(*args.statsJson); !e.empty()) problems.push_back("--stats-json: " + e);
+    if (first.statsJson)
+        if (std::string e = checkWritable(*first.statsJson); !e.empty()) problems.push_back("--stats-json: " + e);
     {
-        std::vector<std::string> outputs{args.output};
-        if (samplesAov) outputs.push_back(*samplesAov);
-        if (args.statsJson) outputs.push_back(*args.statsJson);
+        std::vector<std::string> outputs{first.image};
+        if (first.samplesAov) outputs.push_back(*first.samplesAov);
+        if (first.statsJson) outputs.push_back(*first.statsJson);
         for (std::size_t i = 0; i < outputs.size(); ++i)
             for (std::size_t k = i + 1; k < outputs.size(); ++k)
                 if (samePath(outputs[i], outputs[k]))
@@ -240,74 +366,11 @@ int runRender(const RenderArgs& args) {
         return kExitIoFailure;
     }
 
-    // The scene.
-    Diagnostics diagnostics;
-    const auto parseStart = std::chrono::steady_clock::now();
-    std::optional<SceneDescription> scene = lang::interpretFile(args.scene, options, diagnostics);
-    const double parseSeconds =
-        std::chrono::duration<double>(std::chrono::steady_clock::now() - parseStart).count();
-    for (const Diagnostic& d : diagnostics.all()) std::cerr << formatDiagnostic(d);
-    if (!scene) return kExitBadScene;
-    diagnostics.clear();
-
-    // The render.
-    ProgressBar bar;
-    if (!args.quiet && isatty(STDERR_FILENO))
-        settings.progress = [&bar](const TileProgress& p) { bar.update(p); };
-    std::optional<RenderOutput> out;
-    try {
-        out = render(*scene, settings, diagnostics);
-    } catch (const std::bad_alloc&) {
-        throw;  // runProgram's message
-    } catch (const std::exception& e) {
-        fail(e.what());
-        return kExitBadScene;
-    }
-    for (const Diagnostic& d : diagnostics.all()) std::cerr << formatDiagnostic(d);
-    if (!out) return kExitBadScene;
-    out->stats.times.parseSeconds = parseSeconds;
-
-    // The files: each written whole beside its target first; all put in
-    // place only when all are written, so a failed run leaves every old file
-    // as it was.
-    InterruptDeferral interrupts;
-    const bool cropped = written != PixelRegion::whole(settings.width, settings.height);
-    std::vector<StagedFile> staged;
-    auto stage = [&](StagedResult r) {
-        if (r.file) staged.push_back(std::move(*r.file));
-        else fail(r.error);
-        return r.file.has_value();
-    };
-    WriteOptions writeOptions;
-    writeOptions.format = sampleFormat;
-    writeOptions.assumedGamma = scene->globals.assumedGamma;
-    if (!stage(stageImage(cropped ? out->color.cropped(written.x0, written.y0, written.x1, written.y1) : out->color,
-                          args.output, writeOptions)))
-        return kExitIoFailure;
-    if (samplesAov &&
-        !stage(stageSamplesAov(
-            cropped ? out->samples.cropped(written.x0, written.y0, written.x1, written.y1) : out->samples,
-            *samplesAov)))
-        return kExitIoFailure;
-    if (args.statsJson) {
-        const std::string json = statsToJson(out->stats);
-        const auto* bytes = reinterpret_cast<const unsigned char*>(json.data());
-        if (!stage(StagedFile::fromBytes(*args.statsJson, {bytes, json.size()}))) return kExitIoFailure;
-    }
-    if (interrupts.caught()) {
-        staged.clear();
-        fail("interrupted while writing: no file written");
-        interrupts.endByCaughtSignal();
-    }
-    for (std::size_t i = 0; i < staged.size(); ++i)
-        if (std::string e = staged[i].commit(); !e.empty()) {
-            std::string done;
-            for (std::size_t k = 0; k < i; ++k) done += (done.empty() ? "" : ", ") + staged[k].target().string();
-            fail(e + (done.empty() ? "" : " (already written: " + done + ")"));
-            return kExitIoFailure;
-        }
-    if (args.stats) std::cout << formatStatsTable(out->stats);
-    return kExitSuccess;
+    const Job job{args.scene, settings, sampleFormat, written, args.stats};
+    ProgressReport progress(ProgressReport::modeForStderr(args.quiet), animation.animation.has_value());
+    if (animation.animation) return renderFrames(job, *animation.animation, options, patterns, progress);
+    progress.start({});
+    return renderOnce(job, options, patterns, progress);
 }
 
 }  // namespace
@@ -357,6 +420,16 @@ void addRenderCommand(CLI::App& app, CommandResult& result) {
     cmd->add_option("--region", args->region,
                     "x0,y0,x1,y1: render columns x0..x1-1 and rows y0..y1-1 only, and write that part");
     cmd->add_option("--clock", args->inputs.clock, "Value of `clock` (and `clock_on` 1)");
+    cmd->add_option("--frames", args->animation.frames,
+                    "A-B: render frames A to B, an animation (POV-Ray's +KFI A +KFF B); the outputs' "
+                    "run of '#' takes the frame number");
+    cmd->add_option("--subset", args->animation.subset,
+                    "C-D or N: render only these frames of --frames, with the whole range's clock "
+                    "(POV-Ray's +SF/+EF)");
+    cmd->add_option("--clock-from", args->animation.clockFrom,
+                    "The clock of the first frame of --frames (default 0, POV-Ray's +KI)");
+    cmd->add_option("--clock-to", args->animation.clockTo,
+                    "The clock of the last frame of --frames (default 1, POV-Ray's +KF)");
     cmd->add_option("-D,--define", args->inputs.defines,
                     "NAME=VALUE declared before the scene runs: a number, a vector or a quoted string");
     cmd->add_option("-L,--library-path", args->inputs.includePaths,
@@ -365,7 +438,8 @@ void addRenderCommand(CLI::App& app, CommandResult& result) {
     cmd->add_option("--stats-json", args->statsJson, "Write the render statistics as JSON");
     cmd->add_option("--aov", args->aovs,
                     "samples=FILE: rays per pixel and deepest level (.exr channels, else a heat map)");
-    cmd->add_flag("--quiet", args->quiet, "No progress bar");
+    cmd->add_flag("--quiet", args->quiet,
+                  "No progress (a bar on a terminal, else a line per tenth of a still or per frame)");
     cmd->callback([args, &result] { result.exitCode = runRender(*args); });
 }
 

@@ -400,10 +400,12 @@ Value Interpreter::eval(const Node& n) {
                 fail(n, "the clock must be a finite number, not " + formatNumber(options_.clock));
             return Num::scalar(options_.clock);
         case Word::ClockOn: return Num::scalar(options_.clockOn ? 1.0 : 0.0);
-        // No animation: POV-Ray's values for a single frame.
-        case Word::ClockDelta: case Word::FrameNumber: case Word::InitialFrame: case Word::FinalFrame:
-        case Word::InitialClock: case Word::FinalClock:
-            return Num::scalar(0.0);
+        case Word::ClockDelta: return Num::scalar(options_.clockDelta);
+        case Word::FrameNumber: return Num::scalar(options_.frameNumber);
+        case Word::InitialFrame: return Num::scalar(options_.initialFrame);
+        case Word::FinalFrame: return Num::scalar(options_.finalFrame);
+        case Word::InitialClock: return Num::scalar(options_.initialClock);
+        case Word::FinalClock: return Num::scalar(options_.finalClock);
         case Word::Version: return Num::scalar(versionHundredths_ / 100.0);
         case Word::True: case Word::On: case Word::Yes: return Num::scalar(1.0);
         case Word::False: case Word::Off: case Word::No: return Num::scalar(0.0);

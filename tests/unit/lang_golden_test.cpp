@@ -50,6 +50,8 @@ std::vector<fs::path> scenesIn(const fs::path& dir) {
 
 std::vector<fs::path> parseScenes() {
     auto files = scenesIn(kSource / "examples");
+    auto bench = scenesIn(kSource / "examples" / "bench");
+    files.insert(files.end(), bench.begin(), bench.end());
     auto focused = scenesIn(kSource / "tests" / "golden" / "parse");
     files.insert(files.end(), focused.begin(), focused.end());
     return files;
@@ -97,10 +99,11 @@ TEST_CASE("golden dumps of the examples and the focused scenes", "[lang][golden]
         INFO(formatAll(diagnostics));
         CHECK(scene);
         if (!scene) continue;
+        // An example's dump lies in tests/golden/ at the example's own path.
         fs::path golden = file;
         golden.replace_extension(".dump");
-        if (file.parent_path().filename() == "examples")
-            golden = kSource / "tests" / "golden" / "examples" / golden.filename();
+        const fs::path fromSource = fs::relative(golden, kSource);
+        if (*fromSource.begin() == "examples") golden = kSource / "tests" / "golden" / fromSource;
         compareGolden(golden, relative(dumpScene(*scene)));
     }
 }

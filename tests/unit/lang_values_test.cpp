@@ -84,6 +84,27 @@ TEST_CASE("the clock's values when not animating", "[lang][clock]") {
     CHECK(std::get<SphereShape>(ok(r).objects[0].shape).center == Vec3(1, 0.5, 0));
 }
 
+TEST_CASE("the clock's values of an animation's frame", "[lang][clock]") {
+    // povray +KFI1 +KFF3 +KI2 +KF3, its second frame: each word reads its own option.
+    InterpreterOptions frame;
+    frame.clock = 2.5;
+    frame.clockOn = true;
+    frame.frameNumber = 2;
+    frame.initialFrame = 1;
+    frame.finalFrame = 3;
+    frame.initialClock = 2;
+    frame.finalClock = 3;
+    frame.clockDelta = 0.5;
+    Run r = run("sphere { <frame_number, initial_frame, final_frame>, clock }\n"
+                "sphere { <initial_clock, final_clock, clock_delta>, clock_on }\n", frame);
+    const auto& scene = ok(r);
+    REQUIRE(scene.objects.size() == 2);
+    CHECK(std::get<SphereShape>(scene.objects[0].shape).center == Vec3(2, 1, 3));
+    CHECK(std::get<SphereShape>(scene.objects[0].shape).radius == 2.5);
+    CHECK(std::get<SphereShape>(scene.objects[1].shape).center == Vec3(2, 3, 0.5));
+    CHECK(std::get<SphereShape>(scene.objects[1].shape).radius == 1);
+}
+
 TEST_CASE("#default changes what textures start from", "[lang][default]") {
     Run r = run("sphere { 0, 1 }\n"
                 "#default { finish { phong 0.5 } }\n"

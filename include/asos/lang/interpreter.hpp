@@ -29,6 +29,12 @@ struct InterpreterOptions {
     std::vector<Define> defines;                      // -D, declared before the scene runs
     double clock = 0.0;                               // the value of `clock`
     bool clockOn = false;                             // `clock_on`: the clock was given
+    // An animation's frame (`asos render --frames`), POV-Ray's values; all 0
+    // for a still, as POV-Ray gives them without +KFI/+KFF.
+    int frameNumber = 0;                              // `frame_number`
+    int initialFrame = 0, finalFrame = 0;             // `initial_frame`, `final_frame`
+    double initialClock = 0.0, finalClock = 0.0;      // `initial_clock`, `final_clock`
+    double clockDelta = 0.0;                          // `clock_delta`: the clock's step from frame to frame
     int imageWidth = 320;                             // `image_width` (POV-Ray's default size)
     int imageHeight = 240;                            // `image_height`
     std::size_t maxErrors = 100;                      // then stop: one mistake in a loop repeats
