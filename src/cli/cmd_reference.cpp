@@ -46,16 +46,8 @@ int runReference(const ReferenceArgs& args) {
     CheckedSceneInputs inputs = checkSceneInputs(args.inputs, "asos reference");
     inputs.options.imageWidth = s.width;
     inputs.options.imageHeight = s.height;
-    if (!problems.empty() || !inputs.problems.empty()) {
-        for (const std::string& p : problems) fail(p);
-        for (const std::string& p : inputs.problems) std::cerr << p;
-        std::cerr << kUsageHint << '\n';
-        return kExitBadCommandLine;
-    }
-    if (std::string e = unreadableScene(args.scene); !e.empty()) {
-        fail(e);
-        return kExitIoFailure;
-    }
+    if (const int code = reportBeforeScene("asos reference", problems, inputs, args.scene); code != kExitSuccess)
+        return code;
     std::ostringstream text;
     text << std::ifstream(args.scene, std::ios::binary).rdbuf();
 
