@@ -25,6 +25,9 @@ void addRenderBenchmark(CLI::App& app, CommandResult& result);
 // `asos-bench lights`: area light shadows, ASOS against the grid (bench_lights.cpp).
 void addLightsBenchmark(CLI::App& app, CommandResult& result);
 
+// `asos-bench accuracy`: every method's error against time, charted (bench_accuracy.cpp).
+void addAccuracyBenchmark(CLI::App& app, CommandResult& result);
+
 // An example scene, `relative` to the examples folder, for a benchmark's
 // default: the installed share/asos/examples beside the program when there is
 // one, else the source tree's examples/ (example_scene.cpp).

@@ -12,6 +12,7 @@ int main(int argc, char** argv) {
     addIntersectBenchmark(app, result);
     addRenderBenchmark(app, result);
     addLightsBenchmark(app, result);
+    addAccuracyBenchmark(app, result);
 
     return asos::cli::runProgram(app, argc, argv, result);
 }

@@ -6,14 +6,15 @@
 #   ASOS_SETUP_ONLY_PACKAGES=1  install the packages, build nothing
 # POV-Ray comes too: its include files are what `#include "colors.inc"` finds,
 # the tests compare with it, and its example scenes are the corpus test's.
-# GNU parallel runs docs/manual/farm.md's recipe in the farm test.
+# GNU parallel runs docs/manual/farm.md's recipe in the farm test; gnuplot
+# draws `asos-bench accuracy`'s charts (docs/performance.md).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
 packages=(build-essential cmake ninja-build pkg-config
           tao-pegtl-dev libglm-dev libopenimageio-dev openimageio-tools
           catch2 libtbb-dev libcli11-dev povray povray-includes povray-examples
-          parallel
+          parallel gnuplot-nox
           ${ASOS_EXTRA_PACKAGES:-})
 missing=()
 for p in "${packages[@]}"; do

@@ -27,15 +27,8 @@ struct ParseArgs {
 
 int runParse(const ParseArgs& args) {
     CheckedSceneInputs checked = checkSceneInputs(args.inputs, "asos parse");
-    if (!checked.problems.empty()) {
-        for (const std::string& p : checked.problems) std::cerr << p;
-        std::cerr << kUsageHint << '\n';
-        return kExitBadCommandLine;
-    }
-    if (std::string e = unreadableScene(args.scene); !e.empty()) {
-        std::cerr << "asos parse: error: " << e << '\n';
-        return kExitIoFailure;
-    }
+    if (const int code = reportBeforeScene("asos parse", {}, checked, args.scene); code != kExitSuccess)
+        return code;
     const lang::InterpreterOptions& options = checked.options;
 
     Diagnostics diagnostics;

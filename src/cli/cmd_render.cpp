@@ -355,16 +355,8 @@ int runRender(const RenderArgs& args) {
     lang::InterpreterOptions& options = inputs.options;
     options.imageWidth = settings.width;
     options.imageHeight = settings.height;
-    if (!problems.empty() || !inputs.problems.empty()) {
-        for (const std::string& p : problems) fail(p);
-        for (const std::string& p : inputs.problems) std::cerr << p;
-        std::cerr << kUsageHint << '\n';
-        return kExitBadCommandLine;
-    }
-    if (std::string e = unreadableScene(args.scene); !e.empty()) {
-        fail(e);
-        return kExitIoFailure;
-    }
+    if (const int code = reportBeforeScene("asos render", problems, inputs, args.scene); code != kExitSuccess)
+        return code;
 
     const Job job{args.scene, settings, sampleFormat, written, args.stats};
     ProgressReport progress(ProgressReport::modeForStderr(args.quiet), animation.animation.has_value());

@@ -11,4 +11,7 @@ void addRenderCommand(CLI::App& app, CommandResult& result);
 // `asos parse SCENE`: prints the canonical dump of the scene description.
 void addParseCommand(CLI::App& app, CommandResult& result);
 
+// `asos reference SCENE -o REF.exr`: a brute-force reference image, cached (cmd_reference.cpp).
+void addReferenceCommand(CLI::App& app, CommandResult& result);
+
 }  // namespace asos::cli

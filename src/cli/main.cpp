@@ -14,6 +14,7 @@ int main(int argc, char** argv) {
     // Subcommands register here, one line each.
     addParseCommand(app, result);
     addRenderCommand(app, result);
+    addReferenceCommand(app, result);
 
     return runProgram(app, argc, argv, result);
 }

@@ -24,6 +24,21 @@ int runProgram(CLI::App& app, int argc, char** argv, const CommandResult& result
     return result.exitCode;
 }
 
+int reportBeforeScene(const std::string& command, const std::vector<std::string>& problems,
+                      const CheckedSceneInputs& inputs, const std::string& scene) {
+    if (!problems.empty() || !inputs.problems.empty()) {
+        for (const std::string& p : problems) std::cerr << command << ": error: " << p << '\n';
+        for (const std::string& p : inputs.problems) std::cerr << p;
+        std::cerr << kUsageHint << '\n';
+        return kExitBadCommandLine;
+    }
+    if (std::string e = unreadableScene(scene); !e.empty()) {
+        std::cerr << command << ": error: " << e << '\n';
+        return kExitIoFailure;
+    }
+    return kExitSuccess;
+}
+
 void addLimitOptions(CLI::App& cmd, SceneInputs& inputs) {
     lang::InterpreterOptions& limits = inputs.limits;
     cmd.add_option("--max-objects", limits.maxObjects, "Most shapes and lights a scene may make (default 50000000)")

@@ -32,6 +32,13 @@ struct CommandResult {
 // kExitBadScene; else the command's code.
 int runProgram(CLI::App& app, int argc, char** argv, const CommandResult& result);
 
+// What a command checks before it reads its scene, reported: each of
+// `problems` as "COMMAND: error: ...", then the scene inputs' problems, and
+// the usage hint (kExitBadCommandLine); else a scene file that cannot be read
+// (kExitIoFailure). kExitSuccess when there is nothing to report.
+int reportBeforeScene(const std::string& command, const std::vector<std::string>& problems,
+                      const CheckedSceneInputs& inputs, const std::string& scene);
+
 // --max-objects, --max-string-length, --max-array-elements and --max-memory:
 // the limits of what a scene (and a render) may ask for, set in `inputs`.
 void addLimitOptions(CLI::App& cmd, SceneInputs& inputs);
