@@ -196,6 +196,7 @@ template <> inline constexpr auto rejection_message<unsupported_directive> = "'#
 template <> inline constexpr auto rejection_message<unknown_directive> = "unknown directive '#{}'";
 template <> inline constexpr auto rejection_message<cylinder_light> = "'cylinder' lights are not supported by asos";
 template <> inline constexpr auto rejection_message<cylinder_camera> = "the 'cylinder' camera is not supported by asos";
+template <> inline constexpr auto rejection_message<camera_normal> = "'normal' in a camera is not supported by asos";
 template <> inline constexpr auto rejection_message<texture_pattern> = "texture patterns ('{}' of textures) are not supported by asos; use {} in the pigment";
 template <> inline constexpr auto rejection_message<pigment_normal_pattern> = "'{}' is not supported by asos as a pigment's pattern (only in a normal)";
 template <> inline constexpr auto rejection_message<normal_block_pattern> = "'{}' in a normal (a pattern of normals) is not supported by asos";

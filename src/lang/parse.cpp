@@ -301,6 +301,7 @@ template <> struct action<g::unsupported_item> : Reject<g::unsupported_item> {};
 template <> struct action<g::unsupported_in_expression> : Reject<g::unsupported_in_expression> {};
 template <> struct action<g::cylinder_light> : Reject<g::cylinder_light> {};
 template <> struct action<g::cylinder_camera> : Reject<g::cylinder_camera> {};
+template <> struct action<g::camera_normal> : Reject<g::camera_normal> {};
 template <> struct action<g::texture_pattern> : Reject<g::texture_pattern> {};
 template <> struct action<g::reflection_block> : Reject<g::reflection_block> {};
 template <> struct action<g::normal_block_pattern> : Reject<g::normal_block_pattern> {};
