@@ -16,6 +16,7 @@ struct light_source_block;
 struct camera_block;
 struct pigment_block;
 struct finish_block;
+struct normal_block;
 struct texture_block;
 struct colour_map_block;
 struct block_open;
@@ -100,7 +101,7 @@ struct declare_semicolon : semicolon {};
 struct texture_layers_open : success {};
 struct layered_texture : seq<at<TAO_PEGTL_KEYWORD("texture")>, texture_layers_open, plus<texture_block>> {};
 struct declarable_block : sor<object_statement, light_source_block, camera_block, pigment_block,
-                              finish_block, texture_block, colour_map_block> {};
+                              normal_block, finish_block, texture_block, colour_map_block> {};
 // POV-Ray wants the ';' after a float, vector or colour, not after a string,
 // a block, an array or a macro's value (which may be a block). A string is told
 // by how it starts: a literal or a function whose value is a string.
@@ -236,11 +237,11 @@ struct switch_directive
 // #break: leaves the innermost #switch, #while, #for or macro.
 struct break_directive : seq<hash, kw_break> {};
 
-// #default { texture {…} | pigment {…} | finish {…} }; at the top of a scene
-// POV-Ray also takes it without the '#'.
+// #default { texture {…} | pigment {…} | normal {…} | finish {…} }; at the top
+// of a scene POV-Ray also takes it without the '#'.
 struct default_start : seq<hash, kw_default> {};
 struct bare_default_start : kw_default {};
-struct default_entry : sor<texture_block, pigment_block, finish_block, unsupported_item> {};
+struct default_entry : sor<texture_block, pigment_block, normal_block, finish_block, unsupported_item> {};
 struct default_end : rbrace {};
 struct default_directive : if_must<default_start, block_open, entries<default_entry>, default_end> {};
 struct bare_default : if_must<bare_default_start, block_open, entries<default_entry>, default_end> {};

@@ -35,11 +35,12 @@ ASOS_BODY_CONTEXT(union_entry, Union, "expected an object, a light_source or an 
 ASOS_BODY_CONTEXT(light_entry, Light, "expected a light_source item, as the macro is called in a light_source")
 ASOS_BODY_CONTEXT(camera_entry, Camera, "expected a camera item, as the macro is called in a camera")
 ASOS_BODY_CONTEXT(pigment_entry, Pigment, "expected a colour, a pattern, a transform or a pattern modifier, as the macro is called in a pigment")
+ASOS_BODY_CONTEXT(normal_entry, Normal, "expected a normal pattern, a transform or a pattern modifier, as the macro is called in a normal")
 ASOS_BODY_CONTEXT(finish_entry, Finish, "expected a finish item, as the macro is called in a finish")
-ASOS_BODY_CONTEXT(texture_entry, Texture, "expected pigment, finish or a transform, as the macro is called in a texture")
+ASOS_BODY_CONTEXT(texture_entry, Texture, "expected pigment, normal, finish or a transform, as the macro is called in a texture")
 ASOS_BODY_CONTEXT(global_entry, GlobalSettings, "expected a global setting, as the macro is called in global_settings")
 ASOS_BODY_CONTEXT(asos_entry, Asos, "expected eps, max, jitter or highlights, as the macro is called in an asos block")
-ASOS_BODY_CONTEXT(default_entry, Default, "expected texture, pigment or finish, as the macro is called in #default")
+ASOS_BODY_CONTEXT(default_entry, Default, "expected texture, pigment, normal or finish, as the macro is called in #default")
 // clang-format on
 #undef ASOS_BODY_CONTEXT
 
@@ -99,7 +100,7 @@ template <> inline constexpr auto error_message<for_comma> = "expected ','";
 template <> inline constexpr auto error_message<for_value> = "expected an expression";
 template <> inline constexpr auto error_message<declared_target> = "expected an identifier to declare";
 template <> inline constexpr auto error_message<declare_equals> = "expected '='";
-template <> inline constexpr auto error_message<declared_value> = "expected a value to declare: an expression, an object, a light_source, a camera, a pigment, a finish, a texture or an array";
+template <> inline constexpr auto error_message<declared_value> = "expected a value to declare: an expression, an object, a light_source, a camera, a pigment, a normal, a finish, a texture or an array";
 template <> inline constexpr auto error_message<declare_semicolon> = "expected ';' after the declared value";
 template <> inline constexpr auto error_message<undefined_name> = "expected an identifier";
 template <> inline constexpr auto error_message<included_file> = "expected the name of the file to include";
@@ -121,7 +122,7 @@ template <> inline constexpr auto error_message<macro_end> = "expected #end to c
 template <> inline constexpr auto error_message<range_condition> = "expected '(', the low and the high end of the range, and ')'";
 template <> inline constexpr auto error_message<range_comma> = "expected ',' between the ends of the range";
 template <> inline constexpr auto error_message<switch_end> = "expected #case, #range, #else or #end in the #switch";
-template <> inline constexpr auto error_message<default_end> = "expected texture, pigment, finish or '}' in #default";
+template <> inline constexpr auto error_message<default_end> = "expected texture, pigment, normal, finish or '}' in #default";
 template <typename Entry> inline constexpr const char* error_message<switch_first_clause<Entry>> = "expected #case or #range after #switch";
 template <> inline constexpr auto error_message<message_value> = "expected a message";
 // modifiers
@@ -143,8 +144,9 @@ template <> inline constexpr auto error_message<map_entry_colour> = "expected th
 template <> inline constexpr auto error_message<map_entry_close> = "expected ']' to close the colour map entry";
 template <> inline constexpr auto error_message<colour_map_end> = "expected an entry '[value colour]' or '}' in the colour map";
 template <> inline constexpr auto error_message<reflection_value> = "expected a colour or a float after reflection";
-template <> inline constexpr auto error_message<finish_end> = "expected a finish item (ambient, diffuse, brilliance, phong, phong_size, specular, roughness, reflection) or '}'";
-template <> inline constexpr auto error_message<texture_end> = "expected pigment, finish, a transform or '}' in the texture";
+template <> inline constexpr auto error_message<normal_end> = "expected a normal pattern (bumps, dents, wrinkles, ripples, waves, or gradient, radial, onion, marble, wood, leopard, bozo, spotted, granite, agate), bump_size, accuracy, a transform, a pattern modifier or '}' in the normal";
+template <> inline constexpr auto error_message<finish_end> = "expected a finish item (ambient, diffuse, brilliance, phong, phong_size, specular, roughness, crand, reflection) or '}'";
+template <> inline constexpr auto error_message<texture_end> = "expected pigment, normal, finish, a transform or '}' in the texture";
 // objects
 template <> inline constexpr auto error_message<object_end> = "expected an object modifier or '}'";
 template <> inline constexpr auto error_message<sphere_center> = "expected the center of the sphere";
@@ -194,7 +196,10 @@ template <> inline constexpr auto rejection_message<unsupported_directive> = "'#
 template <> inline constexpr auto rejection_message<unknown_directive> = "unknown directive '#{}'";
 template <> inline constexpr auto rejection_message<cylinder_light> = "'cylinder' lights are not supported by asos";
 template <> inline constexpr auto rejection_message<cylinder_camera> = "the 'cylinder' camera is not supported by asos";
+template <> inline constexpr auto rejection_message<camera_normal> = "'normal' in a camera is not supported by asos";
 template <> inline constexpr auto rejection_message<texture_pattern> = "texture patterns ('{}' of textures) are not supported by asos; use {} in the pigment";
+template <> inline constexpr auto rejection_message<pigment_normal_pattern> = "'{}' is not supported by asos as a pigment's pattern (only in a normal)";
+template <> inline constexpr auto rejection_message<normal_block_pattern> = "'{}' in a normal (a pattern of normals) is not supported by asos";
 template <> inline constexpr auto rejection_message<reflection_block> = "'reflection { … }' is not supported by asos; write reflection followed by a colour or a float";
 template <> inline constexpr auto rejection_message<pattern_of_blocks<kw_checker>> = "'checker' of pigments or textures is not supported by asos; give checker two colours";
 template <> inline constexpr auto rejection_message<pattern_of_blocks<kw_brick>> = "'brick' of pigments or textures is not supported by asos; give brick two colours";

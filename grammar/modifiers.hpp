@@ -99,10 +99,36 @@ struct map_modifier
     : sor<turbulence_item, octaves_item, omega_item, lambda_item, frequency_item, phase_item, agate_turb_item,
           noise_generator_item, ramp_wave_item, triangle_wave_item, sine_wave_item, colour_map_block> {};
 struct pigment_colour : seq<colour_in_place> {};  // a colour, or a declared pigment
+// The normal patterns as a pigment's value: not ours.
+struct pigment_normal_pattern : sor<kw_bumps, kw_dents, kw_wrinkles, kw_ripples, kw_waves> {};
 struct pigment_entry : sor<checker_item, brick_item, map_pattern_item, transform_item, brick_size_item, mortar_item,
-                           map_modifier, pigment_colour, unsupported_item> {};
+                           map_modifier, pigment_normal_pattern, pigment_colour, unsupported_item> {};
 struct pigment_end : rbrace {};
 struct pigment_block : if_must<kw_pigment, block_open, entries<pigment_entry>, pigment_end> {};
+
+// --- normal { Name  pattern [bump size]  bump_size F  accuracy F  modifiers } -------
+// The five normal-only patterns, or a map pattern tilting the normal by its
+// slope. The bump size written right after the pattern (`bumps 0.4`,
+// `granite, -0.1`) is read where a number plainly follows (a digit, a sign,
+// a point, a parenthesis or a name), as POV-Ray's optional float there.
+struct bumps_item : kw_bumps {};
+struct dents_item : kw_dents {};
+struct wrinkles_item : kw_wrinkles {};
+struct ripples_item : kw_ripples {};
+struct waves_item : kw_waves {};
+struct bump_amount_value : seq<expression> {};
+struct bump_amount : seq<opt<comma>, at<sor<ascii::digit, one<'.', '-', '+', '('>, name>>, bump_amount_value> {};
+struct normal_pattern_item
+    : seq<sor<bumps_item, dents_item, wrinkles_item, ripples_item, waves_item, map_pattern_item>, opt<bump_amount>> {};
+// checker and brick tilt the normal with normals of their own: not ours.
+struct normal_block_pattern : sor<kw_checker, kw_brick> {};
+struct bump_size_item : if_must<kw_bump_size, float_value> {};
+struct accuracy_item : if_must<kw_accuracy, float_value> {};
+struct normal_name : indexed_name {};  // a declared normal
+struct normal_entry : sor<normal_pattern_item, normal_block_pattern, transform_item, bump_size_item, accuracy_item,
+                          map_modifier, normal_name, unsupported_item> {};
+struct normal_end : rbrace {};
+struct normal_block : if_must<kw_normal, block_open, entries<normal_entry>, normal_end> {};
 
 // --- finish { Name  ambient C  diffuse F  … } ---------------------------------------
 // `reflection { … }` (POV-Ray's block form) is not ours; `reflection C` is.
@@ -115,11 +141,12 @@ struct phong_item : if_must<kw_phong, float_value> {};
 struct phong_size_item : if_must<kw_phong_size, float_value> {};
 struct specular_item : if_must<kw_specular, float_value> {};
 struct roughness_item : if_must<kw_roughness, float_value> {};
+struct crand_item : if_must<kw_crand, float_value> {};
 struct reflection_item : if_must<kw_reflection, reflection_value> {};
 struct finish_name : indexed_name {};  // a declared finish
 struct finish_entry
     : sor<ambient_item, diffuse_item, brilliance_item, phong_item, phong_size_item, specular_item,
-          roughness_item, reflection_item, finish_name, unsupported_item> {};
+          roughness_item, crand_item, reflection_item, finish_name, unsupported_item> {};
 struct finish_end : rbrace {};
 struct finish_block : if_must<kw_finish, block_open, entries<finish_entry>, finish_end> {};
 
@@ -129,7 +156,7 @@ struct texture_pattern : sor<kw_checker, kw_brick, kw_gradient, kw_radial, kw_on
                              kw_bozo, kw_spotted, kw_granite, kw_agate> {};
 struct texture_name : indexed_name {};  // a declared texture
 struct texture_entry
-    : sor<pigment_block, finish_block, transform_item, texture_pattern, texture_name, unsupported_item> {};
+    : sor<pigment_block, normal_block, finish_block, transform_item, texture_pattern, texture_name, unsupported_item> {};
 struct texture_end : rbrace {};
 struct texture_block : if_must<kw_texture, block_open, entries<texture_entry>, texture_end> {};
 
@@ -142,7 +169,7 @@ struct hollow_start : success {};
 struct hollow_value : seq<at<sor<constant, ascii::digit, one<'(', '!'>>>, expression> {};
 struct hollow_item : seq<kw_hollow, hollow_start, opt<hollow_value>> {};
 struct inverse_item : kw_inverse {};
-struct object_modifier : sor<pigment_block, finish_block, texture_block, transform_item, no_shadow_item,
+struct object_modifier : sor<pigment_block, normal_block, finish_block, texture_block, transform_item, no_shadow_item,
                              open_item, hollow_item, inverse_item, asos_block, unsupported_item> {};
 
 }  // namespace asos::grammar

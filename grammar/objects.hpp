@@ -128,10 +128,11 @@ struct up_item : if_must<kw_up, vector_value> {};
 struct direction_item : if_must<kw_direction, vector_value> {};
 struct sky_item : if_must<kw_sky, vector_value> {};
 struct cylinder_camera : kw_cylinder {};  // POV-Ray's cylindrical projection: not ours
+struct camera_normal : kw_normal {};      // POV-Ray's perturbed camera rays: not ours
 struct camera_name : indexed_name {};  // a declared camera
 struct camera_entry
     : sor<perspective_item, orthographic_item, location_item, look_at_item, angle_item, right_item,
-          up_item, direction_item, sky_item, transform_item, cylinder_camera, camera_name,
+          up_item, direction_item, sky_item, transform_item, cylinder_camera, camera_normal, camera_name,
           unsupported_item> {};
 struct camera_end : rbrace {};
 struct camera_block : if_must<kw_camera, block_open, entries<camera_entry>, camera_end> {};

@@ -258,17 +258,29 @@ std::optional<SceneDescription> Interpreter::finish() {
             return pigment.noiseGenerator == 0 && pigment.kind != Pigment::Kind::Solid &&
                    pigment.kind != Pigment::Kind::Checker && pigment.kind != Pigment::Kind::Brick;
         };
+        // A normal's noise: dents' and its map pattern's.
+        auto normalUsesScenes = [&](const TextureLayer& layer) {
+            return layer.normal && (layer.normal->kind == Normal::Kind::Dents
+                                        ? layer.normal->pattern.noiseGenerator == 0
+                                        : usesScenes(layer.normal->pattern));
+        };
+        auto layerUsesScenes = [&](const TextureLayer& layer) {
+            return usesScenes(layer.pigment) || normalUsesScenes(layer);
+        };
+        auto setScenes = [&](TextureLayer& layer) {
+            if (usesScenes(layer.pigment)) layer.pigment.noiseGenerator = scene_.globals.noiseGenerator;
+            if (normalUsesScenes(layer)) layer.normal->pattern.noiseGenerator = scene_.globals.noiseGenerator;
+        };
         for (Object& o : scene_.objects) {
             const Texture& texture = *o.texture;
-            bool any = usesScenes(texture.pigment);
-            for (const TextureLayer& layer : texture.above) any = any || usesScenes(layer.pigment);
+            bool any = layerUsesScenes(texture);
+            for (const TextureLayer& layer : texture.above) any = any || layerUsesScenes(layer);
             if (!any) continue;
             auto& copy = moved[o.texture.get()];
             if (!copy) {
                 auto t = std::make_shared<Texture>(texture);
-                if (usesScenes(t->pigment)) t->pigment.noiseGenerator = scene_.globals.noiseGenerator;
-                for (TextureLayer& layer : t->above)
-                    if (usesScenes(layer.pigment)) layer.pigment.noiseGenerator = scene_.globals.noiseGenerator;
+                setScenes(*t);
+                for (TextureLayer& layer : t->above) setScenes(layer);
                 copy = std::move(t);
             }
             o.texture = copy;
@@ -497,8 +509,9 @@ BreakNode Interpreter::runSwitch(const Node& n, EntryHandler handle) {
     return nullptr;
 }
 
-// #default { texture {…} pigment {…} finish {…} }: what later textures,
-// pigments and finishes start from, and the texture of objects without one.
+// #default { texture {…} pigment {…} normal {…} finish {…} }: what later
+// textures, pigments, normals and finishes start from, and the texture of
+// objects without one.
 void Interpreter::runDefault(const Node& n) {
     auto entry = [&](const Node& e) {
         switch (e.word) {
@@ -521,8 +534,15 @@ void Interpreter::runDefault(const Node& n) {
             defaultTexture_ = std::move(t);
             break;
         }
+        case Word::Normal: {
+            auto t = std::make_shared<Texture>(*defaultTexture_);
+            TextureLayer& top = topLayer(*t);
+            top.normal = *evalNormal(e, top.normal);
+            defaultTexture_ = std::move(t);
+            break;
+        }
         default:
-            fail(e, "#default takes texture, pigment and finish");
+            fail(e, "#default takes texture, pigment, normal and finish");
         }
     };
     runEntries(n.children(), EntryHandler(entry));

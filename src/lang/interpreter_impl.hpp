@@ -98,7 +98,7 @@ using Value = std::variant<Num, std::string, std::shared_ptr<const ObjectTree>,
                            std::shared_ptr<const Pigment>, std::shared_ptr<const Finish>,
                            std::shared_ptr<const Texture>, std::shared_ptr<const CameraValue>,
                            std::shared_ptr<ArrayValue>, std::shared_ptr<const MacroDef>,
-                           std::shared_ptr<const ColourMapValue>, Poison, Unset>;
+                           std::shared_ptr<const ColourMapValue>, std::shared_ptr<const Normal>, Poison, Unset>;
 
 // A declared array: up to 5 dimensions, its elements all of one kind (the first
 // one given sets it, as in POV-Ray). Arrays are values: names share one until
@@ -257,6 +257,8 @@ public:
     std::shared_ptr<const Finish> evalFinish(const Node& block, const Finish& start);
     std::shared_ptr<const ColourMapValue> evalColourMap(const Node& block);
     void applyMapModifier(const Node& n, Pigment& p);
+    void setMapModifier(const Node& n, Pigment& p);
+    std::shared_ptr<const Normal> evalNormal(const Node& block, const std::optional<Normal>& start);
     int evalNoiseGenerator(const Node& n);
     std::shared_ptr<const Texture> evalTexture(const Node& block);
     CameraValue evalCamera(const Node& block);

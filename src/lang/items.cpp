@@ -126,6 +126,7 @@ Value Interpreter::evalDeclarable(const Node& n) {
     case Word::Camera: return std::make_shared<const CameraValue>(evalCamera(n));
     case Word::Pigment: return evalPigment(n, defaultTexture_->pigment);
     case Word::Finish: return evalFinish(n, defaultTexture_->finish);
+    case Word::Normal: return evalNormal(n, defaultTexture_->normal);
     case Word::Texture: return evalTexture(n);
     case Word::ColorMap: return evalColourMap(n);
     default: return std::make_shared<const ObjectTree>(evalObject(n));
@@ -133,8 +134,12 @@ Value Interpreter::evalDeclarable(const Node& n) {
 }
 
 void Interpreter::moveLayers(const Node& at, Texture& t, const Transform& m) {
-    t.pigment.worldFromPattern = composeAt(at, m, t.pigment.worldFromPattern);
-    for (TextureLayer& layer : t.above) layer.pigment.worldFromPattern = composeAt(at, m, layer.pigment.worldFromPattern);
+    auto move = [&](TextureLayer& layer) {
+        layer.pigment.worldFromPattern = composeAt(at, m, layer.pigment.worldFromPattern);
+        if (layer.normal) layer.normal->pattern.worldFromPattern = composeAt(at, m, layer.normal->pattern.worldFromPattern);
+    };
+    move(t);
+    for (TextureLayer& layer : t.above) move(layer);
 }
 
 void Interpreter::placeObject(ObjectTree&& tree, const Node& at) {
@@ -433,7 +438,7 @@ void Interpreter::applyObjectModifier(ObjectTree& tree, const Node& n, bool isSh
     }
     const bool isLight = tree.kind == ObjectTree::Kind::Light;
     switch (n.word) {
-    case Word::Pigment: case Word::Finish: case Word::Texture: {
+    case Word::Pigment: case Word::Normal: case Word::Finish: case Word::Texture: {
         if (isLight) fail(n, std::string("a light_source has no ") += wordText(n.word));
         if (n.word == Word::Texture) {
             std::shared_ptr<const Texture> texture = evalTexture(n);
@@ -449,13 +454,15 @@ void Interpreter::applyObjectModifier(ObjectTree& tree, const Node& n, bool isSh
             tree.texture = std::move(texture);
             return;
         }
-        // pigment {} and finish {} change the texture the object has (its
-        // top layer, as POV-Ray's Parse_Object_Mods), or a copy of the
-        // default one.
+        // pigment {}, normal {} and finish {} change the texture the object
+        // has (its top layer, as POV-Ray's Parse_Object_Mods), or a copy of
+        // the default one.
         auto texture = std::make_shared<Texture>(tree.texture ? *tree.texture : *defaultTexture_);
         TextureLayer& top = topLayer(*texture);
         if (n.word == Word::Pigment)
             top.pigment = *evalPigment(n, top.pigment);
+        else if (n.word == Word::Normal)
+            top.normal = *evalNormal(n, top.normal);
         else
             top.finish = *evalFinish(n, top.finish);
         if (texture->above.empty()) checkOpaqueBottom(*texture, n);
@@ -605,6 +612,12 @@ void Interpreter::applyMapModifier(const Node& n, Pigment& p) {
         for (std::uint32_t i = 0; i < n.count; ++i) evalNum(n[i]);
         return;
     }
+    setMapModifier(n, p);
+}
+
+// One modifier's value (a normal's pattern takes them all, its
+// normal-only patterns included).
+void Interpreter::setMapModifier(const Node& n, Pigment& p) {
     switch (n.word) {
     case Word::Turbulence: {
         const Num t = evalNum(n[0]);
@@ -632,6 +645,75 @@ void Interpreter::applyMapModifier(const Node& n, Pigment& p) {
     case Word::NoiseGenerator: p.noiseGenerator = evalNoiseGenerator(n[0]); break;
     default: fail(n, "this is not a pattern modifier");
     }
+}
+
+// normal { … }: an optional declared normal, then at most one pattern with
+// its bump size, then bump_size, accuracy, the pattern's modifiers and
+// transforms in any order (POV-Ray's Parse_Tnormal). `start`: the normal the
+// layer has, or none (POV-Ray's defaults).
+std::shared_ptr<const Normal> Interpreter::evalNormal(const Node& block, const std::optional<Normal>& start) {
+    auto normal = std::make_shared<Normal>(start.value_or(Normal{}));
+    bool declaredOk = true, patternSeen = false;
+    auto entry = [&](const Node& n) {
+        const bool first = declaredOk;
+        declaredOk = false;
+        if (isTransform(n)) {
+            normal->pattern.worldFromPattern = composeAt(n, evalTransformItem(n), normal->pattern.worldFromPattern);
+            return;
+        }
+        if (n.kind == NodeKind::Block && n.word == Word::ColorMap)
+            fail(n, "a normal has no colour map (normal_map and slope_map are not supported by asos)");
+        if (n.kind == NodeKind::Item) {
+            const bool own = n.word == Word::Bumps || n.word == Word::Dents || n.word == Word::Wrinkles ||
+                             n.word == Word::Ripples || n.word == Word::Waves;
+            if (own || isMapPattern(n.word)) {
+                if (patternSeen) fail(n, "a normal has one pattern; this is a second one");
+                patternSeen = true;
+                // As in a pigment: a new pattern starts from its own
+                // defaults; the modifiers read before it stay.
+                Pigment& p = normal->pattern;
+                p.wave = (n.word == Word::Marble || n.word == Word::Wood) ? Pigment::Wave::Triangle : Pigment::Wave::Ramp;
+                p.colourMap.clear();
+                switch (n.word) {
+                case Word::Bumps: normal->kind = Normal::Kind::Bumps; break;
+                case Word::Dents: normal->kind = Normal::Kind::Dents; break;
+                case Word::Wrinkles: normal->kind = Normal::Kind::Wrinkles; break;
+                case Word::Ripples: normal->kind = Normal::Kind::Ripples; break;
+                case Word::Waves: normal->kind = Normal::Kind::Waves; break;
+                default: normal->kind = Normal::Kind::Pattern; break;
+                }
+                p.kind = own ? Pigment::Kind::Solid : mapKind(n.word);
+                if (n.word == Word::Gradient) {
+                    const Vec3 g = evalVector(n[0]);
+                    const double length = glm::length(g);
+                    if (length == 0.0) fail(n[0], "gradient <0, 0, 0> has no direction");
+                    p.gradient = g / length;
+                }
+                return;
+            }
+            if (n.word == Word::BumpSize) {
+                normal->amount = evalFloat(n[0]);
+                return;
+            }
+            if (n.word == Word::Accuracy) {
+                const double delta = evalFloat(n[0]);
+                if (delta == 0.0) fail(n[0], "accuracy 0 leaves no distance to measure the pattern's slope over");
+                normal->accuracy = delta;
+                return;
+            }
+            if (isMapModifier(n.word)) {
+                setMapModifier(n, normal->pattern);
+                return;
+            }
+        }
+        const Value v = eval(n);
+        const auto* declared = std::get_if<std::shared_ptr<const Normal>>(&v);
+        if (!declared) fail(n, referenceText(n) + " is " + describe(v) + ", not a normal");
+        if (!first) fail(n, "a declared normal must come first in the normal");
+        *normal = **declared;
+    };
+    runEntries(block.children(), EntryHandler(entry));
+    return normal;
 }
 
 int Interpreter::evalNoiseGenerator(const Node& n) {
@@ -700,6 +782,7 @@ std::shared_ptr<const Finish> Interpreter::evalFinish(const Node& block, const F
             break;
         }
         case Word::Reflection: f->reflection = evalRgb(n[0], "reflection"); break;
+        case Word::Crand: f->crand = evalFloat(n[0]); break;
         default: fail(n, "this is not a finish item");
         }
     };
@@ -729,13 +812,16 @@ std::shared_ptr<const Texture> Interpreter::evalTexture(const Node& block) {
             *t = **declared;
         } else if (isTransform(n)) {
             moveLayers(n, *t, evalTransformItem(n));
-        } else if ((n.word == Word::Pigment || n.word == Word::Finish) && !t->above.empty()) {
+        } else if ((n.word == Word::Pigment || n.word == Word::Normal || n.word == Word::Finish) &&
+                   !t->above.empty()) {
             fail(n, std::string("a ") + std::string(wordText(n.word)) +
                         " in a layered texture's block is not supported by asos; give it to one of its layers");
         } else if (n.word == Word::Pigment) {
             t->pigment = *evalPigment(n, t->pigment);
         } else if (n.word == Word::Finish) {
             t->finish = *evalFinish(n, t->finish);
+        } else if (n.word == Word::Normal) {
+            t->normal = *evalNormal(n, t->normal);
         } else {
             fail(n, "this is not a texture item");
         }

@@ -301,8 +301,11 @@ template <> struct action<g::unsupported_item> : Reject<g::unsupported_item> {};
 template <> struct action<g::unsupported_in_expression> : Reject<g::unsupported_in_expression> {};
 template <> struct action<g::cylinder_light> : Reject<g::cylinder_light> {};
 template <> struct action<g::cylinder_camera> : Reject<g::cylinder_camera> {};
+template <> struct action<g::camera_normal> : Reject<g::camera_normal> {};
 template <> struct action<g::texture_pattern> : Reject<g::texture_pattern> {};
 template <> struct action<g::reflection_block> : Reject<g::reflection_block> {};
+template <> struct action<g::normal_block_pattern> : Reject<g::normal_block_pattern> {};
+template <> struct action<g::pigment_normal_pattern> : Reject<g::pigment_normal_pattern> {};
 template <>
 struct action<g::texture_layers_open> {
     static void apply0(Builder& b) { b.openAroundLast(); }
@@ -581,6 +584,7 @@ template <> struct action<g::camera_block> : CloseBlock<Word::Camera> {};
 template <> struct action<g::global_settings_block> : CloseBlock<Word::GlobalSettings> {};
 template <> struct action<g::background_block> : CloseBlock<Word::Background> {};
 template <> struct action<g::pigment_block> : CloseBlock<Word::Pigment> {};
+template <> struct action<g::normal_block> : CloseBlock<Word::Normal> {};
 template <> struct action<g::finish_block> : CloseBlock<Word::Finish> {};
 template <> struct action<g::texture_block> : CloseBlock<Word::Texture> {};
 template <> struct action<g::asos_block> : CloseBlock<Word::Asos> {};
@@ -627,6 +631,15 @@ template <> struct action<g::phong_size_item> : ItemAction<Word::PhongSize, 1> {
 template <> struct action<g::specular_item> : ItemAction<Word::Specular, 1> {};
 template <> struct action<g::roughness_item> : ItemAction<Word::Roughness, 1> {};
 template <> struct action<g::reflection_item> : ItemAction<Word::Reflection, 1> {};
+template <> struct action<g::crand_item> : ItemAction<Word::Crand, 1> {};
+template <> struct action<g::bumps_item> : ItemAction<Word::Bumps, 0> {};
+template <> struct action<g::dents_item> : ItemAction<Word::Dents, 0> {};
+template <> struct action<g::wrinkles_item> : ItemAction<Word::Wrinkles, 0> {};
+template <> struct action<g::ripples_item> : ItemAction<Word::Ripples, 0> {};
+template <> struct action<g::waves_item> : ItemAction<Word::Waves, 0> {};
+template <> struct action<g::bump_amount> : ItemAction<Word::BumpSize, 1> {};
+template <> struct action<g::bump_size_item> : ItemAction<Word::BumpSize, 1> {};
+template <> struct action<g::accuracy_item> : ItemAction<Word::Accuracy, 1> {};
 template <> struct action<g::brick_size_item> : ItemAction<Word::BrickSize, 1> {};
 template <> struct action<g::mortar_item> : ItemAction<Word::Mortar, 1> {};
 template <> struct action<g::gradient_item> : ItemAction<Word::Gradient, 1> {};
@@ -998,6 +1011,7 @@ std::optional<Ast> parseMacroBody(std::string_view fileText, TextSpan body, std:
     case BodyContext::Light: return parse(static_cast<g::light_entry*>(nullptr));
     case BodyContext::Camera: return parse(static_cast<g::camera_entry*>(nullptr));
     case BodyContext::Pigment: return parse(static_cast<g::pigment_entry*>(nullptr));
+    case BodyContext::Normal: return parse(static_cast<g::normal_entry*>(nullptr));
     case BodyContext::Finish: return parse(static_cast<g::finish_entry*>(nullptr));
     case BodyContext::Texture: return parse(static_cast<g::texture_entry*>(nullptr));
     case BodyContext::GlobalSettings: return parse(static_cast<g::global_entry*>(nullptr));

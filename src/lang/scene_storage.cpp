@@ -90,16 +90,13 @@ std::uint64_t hashOf(const Texture& t) {
     mix(h, f.phong);
     mix(h, f.specular);
     mix(h, f.reflection);
+    mix(h, t.normal ? static_cast<double>(t.normal->kind) : -1.0);
     mix(h, static_cast<double>(t.above.size()));
     return h;
 }
 
 bool sameLayer(const TextureLayer& a, const TextureLayer& b) {
-    const Finish& f = a.finish;
-    const Finish& g = b.finish;
-    return a.pigment == b.pigment && f.ambient == g.ambient && f.diffuse == g.diffuse &&
-           f.brilliance == g.brilliance && f.phong == g.phong && f.phongSize == g.phongSize &&
-           f.specular == g.specular && f.roughness == g.roughness && f.reflection == g.reflection;
+    return a.pigment == b.pigment && a.finish == b.finish && a.normal == b.normal;
 }
 
 bool sameTexture(const Texture& a, const Texture& b) {

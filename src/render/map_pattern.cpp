@@ -93,12 +93,19 @@ bool isMapPattern(Pigment::Kind kind) {
     return kind != Pigment::Kind::Solid && kind != Pigment::Kind::Checker && kind != Pigment::Kind::Brick;
 }
 
-double mapPatternValue(const Pigment& p, const Vec3& patternPoint) {
-    Vec3 q = patternPoint;
+Vec3 turbulatedPoint(const Pigment& p, const Vec3& patternPoint) {
     // Classic turbulence moves the point, except for the patterns that use it
     // in their own way.
-    if (p.kind != Pigment::Kind::Marble && p.kind != Pigment::Kind::Wood && p.turbulence != Vec3(0.0))
-        q += PovNoise::tables().dturbulence(q, p.octaves, p.omega, p.lambda) * p.turbulence;
+    if (p.kind == Pigment::Kind::Marble || p.kind == Pigment::Kind::Wood || p.turbulence == Vec3(0.0))
+        return patternPoint;
+    return patternPoint + PovNoise::tables().dturbulence(patternPoint, p.octaves, p.omega, p.lambda) * p.turbulence;
+}
+
+double mapPatternValue(const Pigment& p, const Vec3& patternPoint) {
+    return mapPatternValueAt(p, turbulatedPoint(p, patternPoint));
+}
+
+double mapPatternValueAt(const Pigment& p, const Vec3& q) {
     double v = rawValue(p, q);
     // POV-Ray's wave (ContinuousPattern::Evaluate), with its 1.00001.
     if (p.frequency != 0.0) v = std::fmod(v * p.frequency + p.phase, 1.00001);

@@ -36,7 +36,7 @@ Vec3 ambientTerm(const Finish& finish, const Vec3& pigment, const Vec3& ambientL
 }
 
 Vec3 directLight(const Finish& finish, const Vec3& pigment, const Vec3& normal, const Vec3& rayDir,
-                 const Light& light, const LightSample& sample) {
+                 const Light& light, const LightSample& sample, double grain) {
     const Vec3& toLight = sample.direction;
     // Light on the far side of the surface from the viewer lights nothing
     // (POV-Ray: cos_shadow_angle < EPSILON, no double_illuminate).
@@ -51,7 +51,8 @@ Vec3 directLight(const Finish& finish, const Vec3& pigment, const Vec3& normal, 
     if (finish.diffuse > 0.0) {
         const double intensity =
             (finish.brilliance != 1.0 ? std::pow(cosIncidence, finish.brilliance) : cosIncidence) *
-            finish.diffuse;
+                finish.diffuse -
+            grain;
         result += intensity * pigment * lightColor;
     }
     // POV-Ray's shadowless lights (FILL_LIGHT_SOURCE) give no highlights.

@@ -186,6 +186,65 @@ void writeCsg(Writer& w, const CsgTree& tree, std::uint32_t index, const Object*
     w << "}\n";
 }
 
+// A map pattern's name (and gradient's vector, agate's agate_turb).
+void writeMapPatternName(Writer& w, const Pigment& p) {
+    switch (p.kind) {
+        case Pigment::Kind::Solid: case Pigment::Kind::Checker: case Pigment::Kind::Brick: break;
+        case Pigment::Kind::Gradient:
+            w << "gradient ";
+            w.vec(p.gradient);
+            break;
+        case Pigment::Kind::Radial: w << "radial"; break;
+        case Pigment::Kind::Onion: w << "onion"; break;
+        case Pigment::Kind::Marble: w << "marble"; break;
+        case Pigment::Kind::Wood: w << "wood"; break;
+        case Pigment::Kind::Leopard: w << "leopard"; break;
+        case Pigment::Kind::Bozo: w << "bozo"; break;
+        case Pigment::Kind::Spotted: w << "spotted"; break;
+        case Pigment::Kind::Granite: w << "granite"; break;
+        case Pigment::Kind::Agate:
+            w << "agate agate_turb ";
+            w.num(p.agateTurb);
+            break;
+    }
+}
+
+// The map patterns' modifiers, all of them (a normal's pattern too).
+void writeMapModifiers(Writer& w, const Pigment& p) {
+    if (p.turbulence != Vec3(0.0)) {
+        w << " turbulence ";
+        w.vec(p.turbulence);
+    }
+    w << " octaves " << p.octaves << " omega ";
+    w.num(p.omega) << " lambda ";
+    w.num(p.lambda) << " frequency ";
+    w.num(p.frequency) << " phase ";
+    w.num(p.phase);
+    w << (p.wave == Pigment::Wave::Ramp ? " ramp_wave" : p.wave == Pigment::Wave::Sine ? " sine_wave" : " triangle_wave");
+    if (p.noiseGenerator != 0) w << " noise_generator " << p.noiseGenerator;
+}
+
+void writeNormal(Writer& w, const Normal& n) {
+    w << "    normal { ";
+    switch (n.kind) {
+        case Normal::Kind::Bumps: w << "bumps"; break;
+        case Normal::Kind::Dents: w << "dents"; break;
+        case Normal::Kind::Wrinkles: w << "wrinkles"; break;
+        case Normal::Kind::Ripples: w << "ripples"; break;
+        case Normal::Kind::Waves: w << "waves"; break;
+        case Normal::Kind::Pattern: writeMapPatternName(w, n.pattern); break;
+    }
+    w << " bump_size ";
+    w.num(n.amount) << " accuracy ";
+    w.num(n.accuracy);
+    writeMapModifiers(w, n.pattern);
+    if (!n.pattern.worldFromPattern.isIdentity()) {
+        w << ' ';
+        w.matrix(n.pattern.worldFromPattern);
+    }
+    w << " }\n";
+}
+
 void writeLayer(Writer& w, const TextureLayer& t) {
     const Pigment& p = t.pigment;
     w << "  texture {\n    pigment { ";
@@ -205,22 +264,7 @@ void writeLayer(Writer& w, const TextureLayer& t) {
             w.vec(p.brickSize) << " mortar ";
             w.num(p.mortar);
             break;
-        case Pigment::Kind::Gradient:
-            w << "gradient ";
-            w.vec(p.gradient);
-            break;
-        case Pigment::Kind::Radial: w << "radial"; break;
-        case Pigment::Kind::Onion: w << "onion"; break;
-        case Pigment::Kind::Marble: w << "marble"; break;
-        case Pigment::Kind::Wood: w << "wood"; break;
-        case Pigment::Kind::Leopard: w << "leopard"; break;
-        case Pigment::Kind::Bozo: w << "bozo"; break;
-        case Pigment::Kind::Spotted: w << "spotted"; break;
-        case Pigment::Kind::Granite: w << "granite"; break;
-        case Pigment::Kind::Agate:
-            w << "agate agate_turb ";
-            w.num(p.agateTurb);
-            break;
+        default: writeMapPatternName(w, p); break;
     }
     if (p.kind != Pigment::Kind::Solid && p.kind != Pigment::Kind::Checker && p.kind != Pigment::Kind::Brick) {
         if (!p.colourMap.empty()) {
@@ -232,23 +276,14 @@ void writeLayer(Writer& w, const TextureLayer& t) {
             }
             w << " }";
         }
-        if (p.turbulence != Vec3(0.0)) {
-            w << " turbulence ";
-            w.vec(p.turbulence);
-        }
-        w << " octaves " << p.octaves << " omega ";
-        w.num(p.omega) << " lambda ";
-        w.num(p.lambda) << " frequency ";
-        w.num(p.frequency) << " phase ";
-        w.num(p.phase);
-        w << (p.wave == Pigment::Wave::Ramp ? " ramp_wave" : p.wave == Pigment::Wave::Sine ? " sine_wave" : " triangle_wave");
-        if (p.noiseGenerator != 0) w << " noise_generator " << p.noiseGenerator;
+        writeMapModifiers(w, p);
     }
     if (!p.worldFromPattern.isIdentity()) {
         w << ' ';
         w.matrix(p.worldFromPattern);
     }
     w << " }\n";
+    if (t.normal) writeNormal(w, *t.normal);
     const Finish& f = t.finish;
     w << "    finish { ambient ";
     w.rgb(f.ambient) << " diffuse ";
@@ -258,7 +293,12 @@ void writeLayer(Writer& w, const TextureLayer& t) {
     w.num(f.phongSize) << " specular ";
     w.num(f.specular) << " roughness ";
     w.num(f.roughness) << " reflection ";
-    w.rgb(f.reflection) << " }\n  }\n";
+    w.rgb(f.reflection);
+    if (f.crand != 0.0) {
+        w << " crand ";
+        w.num(f.crand);
+    }
+    w << " }\n  }\n";
 }
 
 // A layered texture as POV-Ray layers textures on an object: each one

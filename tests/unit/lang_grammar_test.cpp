@@ -142,13 +142,18 @@ TEST_CASE("modifiers", "[lang][grammar]") {
          "sphere { 0, 1 texture { pigment { rgb 1 } finish { phong 1 } scale 2 } }",
          "sphere { 0, 1 texture { T } }", "sphere { 0, 1 no_shadow asos { eps 1e-3 max 6 jitter off } }",
          "sphere { 0, 1 matrix <1,0,0, 0,1,0, 0,0,1, 0,0,0> }",
-         "sphere { 0, 1 rotate <0,45,0> scale <1,2,1> translate -x }"},
+         "sphere { 0, 1 rotate <0,45,0> scale <1,2,1> translate -x }",
+         "sphere { 0, 1 normal { bumps 0.5 scale 0.2 } }", "sphere { 0, 1 normal { granite, -0.3 turbulence 0.2 } }",
+         "sphere { 0, 1 normal { N bump_size 2 } }", "sphere { 0, 1 normal { ripples Size frequency 4 phase 0.5 } }",
+         "sphere { 0, 1 normal { gradient x 0.4 accuracy 0.01 sine_wave } }",
+         "sphere { 0, 1 texture { normal { wrinkles } } }", "sphere { 0, 1 finish { crand 0.05 diffuse 0.7 } }"},
         {"sphere { 0, 1 pigment { rgb } }", "sphere { 0, 1 pigment { checker Red, } }",
          "sphere { 0, 1 pigment { brick Red, } }", "sphere { 0, 1 pigment { brick mortar } }",
          "sphere { 0, 1 pigment { brick brick_size } }",
          "sphere { 0, 1 pigment { brick pigment { Red } pigment { White } } }",
          "sphere { 0, 1 texture { brick texture { T } texture { U } } }",
-         "sphere { 0, 1 finish { phong } }",         "sphere { 0, 1 translate }", "sphere { 0, 1 asos { eps } }", "sphere { 0, 1 asos { foo 1 } }"});
+         "sphere { 0, 1 finish { phong } }",         "sphere { 0, 1 translate }", "sphere { 0, 1 asos { eps } }", "sphere { 0, 1 asos { foo 1 } }",
+         "sphere { 0, 1 normal { bump_size } }", "sphere { 0, 1 normal { accuracy } }", "sphere { 0, 1 finish { crand } }"});
 }
 
 TEST_CASE("macros, #switch, #break, #default", "[lang][grammar]") {

@@ -492,6 +492,48 @@ TEST_CASE("transforms and textures follow POV-Ray's order rules", "[lang][interp
     CHECK(scene.objects[4].texture->pigment.worldFromPattern.point(Vec3(1)) == Vec3(3, 3, 3));
 }
 
+TEST_CASE("normal { } belongs to a texture layer, as POV-Ray reads it", "[lang][interpreter]") {
+    Run r = run(R"(
+        #declare N = normal { granite, -0.3 turbulence 0.2 accuracy 0.05 }
+        sphere { 0, 1 normal { bumps 0.4 scale 0.1 } }
+        sphere { 0, 1 texture { pigment { rgb 1 } normal { N bump_size 0.7 } } scale 2 }
+        sphere { 0, 1 normal { ripples frequency 4 phase 0.5 } normal { bump_size 2 } }
+        sphere { 0, 1 finish { crand 0.05 } }
+        #default { normal { wrinkles } }
+        sphere { 0, 1 }
+    )");
+    const auto& scene = ok(r);
+    REQUIRE(scene.objects.size() == 5);
+    const Normal& bumps = *scene.objects[0].texture->normal;
+    CHECK(bumps.kind == Normal::Kind::Bumps);
+    CHECK(bumps.amount == 0.4);
+    CHECK(bumps.pattern.worldFromPattern.point(Vec3(1)) == Vec3(0.1));
+    const Normal& granite = *scene.objects[1].texture->normal;
+    CHECK(granite.kind == Normal::Kind::Pattern);
+    CHECK(granite.pattern.kind == Pigment::Kind::Granite);
+    CHECK(granite.amount == 0.7);
+    CHECK(granite.accuracy == 0.05);
+    CHECK(granite.pattern.turbulence == Vec3(0.2));
+    // The object's scale moves the texture's normal with its pigment.
+    CHECK(granite.pattern.worldFromPattern.point(Vec3(1)) == Vec3(2));
+    // A second normal { } changes the first.
+    const Normal& ripples = *scene.objects[2].texture->normal;
+    CHECK(ripples.kind == Normal::Kind::Ripples);
+    CHECK(ripples.amount == 2.0);
+    CHECK(ripples.pattern.frequency == 4.0);
+    CHECK(ripples.pattern.phase == 0.5);
+    CHECK(!scene.objects[3].texture->normal);
+    CHECK(scene.objects[3].texture->finish.crand == 0.05);
+    CHECK(scene.objects[4].texture->normal->kind == Normal::Kind::Wrinkles);
+
+    CHECK(run("sphere { 0, 1 normal { bumps dents } }").errors().find("a normal has one pattern") != std::string::npos);
+    CHECK(run("sphere { 0, 1 normal { bumps accuracy 0 } }").errors().find("accuracy 0") != std::string::npos);
+    CHECK(run("sphere { 0, 1 normal { bozo color_map { [0 rgb 0] [1 rgb 1] } } }").errors().find("no colour map") !=
+          std::string::npos);
+    CHECK(run("#declare P = pigment { rgb 1 }\nsphere { 0, 1 normal { P } }").errors().find("not a normal") !=
+          std::string::npos);
+}
+
 TEST_CASE("equal textures are shared", "[lang][interpreter]") {
     Run run4 = run("#declare C = rgb <1, 0, 0>;\n"
                                "sphere { 0, 1 pigment { C } }\nsphere { x, 1 pigment { C } }\n"

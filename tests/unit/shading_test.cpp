@@ -1,5 +1,6 @@
 #include <catch2/catch.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <vector>
 
@@ -68,6 +69,54 @@ TEST_CASE("The background's transmit darkens it, its filter does nothing", "[sha
     CHECK(near(backgroundColor(scene), {0.15, 0.225, 0.3}));
     scene.background.transmit = 1.5;
     CHECK(near(backgroundColor(scene), {-0.1, -0.15, -0.2}));
+}
+
+TEST_CASE("crand takes a random share of crand off each light's diffuse intensity", "[shading]") {
+    const Vec3 pigment{0.8, 0.6, 0.4};
+    Finish f;
+    f.diffuse = 0.6;
+    f.crand = 0.2;
+    Light light;
+    const LightSample s{glm::normalize(Vec3(std::sqrt(3.0), 1.0, 0.0)), 10.0, {1.0, 1.0, 0.5}};
+    const Vec3 n{0, 1, 0}, eye{0, -1, 0};
+    // The caller passes crand times its number; the diffuse intensity loses it.
+    CHECK(near(directLight(f, pigment, n, eye, light, s, 0.2 * 0.75), (0.6 * 0.5 - 0.15) * pigment * s.color, 1e-12));
+
+    // Its numbers: in [0, 1), the same for the same pixel, seed and sample,
+    // apart for each light, sample, layer and shaded sample.
+    const GrainSource a{PixelRandom(7, 3, 4), 11};
+    CHECK(a.draw(0, 0, 0) == GrainSource{PixelRandom(7, 3, 4), 11}.draw(0, 0, 0));
+    CHECK(a.draw(0, 0, 0) != a.draw(1, 0, 0));
+    CHECK(a.draw(0, 0, 0) != a.draw(0, 1, 0));
+    CHECK(a.draw(0, 0, 0) != a.draw(0, 0, 1));
+    CHECK(a.draw(0, 0, 0) != GrainSource{PixelRandom(7, 3, 4), 12}.draw(0, 0, 0));
+    CHECK(a.draw(0, 0, 0) != GrainSource{PixelRandom(8, 3, 4), 11}.draw(0, 0, 0));
+
+    // Over many pixels the grain takes crand / 2 off on average, as
+    // POV-Ray's uniform numbers do.
+    Texture t = flat(Vec3(1.0));
+    t.finish.ambient = Vec3(0.0);
+    t.finish.diffuse = 1.0;
+    t.finish.crand = 0.2;
+    const SurfaceHit hit = planeHit();
+    const Ray ray{Vec3(0, 1, 0), Vec3(0, -1, 0)};
+    const std::vector<Light> lights(1);
+    const LightSample above{{0, 1, 0}, 10.0, {1, 1, 1}};
+    double sum = 0.0, lowest = 1.0, highest = 0.0;
+    const int count = 20000;
+    for (int i = 0; i < count; ++i) {
+        const Vec3 c = shadeSurface({hit, t, ray, 1, 1.0, std::nullopt, {PixelRandom(1, i, 0), 0}}, lights,
+                                    ShadingSettings{},
+                                    [&](const ShadingPoint&) { return std::span<const LightSample>(&above, 1); },
+                                    NoReflection{});
+        sum += c.x;
+        lowest = std::min(lowest, c.x);
+        highest = std::max(highest, c.x);
+    }
+    CHECK(sum / count == Approx(0.9).margin(0.002));
+    CHECK(lowest >= 0.8);
+    CHECK(highest <= 1.0);
+    CHECK(highest - lowest > 0.19);
 }
 
 TEST_CASE("Diffuse follows Lambert's cosine raised to brilliance", "[shading]") {

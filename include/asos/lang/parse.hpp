@@ -31,6 +31,7 @@ enum class BodyContext : std::uint8_t {
     Light,
     Camera,
     Pigment,
+    Normal,
     Finish,
     Texture,
     GlobalSettings,

@@ -41,6 +41,9 @@ namespace asos::lang {
     WORD(Ambient, "ambient") WORD(Diffuse, "diffuse") WORD(Brilliance, "brilliance") WORD(Phong, "phong")   \
     WORD(PhongSize, "phong_size") WORD(Specular, "specular") WORD(Roughness, "roughness")                \
     WORD(Reflection, "reflection") WORD(AssumedGamma, "assumed_gamma")                                \
+    WORD(Crand, "crand")                                                                           \
+    WORD(Normal, "normal") WORD(Bumps, "bumps") WORD(Dents, "dents") WORD(Wrinkles, "wrinkles")        \
+    WORD(Ripples, "ripples") WORD(Waves, "waves") WORD(BumpSize, "bump_size") WORD(Accuracy, "accuracy") \
     WORD(MaxTraceLevel, "max_trace_level") WORD(AmbientLight, "ambient_light")                        \
     /* colours */                                                                               \
     WORD(Color, "color") WORD(Colour, "colour") WORD(Rgb, "rgb") WORD(Rgbf, "rgbf") WORD(Rgbt, "rgbt")         \

@@ -19,6 +19,13 @@ bool isMapPattern(Pigment::Kind kind);
 // The pattern's value in [0, 1] at a pattern-space point, after the wave.
 double mapPatternValue(const Pigment& pigment, const Vec3& patternPoint);
 
+// POV-Ray's two steps of it, which a normal's slope needs apart: where
+// classic turbulence moves a pattern-space point (nowhere without
+// turbulence, and for marble and wood, which use it their own way), and the
+// value at a point already moved so.
+Vec3 turbulatedPoint(const Pigment& pigment, const Vec3& patternPoint);
+double mapPatternValueAt(const Pigment& pigment, const Vec3& turbulatedPoint);
+
 // The colour map's colour at a value: the pigment's own map, or POV-Ray's
 // default map for the pattern.
 Color colourMapAt(std::span<const ColourMapEntry> map, double value);

@@ -72,7 +72,8 @@ public:
                    const LightContext& context = {},
                    const std::optional<Color>& pigment = std::nullopt) const {
         const Texture& texture = textureOf(scene_.object(static_cast<std::uint32_t>(hit.objectIndex)));
-        return shadeSurface({hit, texture, ray, depth, weight, pigment}, lights(), shading_, lightArriving,
+        return shadeSurface({hit, texture, ray, depth, weight, pigment, {context.rng, context.key}}, lights(),
+                            shading_, lightArriving,
                             [&](const Ray& mirror, int d, double w) {
                                 ++counters.reflectedRays;
                                 return radiance(mirror, d, w, counters, context.reflected(d));

@@ -21,6 +21,7 @@ enum class SampleStream : std::uint32_t {
     LightJitter = 4,     // area light sample positions
     ShadowJitter = 5,    // ASOS shadow MAX-pyray jitter
     Am1Jitter = 6,       // jitter of the am1 method's sub-samples
+    Grain = 7,           // a finish's crand
     Test = 1000,         // reserved for tests
 };
 

@@ -23,6 +23,8 @@
 #include "asos/geometry/hit.hpp"
 #include "asos/geometry/ray.hpp"
 #include "asos/geometry/vec.hpp"
+#include "asos/render/normal_pattern.hpp"
+#include "asos/render/sampling.hpp"
 #include "asos/scene/description.hpp"
 #include "asos/scene/pov_tolerances.hpp"
 
@@ -75,6 +77,20 @@ struct ShadingSettings {
     }
 };
 
+// Where a finish's crand draws its numbers: the pixel's random numbers and
+// the key of the sample being shaded (LightContext's), so that the grain
+// depends on the pixel, the sample and the seed only.
+struct GrainSource {
+    PixelRandom rng{0, 0, 0};
+    std::uint64_t key = 0;
+    // A number in [0, 1) for light `light`'s sample `sample` on layer `layer`.
+    double draw(int light, std::size_t sample, std::size_t layer) const {
+        const std::uint64_t index = std::uint64_t(static_cast<std::uint32_t>(light)) << 40 ^
+                                    std::uint64_t(sample) << 8 ^ std::uint64_t(layer);
+        return rng.uniform(SampleStream::Grain, mix64(key ^ index));
+    }
+};
+
 // The ray being shaded and where it ended. `depth` is POV-Ray's trace level
 // (eye rays 1, their reflections 2, ...) and `weight` its ADC weight (eye
 // rays 1). `pigment`: the pigment's colour when the caller has it already
@@ -87,6 +103,7 @@ struct ShadeRequest {
     int depth = 1;
     double weight = 1.0;
     std::optional<Color> pigment = std::nullopt;
+    GrainSource grain{};
 };
 
 // The pigment's colour at a world point: CheckerPattern and BrickPattern in
@@ -119,6 +136,22 @@ inline Vec3 reflectDirection(const Vec3& d, const Vec3& n) {
     return glm::normalize(d - 2.0 * glm::dot(d, n) * n);
 }
 
+// The mirror direction off a layer's normal `tilted`, kept on the viewer's
+// side of the surface's own normal `surface` (both unit, facing the ray), as
+// POV-Ray's ComputeReflection: a direction below the surface is mirrored
+// once more off it, or, when it is below the tilted normal's plane too,
+// taken off the surface's normal instead.
+inline Vec3 mirrorDirection(const Vec3& d, const Vec3& tilted, const Vec3& surface) {
+    if (tilted == surface) return reflectDirection(d, surface);
+    Vec3 r = d - 2.0 * glm::dot(d, tilted) * tilted;
+    const double below = glm::dot(r, surface);
+    if (below < 0.0) {
+        if (glm::dot(r, tilted) < 0.0) r = d - 2.0 * glm::dot(d, surface) * surface;
+        else r -= 2.0 * below * surface;
+    }
+    return glm::normalize(r);
+}
+
 // ambient x pigment x ambient_light.
 Vec3 ambientTerm(const Finish& finish, const Vec3& pigment, const Vec3& ambientLight);
 
@@ -126,8 +159,10 @@ Vec3 ambientTerm(const Finish& finish, const Vec3& pigment, const Vec3& ambientL
 // ComputeDiffuseColour, ComputePhongColour, ComputeSpecularColour). `normal`
 // faces the ray; `rayDir` is the unit direction of the ray that hit. A sample
 // from behind the surface gives nothing; shadowless lights give no highlights.
+// `grain`: the number in [0, 1) crand takes off the diffuse intensity,
+// times crand.
 Vec3 directLight(const Finish& finish, const Vec3& pigment, const Vec3& normal, const Vec3& rayDir,
-                 const Light& light, const LightSample& sample);
+                 const Light& light, const LightSample& sample, double grain = 0.0);
 
 // Whether the finish reacts to lights at all (otherwise no light is queried).
 inline bool usesLights(const Finish& f) {
@@ -157,6 +192,7 @@ inline Vec3 backgroundColor(const SceneDescription& scene) {
 // scaled by its opacity, its light seen through the layers above it.
 struct ShadedLayer {
     const Finish* finish = nullptr;
+    Vec3 normal{0.0};   // unit, facing the ray: tilted by the layer's normal pattern
     Vec3 pigment{0.0};  // the pigment's colour x its opacity
     Vec3 through{1.0};  // what the layers above let through (POV-Ray's filCol)
     double weight = 1.0;  // the ray's weight left for it (POV-Ray's trans)
@@ -166,9 +202,11 @@ struct ShadedLayer {
 // ComputeLightedTexture, which stops where the layers above let less than
 // adc_bailout through. The bottom layer is opaque, so the ray ends there.
 // `bottomPigment`: the pigment's colour of a texture of one layer, when the
-// caller has it (ShadeRequest::pigment).
+// caller has it (ShadeRequest::pigment). `normal`: the surface's, unit and
+// turned toward the ray, which POV-Ray tilts (ComputeTextureColour turns it
+// first).
 template <std::size_t N>
-std::span<const ShadedLayer> shadedLayers(const Texture& texture, const Vec3& point,
+std::span<const ShadedLayer> shadedLayers(const Texture& texture, const Vec3& point, const Vec3& normal,
                                           const std::optional<Color>& bottomPigment,
                                           const ShadingSettings& settings,
                                           std::array<ShadedLayer, N>& storage,
@@ -185,7 +223,8 @@ std::span<const ShadedLayer> shadedLayers(const Texture& texture, const Vec3& po
     for (std::size_t i = count; i-- > 0 && (n == 0 || weight > settings.adcBailout);) {
         const TextureLayer& layer = i == 0 ? static_cast<const TextureLayer&>(texture) : texture.above[i - 1];
         const Color c = (count == 1 && bottomPigment) ? *bottomPigment : evaluatePigment(layer.pigment, point);
-        out[n++] = {&layer.finish, c.rgb * layerOpacity(c, settings.legacyLayerOpacity), through, weight};
+        const Vec3 tilted = layer.normal ? perturbedNormal(*layer.normal, point, normal) : normal;
+        out[n++] = {&layer.finish, tilted, c.rgb * layerOpacity(c, settings.legacyLayerOpacity), through, weight};
         through *= layerTransmittance(c);
         weight = std::min(1.0, std::fabs(povGreyscale(through)));
     }
@@ -209,7 +248,11 @@ std::span<const ShadedLayer> shadedLayers(const Texture& texture, const Vec3& po
 // A layered texture: each layer adds its ambient, diffuse and highlights, the
 // pigment's terms times its opacity, all times what the layers above let
 // through; each adds its reflection, traced with the weight the layers above
-// leave it, unfiltered (POV-Ray's ComputeLightedTexture).
+// leave it, unfiltered (POV-Ray's ComputeLightedTexture). Each layer is lit
+// and reflects with its own normal, tilted by its normal pattern; the lights
+// are asked with the surface's (ShadingPoint::normal), so a light below the
+// surface's horizon lights no tilted normal (POV-Ray's would, on a surface
+// that does not shadow itself there, as a plane).
 template <class LightFn, class ReflectFn>
 Vec3 shadeSurface(const ShadeRequest& req, std::span<const Light> lights,
                   const ShadingSettings& settings, LightFn&& lightArriving,
@@ -221,7 +264,7 @@ Vec3 shadeSurface(const ShadeRequest& req, std::span<const Light> lights,
     std::array<ShadedLayer, 4> storage;
     std::vector<ShadedLayer> overflow;
     const std::span<const ShadedLayer> layers =
-        shadedLayers(req.texture, req.hit.position, req.pigment, settings, storage, overflow);
+        shadedLayers(req.texture, req.hit.position, normal, req.pigment, settings, storage, overflow);
 
     Vec3 color(0.0);
     bool lit = false;
@@ -233,10 +276,14 @@ Vec3 shadeSurface(const ShadeRequest& req, std::span<const Light> lights,
         for (int i = 0; i < static_cast<int>(lights.size()); ++i) {
             const ShadingPoint point{i, &lights[i], &req.hit, req.hit.position, normal, &req.ray,
                                      req.depth};
-            for (const LightSample& s : lightArriving(point))
-                for (const ShadedLayer& l : layers)
-                    if (usesLights(*l.finish))
-                        color += l.through * directLight(*l.finish, l.pigment, normal, rayDir, lights[i], s);
+            const std::span<const LightSample> samples = lightArriving(point);
+            for (std::size_t k = 0; k < samples.size(); ++k)
+                for (std::size_t j = 0; j < layers.size(); ++j) {
+                    const ShadedLayer& l = layers[j];
+                    if (!usesLights(*l.finish)) continue;
+                    const double grain = l.finish->crand > 0.0 ? l.finish->crand * req.grain.draw(i, k, j) : 0.0;
+                    color += l.through * directLight(*l.finish, l.pigment, l.normal, rayDir, lights[i], samples[k], grain);
+                }
         }
     }
     // Reflection (POV-Ray's ComputeReflectivity, ComputeReflection, and the
@@ -247,7 +294,7 @@ Vec3 shadeSurface(const ShadeRequest& req, std::span<const Light> lights,
         const double weight =
             req.weight * l.weight * std::max(reflection.x, std::max(reflection.y, reflection.z));
         if (req.depth < settings.maxTraceLevel && weight >= settings.adcBailout) {
-            const Ray mirror{req.hit.position, reflectDirection(rayDir, normal)};
+            const Ray mirror{req.hit.position, mirrorDirection(rayDir, l.normal, normal)};
             color += reflection * Vec3(traceReflected(mirror, req.depth + 1, weight));
         }
     }

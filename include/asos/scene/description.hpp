@@ -181,6 +181,24 @@ struct Pigment {
     bool operator==(const Pigment&) const = default;
 };
 
+// POV-Ray's normal { … }: a pattern that tilts the surface normal (its
+// core/material/normal.cpp). The five normal-only patterns add a vector of
+// their own; any other pattern (`Pattern`, a map pattern kept in `pattern`)
+// tilts the normal by its slope, POV-Ray's finite differences over four
+// points `accuracy` away.
+struct Normal {
+    enum class Kind { Bumps, Dents, Wrinkles, Ripples, Waves, Pattern };
+    Kind kind = Kind::Bumps;
+    // The pattern space (worldFromPattern), turbulence with octaves, omega
+    // and lambda, frequency and phase (ripples, waves, and the map
+    // patterns' wave), the noise generator (dents, the map patterns); for
+    // Pattern, its kind and parameters. Its colours and map are unused.
+    Pigment pattern;
+    double amount = 0.5;     // the bump size: the number after the pattern, or bump_size
+    double accuracy = 0.02;  // POV-Ray's Delta, for Pattern
+    bool operator==(const Normal&) const = default;
+};
+
 struct Finish {
     Vec3 ambient{0.1};
     double diffuse = 0.6;
@@ -190,12 +208,18 @@ struct Finish {
     double specular = 0.0;
     double roughness = 0.05;
     Vec3 reflection{0.0};
+    // POV-Ray's graininess: each light's diffuse intensity less crand times
+    // a random number in [0, 1) (docs/rendering.md, "crand").
+    double crand = 0.0;
+    bool operator==(const Finish&) const = default;
 };
 
-// One layer of a texture: its pigment and the finish it is lit with.
+// One layer of a texture: its pigment, the finish it is lit with and the
+// normal pattern that tilts its surface normal, if any.
 struct TextureLayer {
     Pigment pigment;
     Finish finish;
+    std::optional<Normal> normal;
 };
 
 // The texture's own pigment and finish are its bottom layer. `above` holds
