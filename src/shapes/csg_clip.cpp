@@ -187,34 +187,57 @@ CsgClip::Side CsgClip::side(std::uint32_t index, const PreparedCone& cone) const
     return node.all ? Side::In : Side::Out;
 }
 
-ConeClass CsgClip::restrict(const ConeClass& own, const ConeClass& second, const PreparedCone& cone) const {
+ConeClass CsgClip::restrict(const ConeClass& own, const ConeClass& second, const PreparedCone& cone,
+                           FunctionRef<ConeClass(const PreparedCone&)> ownClass) const {
     if (own.coverage == Coverage::Miss) return own;
-    // What the tests say of the crossings within depths [t0, t1].
-    enum class Verdict { Kept, Dropped, Unsure };
-    const auto verdict = [&](double t0, double t1) {
-        PreparedCone span = cone;
-        span.tMin = std::max(cone.tMin, t0);
-        span.tMax = std::min(cone.tMax, t1);
-        Verdict v = Verdict::Kept;
-        for (const Test& t : tests) {
-            const Side s = side(t.node, span);
-            if (s == Side::Both) v = Verdict::Unsure;
-            else if ((s == Side::In) != t.wanted) return Verdict::Dropped;
-        }
-        return v;
-    };
-    const Verdict first = verdict(own.tNear, own.tFar);
+    const Verdict first = verdict(own.tNear, own.tFar, cone, ownClass, kSpanSplits);
     // Every nearest crossing kept: the leaf's own answer.
     if (first == Verdict::Kept) return own;
-    const Verdict later = second.coverage == Coverage::Miss ? Verdict::Dropped : verdict(second.tNear, second.tFar);
-    if (first == Verdict::Dropped && later == Verdict::Dropped) return {};
+    const Verdict later = second.coverage == Coverage::Miss
+                              ? Verdict::None
+                              : verdict(second.tNear, second.tFar, cone, ownClass, kSpanSplits);
+    const bool firstDropped = first == Verdict::Dropped || first == Verdict::None;
+    const bool laterDropped = later == Verdict::Dropped || later == Verdict::None;
+    if (firstDropped && laterDropped) return {};
     ConeClass out = own;
     out.coverage = Coverage::Marginal;
     out.singleEdge = false;
     out.creaseParts = 0;
-    if (first == Verdict::Dropped) out.tNear = second.tNear;
-    if (later != Verdict::Dropped) out.tFar = first == Verdict::Dropped ? second.tFar : std::max(own.tFar, second.tFar);
+    if (firstDropped) out.tNear = second.tNear;
+    if (!laterDropped) out.tFar = firstDropped ? second.tFar : std::max(own.tFar, second.tFar);
     return out;
+}
+
+CsgClip::Verdict CsgClip::verdict(double t0, double t1, const PreparedCone& cone,
+                                  FunctionRef<ConeClass(const PreparedCone&)> ownClass, int splits) const {
+    PreparedCone span = cone;
+    span.tMin = std::max(cone.tMin, t0);
+    span.tMax = std::min(cone.tMax, t1);
+    Verdict v = Verdict::Kept;
+    for (const Test& t : tests) {
+        const Side s = side(t.node, span);
+        if (s == Side::Both) v = Verdict::Unsure;
+        else if ((s == Side::In) != t.wanted) return Verdict::Dropped;
+    }
+    // Unsure over the whole span: its halves' boxes are smaller (the box
+    // around a span grows with its length), and a half the leaf's surface
+    // does not cross holds no crossing to keep or drop.
+    if (v != Verdict::Unsure || splits == 0 || !(span.tMax > span.tMin) || !std::isfinite(span.tMax)) return v;
+    const double mid = 0.5 * (span.tMin + span.tMax);
+    Verdict joined = Verdict::None;
+    for (const auto& [a, b] : {std::pair{span.tMin, mid}, std::pair{mid, span.tMax}}) {
+        PreparedCone half = span;
+        half.tMin = a;
+        half.tMax = b;
+        const ConeClass k = ownClass(half);
+        if (k.coverage == Coverage::Miss) continue;
+        const Verdict h = verdict(std::max(a, k.tNear), std::min(b, k.tFar), cone, ownClass, splits - 1);
+        if (h == Verdict::Unsure) return h;
+        if (h == Verdict::None) continue;
+        if (joined != Verdict::None && joined != h) return Verdict::Unsure;
+        joined = h;
+    }
+    return joined;
 }
 
 CsgClip makeCsgClip(const CsgShape& shape, const Transform& worldFromObject) {

@@ -19,6 +19,37 @@ Bounds3 padded(Bounds3 b) {
     return {b.lo - pad, b.hi + pad};
 }
 
+// The depths within which every ray of the cone that meets the box leaves
+// it: a ray leaves a box through the nearest of its three far slab planes,
+// at (face - a) / v along a local axis where its local direction has the
+// component v (the face ahead of v's sign), and each component's range over
+// the cone is the row's projection's. Empty (lo > hi) where that is not
+// bounded (a cone over a half-space and more).
+std::pair<double, double> boxExits(const Box& box, const LocalFrame& frame, const PreparedCone& cone) {
+    if (!(cone.cosHalf > 0.0)) return {kInfinity, -kInfinity};
+    const Vec3 a = frame.pointToLocal(cone.apex);
+    double lower = kInfinity, upper = kInfinity;
+    for (int i = 0; i < 3; ++i) {
+        const Vec3 row = frame.kind == LocalFrame::Kind::Translate
+                             ? Vec3(i == 0, i == 1, i == 2)
+                             : Vec3(frame.localFromWorld[0][i], frame.localFromWorld[1][i], frame.localFromWorld[2][i]);
+        const double len = glm::length(row), along = glm::dot(row, cone.axis);
+        const double across = glm::length(glm::cross(row, cone.axis));
+        const double pad = kThousandsOfUlps * len;
+        const double hiV = along >= len * cone.cosHalf ? len : along * cone.cosHalf + across * cone.sinHalf + pad;
+        const double loV = along <= -len * cone.cosHalf ? -len : along * cone.cosHalf - across * cone.sinHalf - pad;
+        // A ray that meets the box lies within the slab behind the face it
+        // heads for.
+        const double toHi = std::max(box.hi()[i] - a[i], 0.0), toLo = std::max(a[i] - box.lo()[i], 0.0);
+        if (hiV > 0.0) lower = std::min(lower, toHi / hiV);
+        if (loV < 0.0) lower = std::min(lower, toLo / -loV);
+        if (loV > 0.0) upper = std::min(upper, toHi / loV);
+        if (hiV < 0.0) upper = std::min(upper, toLo / -hiV);
+    }
+    const double tol = kPositionTolerance * (1.0 + l1Norm(cone.apex) + l1Norm(box.lo()) + l1Norm(box.hi()));
+    return {lower * (1.0 - kThousandsOfUlps) - tol, upper * (1.0 + kThousandsOfUlps) + tol};
+}
+
 }  // namespace
 
 Primitive::Primitive(LocalShape shape, LocalFrame frame, const char* name)
@@ -135,8 +166,18 @@ ConeClass Primitive::classify(const PreparedCone& cone) const {
         PreparedCone beyond = cone;
         beyond.tMin = std::max(cone.tMin, own.tFar);
         second = classifyOwn(beyond);
+        // A box's later crossings are where the rays leave it: its answer
+        // from inside says only Marginal over its whole depth.
+        if (const Box* box = std::get_if<Box>(&shape_); box && second.coverage == Coverage::Marginal) {
+            const auto [lower, upper] = boxExits(*box, frame_, cone);
+            if (lower <= upper) {
+                second.tNear = std::max(second.tNear, lower);
+                second.tFar = std::min(second.tFar, upper);
+                if (second.tNear > second.tFar) second = {};
+            }
+        }
     }
-    return clip_->restrict(own, second, cone);
+    return clip_->restrict(own, second, cone, [this](const PreparedCone& part) { return classifyOwn(part); });
 }
 
 ConeClass Primitive::classifyOwn(const PreparedCone& cone) const {

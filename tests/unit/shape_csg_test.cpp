@@ -243,6 +243,25 @@ TEST_CASE("A CSG leaf's cone classification", "[shapes][csg]") {
     CHECK(sphere.classify(atCorner).coverage == Coverage::Miss);
 }
 
+TEST_CASE("An oblique cone through a window cut in a wall misses both leaves", "[shapes][csg]") {
+    // examples/bench/csg_room.pov's back wall. Over the depths of the wall's
+    // (and the cut's) crossings the box around the oblique cone reaches
+    // past the cut; its halves and the cut box's exit depths lie within.
+    TreeBuilder b;
+    const auto root = b.compound(Op::Difference);
+    b.attach(root, b.leaf(BoxShape{{-3, 0, 3}, {3, 3, 3.15}}));
+    b.attach(root, b.leaf(BoxShape{{-2.2, 1, 2.9}, {-0.8, 2.3, 3.3}}));
+    const Primitive wall = b.make(0), cut = b.make(1);
+    const Vec3 eye{2.0, 2.1, -2.4};
+    const Cone through{eye, Vec3{-1.5, 1.65, 3.075} - eye, 0.003};
+    CHECK(wall.classify(through).coverage == Coverage::Miss);
+    CHECK(cut.classify(through).coverage == Coverage::Miss);
+    // Beside the window the wall is whole.
+    const Cone beside{eye, Vec3{0.5, 1.65, 3.0} - eye, 0.003};
+    CHECK(wall.classify(beside).coverage == Coverage::Full);
+    CHECK(cut.classify(beside).coverage == Coverage::Miss);
+}
+
 namespace {
 
 // A random leaf shape about the origin, `size` across, and a point of its

@@ -21,6 +21,7 @@
 #include "asos/shapes/local_cone.hpp"
 #include "asos/shapes/primitive.hpp"
 #include "asos/shapes/shape_issue.hpp"
+#include "asos/util/function_ref.hpp"
 
 namespace asos {
 
@@ -71,8 +72,19 @@ struct CsgClip {
     // of its later ones (`second`: the leaf classified past own.tFar; Miss
     // for a flat leaf): the own answer where every nearest crossing is
     // kept, Miss where every crossing is dropped, else Marginal over the
-    // depths whose crossings may be kept.
-    ConeClass restrict(const ConeClass& own, const ConeClass& second, const PreparedCone& cone) const;
+    // depths whose crossings may be kept. ownClass is the leaf's own
+    // classification (without the clip) of a part of the cone.
+    ConeClass restrict(const ConeClass& own, const ConeClass& second, const PreparedCone& cone,
+                       FunctionRef<ConeClass(const PreparedCone&)> ownClass) const;
+
+private:
+    // What the tests say of the leaf's crossings within a span of depth:
+    // all kept, all dropped, not known, or none there.
+    enum class Verdict : std::uint8_t { Kept, Dropped, Unsure, None };
+    // A span the tests leave unsure is split in halves, `splits` deep.
+    static constexpr int kSpanSplits = 3;
+    Verdict verdict(double t0, double t1, const PreparedCone& cone,
+                    FunctionRef<ConeClass(const PreparedCone&)> ownClass, int splits) const;
 };
 
 // A leaf's world transform: worldFromObject (the Object's) after the
