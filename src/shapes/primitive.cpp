@@ -62,12 +62,16 @@ Primitive::Primitive(LocalShape shape, LocalFrame frame, const char* name)
     bounded_ = std::isfinite(localSphere_.radius);
 }
 
-Primitive Primitive::makeCsgLeaf(const CsgShape& shape, const Transform& worldFromObject) {
-    std::vector<ShapeIssue> issues = validate(shape);
-    if (!issues.empty()) throw std::invalid_argument(std::move(issues.front().message));
+Primitive Primitive::makeCsgLeaf(const CsgShape& shape, const Transform& worldFromObject,
+                                 CsgSolidCache& solids) {
+    // The tree is checked once for all its leaves (makeCsgSolid), each leaf's
+    // index here.
+    if (!shape.tree || shape.leaf >= shape.tree->leaves.size())
+        throw std::invalid_argument(std::move(validate(shape).front().message));
+    std::shared_ptr<const CsgSolid> solid = solids.solidFor(shape, worldFromObject);
     const CsgTree::Leaf& leaf = shape.tree->leaves[shape.leaf];
     Primitive p = make(leaf.shape, csgLeafTransform(worldFromObject, leaf.worldFromObject));
-    auto clip = std::make_shared<CsgClip>(makeCsgClip(shape, worldFromObject));
+    auto clip = std::make_shared<CsgClip>(makeCsgClip(shape, std::move(solid)));
     clip->flat = p.visit([](const auto& s) { return s.holdingPlanes(Vec3(0.0)).flat; });
     // Its box: the leaf's, within every subtree a kept hit must be inside
     // (an intersection's members, a difference's first); left as the
@@ -346,6 +350,31 @@ bool Primitive::outside(const BeamHull& hull) const {
             return false;
         }
     });
+}
+
+bool Primitive::keptWithin(const Primitive& solid, const PreparedCone& cone) const {
+    if (!clip_ || !solid.clip_ || clip_->solid != solid.clip_->solid) return false;
+    const CsgSolid& whole = *clip_->solid;
+    const std::uint32_t node = solid.clip_->leafNode;
+    const CsgSolid::Node& leaf = whole.nodes[node];
+    // The region is the leaf's own closed convex surface (not an open tube),
+    // not inverted.
+    if (leaf.flip || leaf.region < 0 || !solid.visit([](const auto& s) { return s.convex(); })) return false;
+    const Primitive& region = whole.regions[static_cast<std::size_t>(leaf.region)];
+    if (!region.bounded()) return false;
+    // No point of the cone before tMin (a ray starting inside the solid)
+    // lies in the solid's box.
+    const Bounds3 b = region.worldBounds();
+    const Vec3 pad(std::max(cone.tMin, 0.0) + kPositionTolerance * (1.0 + l1Norm(cone.apex)));
+    const Vec3 lo = b.lo - pad, hi = b.hi + pad;
+    if (cone.apex.x >= lo.x && cone.apex.x <= hi.x && cone.apex.y >= lo.y && cone.apex.y <= hi.y &&
+        cone.apex.z >= lo.z && cone.apex.z <= hi.z)
+        return false;
+    for (const CsgClip::Test& t : clip_->tests)
+        if (t.wanted && t.except != node && whole.nodes[t.node].all)
+            for (std::uint32_t c : whole.nodes[t.node].children)
+                if (c == node) return true;
+    return false;
 }
 
 bool Primitive::canShadowItself() const {
