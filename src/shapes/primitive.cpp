@@ -353,7 +353,10 @@ bool Primitive::outside(const BeamHull& hull) const {
 }
 
 bool Primitive::keptWithin(const Primitive& solid, const PreparedCone& cone) const {
-    if (!clip_ || !solid.clip_ || clip_->solid != solid.clip_->solid) return false;
+    // Leaves of one object (made with or without a shared solid).
+    if (!clip_ || !solid.clip_ || clip_->solid->tree != solid.clip_->solid->tree ||
+        !(clip_->solid->worldFromObject == solid.clip_->solid->worldFromObject))
+        return false;
     const CsgSolid& whole = *clip_->solid;
     const std::uint32_t node = solid.clip_->leafNode;
     const CsgSolid::Node& leaf = whole.nodes[node];
