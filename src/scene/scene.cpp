@@ -5,6 +5,7 @@
 #include <memory>
 #include <stdexcept>
 
+#include "asos/shapes/csg_clip.hpp"
 #include "asos/shapes/shape_issue.hpp"
 
 namespace asos {
@@ -23,10 +24,11 @@ std::unique_ptr<Scene> Scene::build(SceneDescription description, Diagnostics& d
     byObject.reserve(description.objects.size());
     std::vector<Bounds3> bounds;
     bool ok = true;
+    CsgSolidCache solids;
     for (std::size_t i = 0; i < description.objects.size(); ++i) {
         const Object& object = description.objects[i];
         try {
-            byObject.push_back(Primitive::make(object.shape, object.worldFromObject));
+            byObject.push_back(Primitive::make(object.shape, object.worldFromObject, solids));
         } catch (const std::invalid_argument& e) {
             diagnostics.error(object.loc, e.what());
             ok = false;

@@ -5,6 +5,7 @@
 #include <stdexcept>
 #include <string>
 #include <utility>
+#include <memory>
 
 namespace asos {
 
@@ -37,63 +38,32 @@ Bounds3 intersectionOf(const Bounds3& a, const Bounds3& b) {
 
 const Bounds3 kEverywhere{Vec3(-kInfinity), Vec3(kInfinity)};
 
-// Builds the clip from the description's tree: the inversions pushed down
-// (each node's parity), every node's inside rule, and the leaf's tests.
-class ClipBuilder {
+// Builds the solid from the description's tree: the inversions pushed down
+// (each node's parity), every node's inside rule, box and parent.
+class SolidBuilder {
 public:
-    ClipBuilder(const CsgTree& tree, const Transform& worldFromObject)
-        : tree_(tree), worldFromObject_(worldFromObject) {}
-
-    CsgClip build(std::uint32_t leafNode) {
-        CsgClip clip;
-        clip.nodes.resize(tree_.nodes.size());
-        boxes_.assign(tree_.nodes.size(), kEverywhere);
-        parent_.assign(tree_.nodes.size(), kNone);
-        parity_.assign(tree_.nodes.size(), false);
-        visit(clip, 0, false, false);
-        // The tests, from the leaf up: at each compound above it, the rule
-        // the node applies with its parity (see csg_clip.hpp).
-        clip.inverted = parity_[leafNode];
-        for (std::uint32_t child = leafNode, node = parent_[leafNode]; node != kNone;
-             child = node, node = parent_[node]) {
-            const CsgTree::Op op = tree_.nodes[node].op;
-            const bool odd = parity_[node];
-            // Union: none (odd: an intersection); intersection and
-            // difference: inside the others (odd: a merge); merge: outside
-            // the others (odd: an intersection).
-            const bool intersection = op == CsgTree::Op::Union || op == CsgTree::Op::Merge ? odd : !odd;
-            const bool merge = op == CsgTree::Op::Merge ? !odd : op != CsgTree::Op::Union && odd;
-            if (!intersection && !merge) continue;
-            for (std::uint32_t sibling : tree_.nodes[node].children) {
-                if (sibling == child) continue;
-                clip.tests.push_back({sibling, intersection});
-                if (intersection) clip.keptBounds = intersectionOf(clip.keptBounds, boxes_[sibling]);
-            }
-        }
-        return clip;
-    }
-
-private:
-    static constexpr std::uint32_t kNone = ~std::uint32_t{0};
+    SolidBuilder(CsgSolid& solid) : solid_(solid) {}
 
     // `parity`: the inversions above the node; `extra`: the node is a
     // difference's member after the first (inverted by the difference).
-    void visit(CsgClip& clip, std::uint32_t index, bool parity, bool extra) {
-        const CsgTree::Node& node = tree_.nodes.at(index);
+    void visit(std::uint32_t index, bool parity, bool extra) {
+        const CsgTree& tree = *solid_.tree;
+        const CsgTree::Node& node = tree.nodes.at(index);
         const bool odd = parity != (node.inverse != extra);
-        parity_[index] = odd;
-        CsgClip::Node& out = clip.nodes[index];
+        CsgSolid::Node& out = solid_.nodes[index];
+        out.odd = odd;
         if (node.op == CsgTree::Op::Leaf) {
             out.leaf = true;
             out.flip = odd;
-            const CsgTree::Leaf& leaf = tree_.leaves.at(node.leaf);
+            const CsgTree::Leaf& leaf = tree.leaves.at(node.leaf);
             if (const std::optional<Shape> region = regionRecord(leaf.shape)) {
-                out.region = static_cast<int>(clip.regions.size());
-                clip.regions.push_back(Primitive::make(*region, csgLeafTransform(worldFromObject_, leaf.worldFromObject)));
-                const Primitive& p = clip.regions.back();
-                if (!odd && p.bounded()) boxes_[index] = p.worldBounds();
+                out.region = static_cast<int>(solid_.regions.size());
+                solid_.regions.push_back(
+                    Primitive::make(*region, csgLeafTransform(solid_.worldFromObject, leaf.worldFromObject)));
+                const Primitive& p = solid_.regions.back();
+                if (!odd && p.bounded()) out.box = p.worldBounds();
             } else {
-                boxes_[index] = Bounds3{};  // never inside: holds nothing
+                out.box = Bounds3{};  // never inside: holds nothing
             }
             return;
         }
@@ -105,19 +75,17 @@ private:
         Bounds3 box = out.all ? kEverywhere : Bounds3{};
         for (std::size_t i = 0; i < node.children.size(); ++i) {
             const std::uint32_t c = node.children[i];
-            parent_.at(c) = index;
-            visit(clip, c, odd, node.op == CsgTree::Op::Difference && i > 0);
-            box = out.all ? intersectionOf(box, boxes_[c]) : unionOf(box, boxes_[c]);
+            solid_.nodes.at(c).parent = index;
+            visit(c, odd, node.op == CsgTree::Op::Difference && i > 0);
+            const Bounds3& child = solid_.nodes[c].box;
+            box = solid_.nodes[index].all ? intersectionOf(box, child) : unionOf(box, child);
         }
         // An inverted subtree's inside is unbounded.
-        boxes_[index] = box;
+        solid_.nodes[index].box = box;
     }
 
-    const CsgTree& tree_;
-    const Transform& worldFromObject_;
-    std::vector<Bounds3> boxes_;         // a box holding each node's inside (POV-Ray's, with its parity)
-    std::vector<std::uint32_t> parent_;  // kNone for the root
-    std::vector<bool> parity_;           // each node's inversions, its own and its ancestors'
+private:
+    CsgSolid& solid_;
 };
 
 }  // namespace
@@ -128,7 +96,7 @@ Transform csgLeafTransform(const Transform& worldFromObject, const Transform& le
     return worldFromObject * leaf;
 }
 
-bool CsgClip::inside(std::uint32_t index, const Vec3& worldPoint) const {
+bool CsgSolid::inside(std::uint32_t index, const Vec3& worldPoint) const {
     const Node& node = nodes[index];
     if (node.leaf) return node.region >= 0 && regions[static_cast<std::size_t>(node.region)].inside(worldPoint) != node.flip;
     for (std::uint32_t c : node.children)
@@ -138,11 +106,12 @@ bool CsgClip::inside(std::uint32_t index, const Vec3& worldPoint) const {
 
 bool CsgClip::keeps(const Vec3& worldPoint) const {
     for (const Test& t : tests)
-        if (inside(t.node, worldPoint) != t.wanted) return false;
+        for (std::uint32_t c : solid->nodes[t.node].children)
+            if (c != t.except && solid->inside(c, worldPoint) != t.wanted) return false;
     return true;
 }
 
-CsgClip::Side CsgClip::side(std::uint32_t index, const PreparedCone& cone) const {
+CsgSolid::Side CsgSolid::side(std::uint32_t index, const PreparedCone& cone) const {
     const Node& node = nodes[index];
     if (node.leaf) {
         if (node.region < 0) return Side::Out;
@@ -187,41 +156,103 @@ CsgClip::Side CsgClip::side(std::uint32_t index, const PreparedCone& cone) const
     return node.all ? Side::In : Side::Out;
 }
 
-ConeClass CsgClip::restrict(const ConeClass& own, const ConeClass& second, const PreparedCone& cone) const {
+ConeClass CsgClip::restrict(const ConeClass& own, const ConeClass& second, const PreparedCone& cone,
+                           FunctionRef<ConeClass(const PreparedCone&)> ownClass) const {
     if (own.coverage == Coverage::Miss) return own;
-    // What the tests say of the crossings within depths [t0, t1].
-    enum class Verdict { Kept, Dropped, Unsure };
-    const auto verdict = [&](double t0, double t1) {
-        PreparedCone span = cone;
-        span.tMin = std::max(cone.tMin, t0);
-        span.tMax = std::min(cone.tMax, t1);
-        Verdict v = Verdict::Kept;
-        for (const Test& t : tests) {
-            const Side s = side(t.node, span);
-            if (s == Side::Both) v = Verdict::Unsure;
-            else if ((s == Side::In) != t.wanted) return Verdict::Dropped;
-        }
-        return v;
-    };
-    const Verdict first = verdict(own.tNear, own.tFar);
+    const Verdict first = verdict(own.tNear, own.tFar, cone, ownClass, kSpanSplits);
     // Every nearest crossing kept: the leaf's own answer.
     if (first == Verdict::Kept) return own;
-    const Verdict later = second.coverage == Coverage::Miss ? Verdict::Dropped : verdict(second.tNear, second.tFar);
-    if (first == Verdict::Dropped && later == Verdict::Dropped) return {};
+    const Verdict later = second.coverage == Coverage::Miss
+                              ? Verdict::None
+                              : verdict(second.tNear, second.tFar, cone, ownClass, kSpanSplits);
+    const bool firstDropped = first == Verdict::Dropped || first == Verdict::None;
+    const bool laterDropped = later == Verdict::Dropped || later == Verdict::None;
+    if (firstDropped && laterDropped) return {};
     ConeClass out = own;
     out.coverage = Coverage::Marginal;
     out.singleEdge = false;
     out.creaseParts = 0;
-    if (first == Verdict::Dropped) out.tNear = second.tNear;
-    if (later != Verdict::Dropped) out.tFar = first == Verdict::Dropped ? second.tFar : std::max(own.tFar, second.tFar);
+    if (firstDropped) out.tNear = second.tNear;
+    if (!laterDropped) out.tFar = firstDropped ? second.tFar : std::max(own.tFar, second.tFar);
     return out;
 }
 
-CsgClip makeCsgClip(const CsgShape& shape, const Transform& worldFromObject) {
+CsgClip::Verdict CsgClip::verdict(double t0, double t1, const PreparedCone& cone,
+                                  FunctionRef<ConeClass(const PreparedCone&)> ownClass, int splits) const {
+    PreparedCone span = cone;
+    span.tMin = std::max(cone.tMin, t0);
+    span.tMax = std::min(cone.tMax, t1);
+    Verdict v = Verdict::Kept;
+    for (const Test& t : tests)
+        for (std::uint32_t c : solid->nodes[t.node].children) {
+            if (c == t.except) continue;
+            const Side s = solid->side(c, span);
+            if (s == Side::Both) v = Verdict::Unsure;
+            else if ((s == Side::In) != t.wanted) return Verdict::Dropped;
+        }
+    // Unsure over the whole span: its halves' boxes are smaller (the box
+    // around a span grows with its length), and a half the leaf's surface
+    // does not cross holds no crossing to keep or drop.
+    if (v != Verdict::Unsure || splits == 0 || !(span.tMax > span.tMin) || !std::isfinite(span.tMax)) return v;
+    const double mid = 0.5 * (span.tMin + span.tMax);
+    Verdict joined = Verdict::None;
+    for (const auto& [a, b] : {std::pair{span.tMin, mid}, std::pair{mid, span.tMax}}) {
+        PreparedCone half = span;
+        half.tMin = a;
+        half.tMax = b;
+        const ConeClass k = ownClass(half);
+        if (k.coverage == Coverage::Miss) continue;
+        const Verdict h = verdict(std::max(a, k.tNear), std::min(b, k.tFar), cone, ownClass, splits - 1);
+        if (h == Verdict::Unsure) return h;
+        if (h == Verdict::None) continue;
+        if (joined != Verdict::None && joined != h) return Verdict::Unsure;
+        joined = h;
+    }
+    return joined;
+}
+
+std::shared_ptr<const CsgSolid> makeCsgSolid(const CsgShape& shape, const Transform& worldFromObject) {
+    std::vector<ShapeIssue> issues = validate(shape);
+    if (!issues.empty()) throw std::invalid_argument(std::move(issues.front().message));
+    auto solid = std::make_shared<CsgSolid>();
+    solid->tree = shape.tree;
+    solid->worldFromObject = worldFromObject;
+    solid->nodes.resize(shape.tree->nodes.size());
+    SolidBuilder(*solid).visit(0, false, false);
+    return solid;
+}
+
+std::shared_ptr<const CsgSolid> CsgSolidCache::solidFor(const CsgShape& shape, const Transform& worldFromObject) {
+    if (!last_ || last_->tree != shape.tree || !(last_->worldFromObject == worldFromObject))
+        last_ = makeCsgSolid(shape, worldFromObject);
+    return last_;
+}
+
+CsgClip makeCsgClip(const CsgShape& shape, std::shared_ptr<const CsgSolid> solid) {
+    CsgClip clip;
     const CsgTree& tree = *shape.tree;
-    ClipBuilder builder(tree, worldFromObject);
     const std::uint32_t leafNode = tree.leaves.at(shape.leaf).node;
-    CsgClip clip = builder.build(leafNode);
+    // The tests, from the leaf up: at each compound above it, the rule the
+    // node applies with its parity (see csg_clip.hpp).
+    clip.leafNode = leafNode;
+    clip.inverted = solid->nodes[leafNode].odd;
+    for (std::uint32_t child = leafNode, node = solid->nodes[leafNode].parent; node != CsgSolid::kNoNode;
+         child = node, node = solid->nodes[node].parent) {
+        const CsgTree::Op op = tree.nodes[node].op;
+        const bool odd = solid->nodes[node].odd;
+        // Union: none (odd: an intersection); intersection and difference:
+        // inside the others (odd: a merge); merge: outside the others (odd:
+        // an intersection).
+        const bool intersection = op == CsgTree::Op::Union || op == CsgTree::Op::Merge ? odd : !odd;
+        const bool merge = op == CsgTree::Op::Merge ? !odd : op != CsgTree::Op::Union && odd;
+        if (!intersection && !merge) continue;
+        if (tree.nodes[node].children.size() < 2) continue;
+        clip.tests.push_back({node, child, intersection});
+        if (intersection)
+            for (std::uint32_t sibling : tree.nodes[node].children)
+                if (sibling != child) clip.keptBounds = intersectionOf(clip.keptBounds, solid->nodes[sibling].box);
+    }
+    clip.solid = std::move(solid);
     return clip;
 }
 

@@ -70,6 +70,10 @@ bool surelyInFront(const Primitive& front, const ConeClass& frontClass, const Pr
                    const ConeClass& backClass, const PreparedCone& cone) {
     if (frontClass.tFar < backClass.tNear) return true;
     if (!cone.valid) return false;
+    // What a CSG leaf keeps inside the solid of another leaf that every ray
+    // meets (a hole's wall inside the box it is cut in) lies past that
+    // leaf's entry hit on each ray.
+    if (frontClass.coverage == Coverage::Full && back.keptWithin(front, cone)) return true;
     const HoldingPlanes fs = front.holdingPlanes(cone.apex);
     const HoldingPlanes bs = back.holdingPlanes(cone.apex);
     const double size = l1Norm(cone.apex) + sizeOf(front) + sizeOf(back);

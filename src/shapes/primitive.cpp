@@ -19,6 +19,37 @@ Bounds3 padded(Bounds3 b) {
     return {b.lo - pad, b.hi + pad};
 }
 
+// The depths within which every ray of the cone that meets the box leaves
+// it: a ray leaves a box through the nearest of its three far slab planes,
+// at (face - a) / v along a local axis where its local direction has the
+// component v (the face ahead of v's sign), and each component's range over
+// the cone is the row's projection's. Empty (lo > hi) where that is not
+// bounded (a cone over a half-space and more).
+std::pair<double, double> boxExits(const Box& box, const LocalFrame& frame, const PreparedCone& cone) {
+    if (!(cone.cosHalf > 0.0)) return {kInfinity, -kInfinity};
+    const Vec3 a = frame.pointToLocal(cone.apex);
+    double lower = kInfinity, upper = kInfinity;
+    for (int i = 0; i < 3; ++i) {
+        const Vec3 row = frame.kind == LocalFrame::Kind::Translate
+                             ? Vec3(i == 0, i == 1, i == 2)
+                             : Vec3(frame.localFromWorld[0][i], frame.localFromWorld[1][i], frame.localFromWorld[2][i]);
+        const double len = glm::length(row), along = glm::dot(row, cone.axis);
+        const double across = glm::length(glm::cross(row, cone.axis));
+        const double pad = kThousandsOfUlps * len;
+        const double hiV = along >= len * cone.cosHalf ? len : along * cone.cosHalf + across * cone.sinHalf + pad;
+        const double loV = along <= -len * cone.cosHalf ? -len : along * cone.cosHalf - across * cone.sinHalf - pad;
+        // A ray that meets the box lies within the slab behind the face it
+        // heads for.
+        const double toHi = std::max(box.hi()[i] - a[i], 0.0), toLo = std::max(a[i] - box.lo()[i], 0.0);
+        if (hiV > 0.0) lower = std::min(lower, toHi / hiV);
+        if (loV < 0.0) lower = std::min(lower, toLo / -loV);
+        if (loV > 0.0) upper = std::min(upper, toHi / loV);
+        if (hiV < 0.0) upper = std::min(upper, toLo / -hiV);
+    }
+    const double tol = kPositionTolerance * (1.0 + l1Norm(cone.apex) + l1Norm(box.lo()) + l1Norm(box.hi()));
+    return {lower * (1.0 - kThousandsOfUlps) - tol, upper * (1.0 + kThousandsOfUlps) + tol};
+}
+
 }  // namespace
 
 Primitive::Primitive(LocalShape shape, LocalFrame frame, const char* name)
@@ -31,12 +62,16 @@ Primitive::Primitive(LocalShape shape, LocalFrame frame, const char* name)
     bounded_ = std::isfinite(localSphere_.radius);
 }
 
-Primitive Primitive::makeCsgLeaf(const CsgShape& shape, const Transform& worldFromObject) {
-    std::vector<ShapeIssue> issues = validate(shape);
-    if (!issues.empty()) throw std::invalid_argument(std::move(issues.front().message));
+Primitive Primitive::makeCsgLeaf(const CsgShape& shape, const Transform& worldFromObject,
+                                 CsgSolidCache& solids) {
+    // The tree is checked once for all its leaves (makeCsgSolid), each leaf's
+    // index here.
+    if (!shape.tree || shape.leaf >= shape.tree->leaves.size())
+        throw std::invalid_argument(std::move(validate(shape).front().message));
+    std::shared_ptr<const CsgSolid> solid = solids.solidFor(shape, worldFromObject);
     const CsgTree::Leaf& leaf = shape.tree->leaves[shape.leaf];
     Primitive p = make(leaf.shape, csgLeafTransform(worldFromObject, leaf.worldFromObject));
-    auto clip = std::make_shared<CsgClip>(makeCsgClip(shape, worldFromObject));
+    auto clip = std::make_shared<CsgClip>(makeCsgClip(shape, std::move(solid)));
     clip->flat = p.visit([](const auto& s) { return s.holdingPlanes(Vec3(0.0)).flat; });
     // Its box: the leaf's, within every subtree a kept hit must be inside
     // (an intersection's members, a difference's first); left as the
@@ -135,8 +170,18 @@ ConeClass Primitive::classify(const PreparedCone& cone) const {
         PreparedCone beyond = cone;
         beyond.tMin = std::max(cone.tMin, own.tFar);
         second = classifyOwn(beyond);
+        // A box's later crossings are where the rays leave it: its answer
+        // from inside says only Marginal over its whole depth.
+        if (const Box* box = std::get_if<Box>(&shape_); box && second.coverage == Coverage::Marginal) {
+            const auto [lower, upper] = boxExits(*box, frame_, cone);
+            if (lower <= upper) {
+                second.tNear = std::max(second.tNear, lower);
+                second.tFar = std::min(second.tFar, upper);
+                if (second.tNear > second.tFar) second = {};
+            }
+        }
     }
-    return clip_->restrict(own, second, cone);
+    return clip_->restrict(own, second, cone, [this](const PreparedCone& part) { return classifyOwn(part); });
 }
 
 ConeClass Primitive::classifyOwn(const PreparedCone& cone) const {
@@ -305,6 +350,34 @@ bool Primitive::outside(const BeamHull& hull) const {
             return false;
         }
     });
+}
+
+bool Primitive::keptWithin(const Primitive& solid, const PreparedCone& cone) const {
+    // Leaves of one object (made with or without a shared solid).
+    if (!clip_ || !solid.clip_ || clip_->solid->tree != solid.clip_->solid->tree ||
+        !(clip_->solid->worldFromObject == solid.clip_->solid->worldFromObject))
+        return false;
+    const CsgSolid& whole = *clip_->solid;
+    const std::uint32_t node = solid.clip_->leafNode;
+    const CsgSolid::Node& leaf = whole.nodes[node];
+    // The region is the leaf's own closed convex surface (not an open tube),
+    // not inverted.
+    if (leaf.flip || leaf.region < 0 || !solid.visit([](const auto& s) { return s.convex(); })) return false;
+    const Primitive& region = whole.regions[static_cast<std::size_t>(leaf.region)];
+    if (!region.bounded()) return false;
+    // No point of the cone before tMin (a ray starting inside the solid)
+    // lies in the solid's box.
+    const Bounds3 b = region.worldBounds();
+    const Vec3 pad(std::max(cone.tMin, 0.0) + kPositionTolerance * (1.0 + l1Norm(cone.apex)));
+    const Vec3 lo = b.lo - pad, hi = b.hi + pad;
+    if (cone.apex.x >= lo.x && cone.apex.x <= hi.x && cone.apex.y >= lo.y && cone.apex.y <= hi.y &&
+        cone.apex.z >= lo.z && cone.apex.z <= hi.z)
+        return false;
+    for (const CsgClip::Test& t : clip_->tests)
+        if (t.wanted && t.except != node && whole.nodes[t.node].all)
+            for (std::uint32_t c : whole.nodes[t.node].children)
+                if (c == node) return true;
+    return false;
 }
 
 bool Primitive::canShadowItself() const {

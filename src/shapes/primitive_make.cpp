@@ -31,10 +31,15 @@ Primitive Primitive::fromPlaced(std::variant<Placed<S>...>&& placed) {
 }
 
 Primitive Primitive::make(const Shape& shape, const Transform& worldFromObject) {
+    CsgSolidCache solids;
+    return make(shape, worldFromObject, solids);
+}
+
+Primitive Primitive::make(const Shape& shape, const Transform& worldFromObject, CsgSolidCache& solids) {
     return std::visit(
         [&]<class R>(const R& record) {
             if constexpr (std::is_same_v<R, CsgShape>) {
-                return makeCsgLeaf(record, worldFromObject);
+                return makeCsgLeaf(record, worldFromObject, solids);
             } else {
                 std::vector<ShapeIssue> issues = validate(record);
                 if (!issues.empty()) throw std::invalid_argument(std::move(issues.front().message));

@@ -37,6 +37,7 @@
 namespace asos {
 
 struct CsgClip;
+class CsgSolidCache;
 
 // A sphere placed by a translation only, as Sphere's static tests take it:
 // the local ray is the world ray shifted by localOffset. The scene keeps these
@@ -56,6 +57,9 @@ public:
     // keeps the part of its surface bounding the tree's solid (csg_clip.hpp);
     // every answer below is then that part's.
     static Primitive make(const Shape& shape, const Transform& worldFromObject);
+    // The same, a CSG leaf sharing its object's solid (csg_clip.hpp) with
+    // the leaf made before it where that is of the same object.
+    static Primitive make(const Shape& shape, const Transform& worldFromObject, CsgSolidCache& solids);
 
     bool bounded() const;         // false for planes (unless a CSG bounds them)
     Bounds3 worldBounds() const;  // tight-ish, conservative; unspecified when !bounded()
@@ -122,6 +126,13 @@ public:
     // lies on one side of it. Conservative: false where neither shows it.
     bool outside(const BeamHull& hull) const;
 
+    // Whether every point this CSG leaf keeps lies inside `solid`'s closed
+    // convex solid (a box, sphere or capped cylinder or cone of the same CSG
+    // object, not inverted, that the leaf's hits must be inside: the hole
+    // cut in a box inside that box), with the cone's start points outside
+    // that solid's box; each ray of the cone then meets `solid`'s surface
+    // before any such point. False for anything else.
+    bool keptWithin(const Primitive& solid, const PreparedCone& cone) const;
     // Whether the primitive can cast a shadow on itself where it faces a
     // light: a surface neither convex nor flat (an open cylinder or cone).
     // The shadow tests leave the shaded object out otherwise.
@@ -173,7 +184,7 @@ private:
     // A CSG leaf's answers (clip_ set), out of line.
     std::optional<LocalHit> clippedHit(const Ray& worldRay, double tMin, double tMax) const;
     bool clippedAny(const Ray& worldRay, double tMin, double tMax) const;
-    static Primitive makeCsgLeaf(const CsgShape& shape, const Transform& worldFromObject);
+    static Primitive makeCsgLeaf(const CsgShape& shape, const Transform& worldFromObject, CsgSolidCache& solids);
 
     // A CSG leaf's: which of its hits bound the tree's solid (null: all).
     // First, beside the shape the ray tests read (not on a cache line of
