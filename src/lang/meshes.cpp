@@ -20,6 +20,9 @@ bool isTriangleBlock(const Node& n) {
 // the shape's validate to refuse).
 Vec3 unitNormal(const Vec3& v) {
     const double length = glm::length(v);
+    // One already unit to rounding stays as written, so that a dumped scene
+    // reads back the same.
+    if (std::abs(length - 1.0) <= 4e-16) return v;
     return length > 0.0 && std::isfinite(length) ? v / length : v;
 }
 
