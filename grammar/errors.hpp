@@ -32,6 +32,8 @@ ASOS_BODY_CONTEXT(value_entry, Value, "expected one value (an expression, an obj
 ASOS_BODY_CONTEXT(top_entry, Top, "expected a scene item (camera, light_source, an object, global_settings, background) or a directive, as the macro is called at the top of the scene")
 ASOS_BODY_CONTEXT(object_modifier, ObjectModifier, "expected an object modifier, as the macro is called among an object's modifiers")
 ASOS_BODY_CONTEXT(union_entry, Union, "expected an object, a light_source or an object modifier, as the macro is called in a union")
+ASOS_BODY_CONTEXT(mesh_entry, Mesh, "expected a triangle, a smooth_triangle or an object modifier, as the macro is called in a mesh")
+ASOS_BODY_CONTEXT(mesh2_item, Mesh2List, "expected a vector, as the macro is called in a mesh2's list")
 ASOS_BODY_CONTEXT(light_entry, Light, "expected a light_source item, as the macro is called in a light_source")
 ASOS_BODY_CONTEXT(camera_entry, Camera, "expected a camera item, as the macro is called in a camera")
 ASOS_BODY_CONTEXT(pigment_entry, Pigment, "expected a colour, a pattern, a transform or a pattern modifier, as the macro is called in a pigment")
@@ -171,6 +173,16 @@ template <> inline constexpr auto error_message<quadric_squares> = "expected the
 template <> inline constexpr auto error_message<quadric_mixed> = "expected the quadric's <D, E, F> (of xy, xz, yz)";
 template <> inline constexpr auto error_message<quadric_linear> = "expected the quadric's <G, H, I> (of x, y, z)";
 template <> inline constexpr auto error_message<quadric_constant> = "expected the quadric's constant J";
+template <> inline constexpr auto error_message<torus_major> = "expected the torus' major radius";
+template <> inline constexpr auto error_message<torus_minor> = "expected the torus' minor radius";
+template <> inline constexpr auto error_message<triangle_corner> = "expected a corner of the triangle";
+template <> inline constexpr auto error_message<smooth_triangle_corner> = "expected a corner of the smooth_triangle";
+template <> inline constexpr auto error_message<smooth_triangle_normal> = "expected the normal at the smooth_triangle's corner";
+template <> inline constexpr auto error_message<mesh_end> = "expected a triangle, a smooth_triangle, an object modifier or '}' in the mesh";
+template <> inline constexpr auto error_message<mesh2_count> = "expected the number of entries of the list";
+template <> inline constexpr auto error_message<mesh2_list_end> = "expected a vector or '}' in the list";
+template <> inline constexpr auto error_message<vertex_vectors_block> = "expected vertex_vectors { … }, a mesh2's first list";
+template <> inline constexpr auto error_message<face_indices_block> = "expected face_indices { … } in the mesh2";
 template <> inline constexpr auto error_message<union_end> = "expected an object, a light_source, an object modifier or '}' in the union";
 template <> inline constexpr auto error_message<difference_end> = "expected an object, a light_source, an object modifier or '}' in the difference";
 template <> inline constexpr auto error_message<intersection_end> = "expected an object, a light_source, an object modifier or '}' in the intersection";

@@ -63,6 +63,48 @@ struct quadric_block : if_must<kw_quadric, block_open, quadric_squares, opt_comm
                                quadric_linear, opt_comma, quadric_constant, arguments_end, object_body,
                                object_end> {};
 
+// torus { R, r }
+struct torus_major : seq<expression> {};
+struct torus_minor : seq<expression> {};
+struct torus_block : if_must<kw_torus, block_open, torus_major, opt_comma, torus_minor, arguments_end, object_body,
+                             object_end> {};
+
+// triangle { <a>, <b>, <c> }   smooth_triangle { <a>, <na>, <b>, <nb>, <c>, <nc> }
+struct triangle_corner : seq<expression> {};
+struct triangle_block : if_must<kw_triangle, block_open, triangle_corner, opt_comma, triangle_corner, opt_comma,
+                                triangle_corner, arguments_end, object_body, object_end> {};
+struct smooth_triangle_corner : seq<expression> {};
+struct smooth_triangle_normal : seq<expression> {};
+struct smooth_triangle_block
+    : if_must<kw_smooth_triangle, block_open, smooth_triangle_corner, opt_comma, smooth_triangle_normal, opt_comma,
+              smooth_triangle_corner, opt_comma, smooth_triangle_normal, opt_comma, smooth_triangle_corner, opt_comma,
+              smooth_triangle_normal, arguments_end, object_body, object_end> {};
+
+// mesh { triangles…  modifiers… }: the triangles' entries (a macro called
+// among them reads its body as a mesh's).
+struct mesh_entry : sor<triangle_block, smooth_triangle_block, object_modifier> {};
+struct mesh_end : rbrace {};
+struct mesh_block : if_must<kw_mesh, block_open, arguments_end, entries<mesh_entry>, mesh_end> {};
+
+// mesh2 { vertex_vectors { N, <v>… } [normal_vectors { N, <n>… }]
+//         face_indices { N, <a, b, c>… } [normal_indices { N, <a, b, c>… }]  modifiers… }
+// Each list is its count, then its items as entries (directives and macro
+// calls may make them). POV-Ray's uv_vectors, texture_list and uv_indices are
+// refused by name.
+struct mesh2_count : seq<expression> {};
+struct mesh2_item : seq<expression, opt_comma> {};
+struct mesh2_list_end : rbrace {};
+template <typename Keyword>
+struct mesh2_list
+    : if_must<Keyword, block_open, mesh2_count, opt_comma, arguments_end, entries<mesh2_item>, mesh2_list_end> {};
+struct vertex_vectors_block : mesh2_list<kw_vertex_vectors> {};
+struct normal_vectors_block : mesh2_list<kw_normal_vectors> {};
+struct face_indices_block : mesh2_list<kw_face_indices> {};
+struct normal_indices_block : mesh2_list<kw_normal_indices> {};
+struct mesh2_block : if_must<kw_mesh2, block_open, vertex_vectors_block, opt<normal_vectors_block>,
+                             opt<unsupported_item>, face_indices_block, opt<normal_indices_block>, arguments_end,
+                             object_body, object_end> {};
+
 // --- grouping ---------------------------------------------------------------------
 // union { objects and lights…  modifiers… }
 struct union_entry;
@@ -87,7 +129,8 @@ struct object_block : if_must<kw_object, block_open, object_base, arguments_end,
 
 struct object_statement : sor<sphere_block, box_block, cone_block, cylinder_block, disc_block,
                               polygon_block, plane_block, union_block, difference_block,
-                              intersection_block, merge_block, object_block, quadric_block> {};
+                              intersection_block, merge_block, object_block, quadric_block, torus_block,
+                              triangle_block, smooth_triangle_block, mesh_block, mesh2_block> {};
 
 // --- light_source { <position>, colour  modifiers… } --------------------------------
 struct light_position : seq<expression> {};

@@ -58,6 +58,9 @@ struct ObjectTree {
     CsgTree::Op op = CsgTree::Op::Union;  // Kind::Union: which combination
     bool inverse = false;                  // POV-Ray's `inverse`, toggled by each
     Shape shape;
+    // Kind::Shape: a mesh or mesh2 (its faces; `shape` unused), placed as
+    // one Object per face.
+    std::shared_ptr<const TriangleMesh> mesh;
     Transform worldFromObject;
     std::shared_ptr<const Light> light;      // Kind::Light (shared: changed by copying)
     std::shared_ptr<const Texture> texture;  // its own; null: inherited or the default
@@ -334,6 +337,13 @@ private:
     void flatten(ObjectTree& node, const std::shared_ptr<const Texture>& inherited,
                  bool inheritedNoShadow, const AsosOptions& inheritedAsos);
     void applyObjectModifier(ObjectTree& tree, const Node& n, bool isShape);
+
+    // meshes.cpp
+    // A triangle or smooth_triangle block's face, its corners added to `mesh`.
+    void addTriangle(TriangleMesh& mesh, const Node& block);
+    // A mesh or mesh2 block (its faces and modifiers) into `t`.
+    void evalMesh(const Node& block, ObjectTree& t);
+    void evalMesh2(const Node& block, ObjectTree& t);
     // `at`: the transform item, named when the result would not be finite.
     void applyTransform(ObjectTree& tree, const Transform& m, const Node& at);
     // compose(outer, inner), refused at `at` (the item that added `outer`)

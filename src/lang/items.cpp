@@ -26,7 +26,8 @@ bool isObjectBlock(const Node& n) {
     case Word::Sphere: case Word::Box: case Word::Cone: case Word::Cylinder: case Word::Disc:
     case Word::Polygon: case Word::Plane: case Word::Union: case Word::Object:
     case Word::Difference: case Word::Intersection: case Word::Merge: case Word::LightSource:
-    case Word::Quadric:
+    case Word::Quadric: case Word::Torus: case Word::Triangle: case Word::SmoothTriangle: case Word::Mesh:
+    case Word::Mesh2:
         return true;
     default:
         return false;
@@ -177,6 +178,20 @@ void Interpreter::flatten(ObjectTree& node, const std::shared_ptr<const Texture>
     const AsosOptions asos = inherit(node.asos, inheritedAsos);
     switch (node.kind) {
     case ObjectTree::Kind::Shape: {
+        if (node.mesh) {
+            const auto faces = static_cast<std::uint32_t>(node.mesh->faces.size());
+            const std::shared_ptr<const Texture> interned = texture ? textures_.intern(texture) : defaultTexture_;
+            for (std::uint32_t face = 0; face < faces; ++face) {
+                Object& o = objects_.add();
+                o.shape = TriangleShape{node.mesh, face};
+                o.worldFromObject = node.worldFromObject;
+                o.texture = interned;
+                o.noShadow = noShadow;
+                o.asos = asos;
+                o.loc = node.loc;
+            }
+            return;
+        }
         Object& o = objects_.add();
         o.shape = std::move(node.shape);
         o.worldFromObject = node.worldFromObject;
@@ -218,16 +233,31 @@ void Interpreter::placeCsg(ObjectTree& root, const std::shared_ptr<const Texture
         const auto index = static_cast<std::uint32_t>(tree->nodes.size());
         tree->nodes.emplace_back();
         tree->nodes[index].inverse = node.inverse;
-        if (node.kind == ObjectTree::Kind::Shape) {
+        const auto leafObject = [&](Shape shape, std::uint32_t at) {
             const auto leaf = static_cast<std::uint32_t>(tree->leaves.size());
-            tree->nodes[index].leaf = leaf;
-            tree->leaves.push_back({std::move(node.shape), node.worldFromObject, index});
+            tree->nodes[at].leaf = leaf;
+            tree->leaves.push_back({std::move(shape), node.worldFromObject, at});
             Object& o = objects_.add();
             o.shape = CsgShape{tree, leaf};
             o.texture = texture ? textures_.intern(texture) : defaultTexture_;
             o.noShadow = noShadow;
             o.asos = asos;
-            o.loc = std::move(node.loc);
+            o.loc = node.loc;
+        };
+        if (node.kind == ObjectTree::Kind::Shape && node.mesh) {
+            // A union of its faces: surfaces without an inside, as POV-Ray's
+            // mesh without inside_vector.
+            tree->nodes[index].op = CsgTree::Op::Union;
+            for (std::uint32_t face = 0; face < node.mesh->faces.size(); ++face) {
+                const auto at = static_cast<std::uint32_t>(tree->nodes.size());
+                tree->nodes.emplace_back();
+                leafObject(TriangleShape{node.mesh, face}, at);
+                tree->nodes[index].children.push_back(at);
+            }
+            return index;
+        }
+        if (node.kind == ObjectTree::Kind::Shape) {
+            leafObject(std::move(node.shape), index);
             return index;
         }
         tree->nodes[index].op = node.op;
@@ -311,6 +341,24 @@ ObjectTree Interpreter::evalObject(const Node& block) {
     case Word::Quadric:
         t.shape = QuadricShape{evalVector(args[0]), evalVector(args[1]), evalVector(args[2]), evalFloat(args[3])};
         checkShape();
+        break;
+    case Word::Torus:
+        t.shape = TorusShape{evalFloat(args[0]), evalFloat(args[1]), false};
+        checkShape();
+        break;
+    case Word::Triangle: case Word::SmoothTriangle: {
+        auto mesh = std::make_shared<TriangleMesh>();
+        addTriangle(*mesh, block);
+        t.shape = TriangleShape{std::move(mesh), 0};
+        checkShape();
+        break;
+    }
+    case Word::Mesh:
+        evalMesh(block, t);
+        if (bad) throw Abandon{};
+        return t;
+    case Word::Mesh2:
+        evalMesh2(block, t);
         break;
     case Word::LightSource:
         t.kind = ObjectTree::Kind::Light;
@@ -495,6 +543,15 @@ void Interpreter::applyObjectModifier(ObjectTree& tree, const Node& n, bool isSh
             }
         }
         fail(n, "'open' applies only to a cone or a cylinder");
+    case Word::Sturm:
+        // The torus' roots are found robustly without it (docs/geometry.md);
+        // it is kept for the dump.
+        if (isShape)
+            if (auto* torus = std::get_if<TorusShape>(&tree.shape)) {
+                torus->sturm = true;
+                return;
+            }
+        fail(n, "'sturm' applies only to a torus here");
     case Word::Asos:
         if (isLight) {
             auto light = std::make_shared<Light>(*tree.light);

@@ -574,6 +574,15 @@ template <> struct action<g::disc_block> : CloseBlock<Word::Disc> {};
 template <> struct action<g::polygon_block> : CloseBlock<Word::Polygon> {};
 template <> struct action<g::plane_block> : CloseBlock<Word::Plane> {};
 template <> struct action<g::quadric_block> : CloseBlock<Word::Quadric> {};
+template <> struct action<g::torus_block> : CloseBlock<Word::Torus> {};
+template <> struct action<g::triangle_block> : CloseBlock<Word::Triangle> {};
+template <> struct action<g::smooth_triangle_block> : CloseBlock<Word::SmoothTriangle> {};
+template <> struct action<g::mesh_block> : CloseBlock<Word::Mesh> {};
+template <> struct action<g::mesh2_block> : CloseBlock<Word::Mesh2> {};
+template <> struct action<g::vertex_vectors_block> : CloseBlock<Word::VertexVectors> {};
+template <> struct action<g::normal_vectors_block> : CloseBlock<Word::NormalVectors> {};
+template <> struct action<g::face_indices_block> : CloseBlock<Word::FaceIndices> {};
+template <> struct action<g::normal_indices_block> : CloseBlock<Word::NormalIndices> {};
 template <> struct action<g::union_block> : CloseBlock<Word::Union> {};
 template <> struct action<g::difference_block> : CloseBlock<Word::Difference> {};
 template <> struct action<g::intersection_block> : CloseBlock<Word::Intersection> {};
@@ -664,6 +673,7 @@ template <> struct action<g::ramp_wave_item> : ItemAction<Word::RampWave, 0> {};
 template <> struct action<g::triangle_wave_item> : ItemAction<Word::TriangleWave, 0> {};
 template <> struct action<g::sine_wave_item> : ItemAction<Word::SineWave, 0> {};
 template <> struct action<g::open_item> : ItemAction<Word::Open, 0> {};
+template <> struct action<g::sturm_item> : ItemAction<Word::Sturm, 0> {};
 template <> struct action<g::no_shadow_item> : ItemAction<Word::NoShadow, 0> {};
 template <> struct action<g::inverse_item> : ItemAction<Word::Inverse, 0> {};
 template <> struct action<g::area_light_item> : ItemAction<Word::AreaLight, 4> {};
@@ -1017,6 +1027,8 @@ std::optional<Ast> parseMacroBody(std::string_view fileText, TextSpan body, std:
     case BodyContext::GlobalSettings: return parse(static_cast<g::global_entry*>(nullptr));
     case BodyContext::Asos: return parse(static_cast<g::asos_entry*>(nullptr));
     case BodyContext::Default: return parse(static_cast<g::default_entry*>(nullptr));
+    case BodyContext::Mesh: return parse(static_cast<g::mesh_entry*>(nullptr));
+    case BodyContext::Mesh2List: return parse(static_cast<g::mesh2_item*>(nullptr));
     }
     return std::nullopt;
 }

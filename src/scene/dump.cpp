@@ -148,6 +148,27 @@ void writeShape(Writer& w, const Shape& shape) {
             w.vec(q.linear) << ", ";
             w.num(q.constant) << '\n';
         }
+        void operator()(const TorusShape& t) const {
+            w << "torus {\n  ";
+            w.num(t.major) << ", ";
+            w.num(t.minor) << '\n';
+            if (t.sturm) w << "  sturm\n";
+        }
+        // A mesh's face as the triangle it is (a mesh is written face by face).
+        void operator()(const TriangleShape& t) const {
+            const TriangleMesh& mesh = *t.mesh;
+            const TriangleMesh::Face& f = mesh.faces[t.face];
+            w << (f.smooth ? "smooth_triangle {\n  " : "triangle {\n  ");
+            for (int i = 0; i < 3; ++i) {
+                if (i > 0) w << ", ";
+                w.vec(mesh.vertices[f.vertex[i]]);
+                if (f.smooth) {
+                    w << ", ";
+                    w.vec(mesh.normals[f.normal[i]]);
+                }
+            }
+            w << '\n';
+        }
     };
     std::visit(Visitor{w}, shape);
 }

@@ -12,9 +12,9 @@ namespace asos {
 namespace {
 
 // The record whose surface bounds a leaf's inside (CsgClip::regions); none
-// for a polygon, which has no inside.
+// for a polygon or a mesh's face, which have no inside.
 std::optional<Shape> regionRecord(const Shape& leaf) {
-    if (std::holds_alternative<PolygonShape>(leaf)) return std::nullopt;
+    if (std::holds_alternative<PolygonShape>(leaf) || std::holds_alternative<TriangleShape>(leaf)) return std::nullopt;
     if (const auto* disc = std::get_if<DiscShape>(&leaf)) {
         const Vec3 n = glm::normalize(disc->normal);
         return Shape{PlaneShape{disc->normal, glm::dot(n, disc->center)}};

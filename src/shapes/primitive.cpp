@@ -162,11 +162,16 @@ ConeClass Primitive::classify(const PreparedCone& cone) const {
     const ConeClass own = classifyOwn(cone);
     if (own.coverage == Coverage::Miss) return own;
     // Every crossing of the leaf in the cone: its first within own's
-    // depths; no shape meets a line more than twice, so a curved leaf's
-    // second lies within them too, or among the nearest crossings past
-    // own.tFar (a flat leaf has none).
+    // depths; a shape other than a torus meets a line at most twice, so a
+    // curved leaf's second lies within them too, or among the nearest
+    // crossings past own.tFar (a flat leaf has none).
     ConeClass second;
-    if (!clip_->flat) {
+    if (std::holds_alternative<Torus>(shape_)) {
+        // Up to four crossings: every one past own's lies in the world box.
+        const Vec3 far = glm::max(glm::abs(worldBounds_.lo - cone.apex), glm::abs(worldBounds_.hi - cone.apex));
+        second = {Coverage::Marginal, std::max(cone.tMin, own.tFar), std::min(cone.tMax, padUp(glm::length(far))),
+                  false};
+    } else if (!clip_->flat) {
         PreparedCone beyond = cone;
         beyond.tMin = std::max(cone.tMin, own.tFar);
         second = classifyOwn(beyond);
@@ -390,7 +395,7 @@ Primitive::SelfOcclusion Primitive::selfOcclusion() const {
     return visit([](const auto& shape) {
         using S = std::decay_t<decltype(shape)>;
         if constexpr (std::is_same_v<S, Plane> || std::is_same_v<S, Disc> || std::is_same_v<S, Polygon> ||
-                      std::is_same_v<S, EllipticDisc>) {
+                      std::is_same_v<S, EllipticDisc> || std::is_same_v<S, SmoothTriangle>) {
             return SelfOcclusion::None;
         } else if constexpr (std::is_same_v<S, Sphere> || std::is_same_v<S, Box> ||
                              std::is_same_v<S, Cylinder> || std::is_same_v<S, TruncatedCone>) {

@@ -101,6 +101,12 @@ TEST_CASE("objects and scene items", "[lang][grammar]") {
          "polygon { 4, <0,0>, <1,0>, <1,1>, <0,1> }", "polygon { 3 <0,0> <1,0> <0,1> }",
          "plane { y, 0 }", "union { sphere { 0, 1 } box { 0, 1 } pigment { rgb 1 } }",
          "quadric { <1, 1, 0>, <0, 0, 0>, <0, 0, 0>, -1 }", "quadric { 1 0 0, -1 translate y }",
+         "torus { 1, 0.5 }", "torus { 1 0.5 sturm translate y }", "triangle { 0, x, y }",
+         "smooth_triangle { 0, z, x, z, y, z pigment { rgb 1 } }",
+         "mesh { triangle { 0, x, y } smooth_triangle { 0 z x z y z } translate x }",
+         "mesh2 { vertex_vectors { 3, 0, x, y } face_indices { 1, <0, 1, 2> } }",
+         "mesh2 { vertex_vectors { 3 0 x y } normal_vectors { 1 z } face_indices { 1 <0 1 2> } "
+         "normal_indices { 1 <0 0 0> } scale 2 }",
          "sphere { 0, 1 texture { pigment { rgb 1 } } texture { pigment { rgbt 1 } } }",
          "object { Thing translate x }", "object { sphere { 0, 1 } scale 2 }",
          "light_source { <0,10,0>, rgb 1 }", "light_source { <0,10,0> color White shadowless }",

@@ -88,6 +88,13 @@ TEST_CASE("The renderer matches POV-Ray with one ray per pixel", "[golden][povra
         compareWithPovray(scene, RenderMethod::Single, "", "-A");
 }
 
+// The torus (tests/golden/povray/torus.pov: tilted, squashed, thin with
+// sturm, horn, cut from a box) and the triangles and meshes (mesh.pov:
+// triangle, smooth_triangle, mesh, a smooth mesh2, a mesh in a difference).
+TEST_CASE("Tori and meshes match POV-Ray with one ray per pixel", "[golden][povray]") {
+    for (const char* scene : {"torus", "mesh"}) compareWithPovray(scene, RenderMethod::Single, "", "-A");
+}
+
 // POV-Ray's defaults: threshold 0.3, depth +R3 (two subdivisions); -J turns
 // its jitter off so that the sample positions coincide.
 TEST_CASE("The adaptive method matches POV-Ray's +AM2", "[golden][povray]") {

@@ -28,11 +28,13 @@ struct SphereWithoutRaysLeave : Sphere {
 
 static_assert(PrimitiveShape<Sphere> && PrimitiveShape<Box> && PrimitiveShape<Cylinder> &&
               PrimitiveShape<TruncatedCone> && PrimitiveShape<Disc> && PrimitiveShape<EllipticDisc> &&
-              PrimitiveShape<Polygon> && PrimitiveShape<Plane> && PrimitiveShape<Quadric>);
+              PrimitiveShape<Polygon> && PrimitiveShape<Plane> && PrimitiveShape<Quadric> && PrimitiveShape<Torus> &&
+              PrimitiveShape<SmoothTriangle>);
 static_assert(!PrimitiveShape<SphereWithoutSelfShadow>, "a missing answer is a compile error");
 static_assert(!PrimitiveShape<SphereWithoutRaysLeave>, "a missing answer is a compile error");
 static_assert(!PrimitiveShape<int>);
-static_assert(ShapeRecord<SphereShape> && ShapeRecord<PolygonShape> && ShapeRecord<DiscShape>);
+static_assert(ShapeRecord<SphereShape> && ShapeRecord<PolygonShape> && ShapeRecord<DiscShape> &&
+              ShapeRecord<TorusShape> && ShapeRecord<TriangleShape>);
 static_assert(!ShapeRecord<int>, "a record without validate and place is refused");
 static_assert(kEveryAlternativeShapeRecord<Shape>);
 static_assert(!kEveryAlternativePrimitiveShape<std::variant<Sphere, SphereWithoutSelfShadow>>);
@@ -71,6 +73,8 @@ TEST_CASE("One validate per record: the interpreter and Primitive::make say the 
         {"disc { <0, 0, 0>, y, 1, 2 }", DiscShape{{0, 0, 0}, {0, 1, 0}, 1, 2}},
         {"plane { <0, 0, 0>, 1 }", PlaneShape{{0, 0, 0}, 1}},
         {"quadric { <0, 0, 0>, <0, 0, 0>, <0, 0, 0>, 1 }", QuadricShape{{0, 0, 0}, {0, 0, 0}, {0, 0, 0}, 1}},
+        {"torus { 1, 0 }", TorusShape{1, 0, false}},
+        {"torus { 1, 2 }", TorusShape{1, 2, false}},
         {"polygon { 3, <0, 0, 0>, <1, 0, 0>, <2, 0, 0> }", PolygonShape{{{0, 0, 0}, {1, 0, 0}, {2, 0, 0}}}},
         {"polygon { 4, <0, 0, 0>, <1, 0, 0>, <1, 1, 0>, <0, 1, 1> }",
          PolygonShape{{{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 1}}}},

@@ -37,6 +37,8 @@ enum class BodyContext : std::uint8_t {
     GlobalSettings,
     Asos,
     Default,
+    Mesh,
+    Mesh2List,
 };
 
 // Parses a scene file and hands each top-level entry (an item or a directive,

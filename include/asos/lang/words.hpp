@@ -16,6 +16,10 @@ namespace asos::lang {
     WORD(Plane, "plane") WORD(Union, "union") WORD(Difference, "difference") WORD(Intersection, "intersection") WORD(Merge, "merge") WORD(Object, "object") WORD(GlobalSettings, "global_settings") \
     WORD(Background, "background")                                                                 \
     WORD(Quadric, "quadric")                                                                       \
+    WORD(Torus, "torus") WORD(Sturm, "sturm")                                                      \
+    WORD(Triangle, "triangle") WORD(SmoothTriangle, "smooth_triangle") WORD(Mesh, "mesh") WORD(Mesh2, "mesh2") \
+    WORD(VertexVectors, "vertex_vectors") WORD(NormalVectors, "normal_vectors")                   \
+    WORD(FaceIndices, "face_indices") WORD(NormalIndices, "normal_indices")                       \
     /* camera */                                                                                \
     WORD(Perspective, "perspective") WORD(Orthographic, "orthographic") WORD(Location, "location")       \
     WORD(LookAt, "look_at") WORD(Angle, "angle") WORD(Right, "right") WORD(Up, "up")                        \

@@ -3,6 +3,7 @@
 // by every later stage (dump writer, scene build, renderer). No text, no
 // behaviour. Every record keeps the SourceLoc it came from. Field meanings and
 // defaults are POV-Ray 3.7's unless a comment says otherwise.
+#include <array>
 #include <cstdint>
 #include <memory>
 #include <optional>
@@ -112,6 +113,31 @@ struct QuadricShape {
     double constant = 0.0;  // J
 };
 
+// POV-Ray's torus { R, r }: the points at distance r from the circle of radius
+// R about the y axis in y = 0; `sturm` as written (the roots are found
+// robustly either way).
+struct TorusShape { double major = 1.0; double minor = 0.5; bool sturm = false; };
+
+// POV-Ray's triangle, smooth_triangle, mesh and mesh2, all as faces over a
+// shared list of vertices (and of normals for smooth faces), in object space
+// as written: a mesh's triangles are one Object each (TriangleShape), so that
+// the scene's BVH holds them and the tracer classifies cones against each.
+struct TriangleMesh {
+    struct Face {
+        std::array<std::uint32_t, 3> vertex{};
+        std::array<std::uint32_t, 3> normal{};  // smooth faces only
+        bool smooth = false;
+    };
+    std::vector<Vec3> vertices;
+    std::vector<Vec3> normals;  // unit
+    std::vector<Face> faces;
+};
+// One face of a mesh (a lone triangle is a mesh of one).
+struct TriangleShape {
+    std::shared_ptr<const TriangleMesh> mesh;
+    std::uint32_t face = 0;
+};
+
 struct CsgTree;
 // One leaf of a CSG object (POV-Ray's difference, intersection, merge, or a
 // union inside one of those): the part of the leaf's surface that bounds the
@@ -125,7 +151,7 @@ struct CsgShape {
 };
 
 using Shape = std::variant<SphereShape, BoxShape, ConeShape, CylinderShape, DiscShape,
-                           PolygonShape, PlaneShape, QuadricShape, CsgShape>;
+                           PolygonShape, PlaneShape, QuadricShape, CsgShape, TorusShape, TriangleShape>;
 
 // A CSG object as written: nodes (node 0 the root), each an operation over
 // its children or a leaf shape; `inverse` as POV-Ray's (toggled by each

@@ -19,8 +19,9 @@ struct LocalHit {
 };
 
 // Every crossing of a ray with a primitive's surface within a range, nearest
-// first (Primitive::crossings). No shape meets a line more than twice (a
-// convex solid, a quadric's side, a flat shape once); kMax leaves room.
+// first (Primitive::crossings). A torus meets a line up to four times;
+// every other shape at most twice (a convex solid, a quadric's side, a flat
+// shape once).
 struct Crossings {
     static constexpr int kMax = 4;
     std::array<LocalHit, kMax> hits{};

@@ -32,6 +32,8 @@
 #include "asos/shapes/primitive_shape.hpp"
 #include "asos/shapes/quadric.hpp"
 #include "asos/shapes/sphere.hpp"
+#include "asos/shapes/torus.hpp"
+#include "asos/shapes/triangle.hpp"
 #include "asos/shapes/truncated_cone.hpp"
 
 namespace asos {
@@ -165,7 +167,7 @@ private:
     // (an alternative of Shape, answering ShapeRecord) becomes one of them.
     using LocalShape =
         std::variant<Sphere, Box, TruncatedCone, Cylinder, Disc, Polygon, Plane, EllipticDisc,
-                     Quadric>;
+                     Quadric, Torus, SmoothTriangle>;
     static_assert(kEveryAlternativePrimitiveShape<LocalShape>,
                   "every local shape answers PrimitiveShape (primitive_shape.hpp)");
 
