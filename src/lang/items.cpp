@@ -775,9 +775,9 @@ std::shared_ptr<const Normal> Interpreter::evalNormal(const Node& block, const s
 
 int Interpreter::evalNoiseGenerator(const Node& n) {
     const double v = evalFloat(n);
-    const int g = static_cast<int>(v);
-    if (g < 1 || g > 3) fail(n, "noise_generator must be 1, 2 or 3, not " + formatNumber(v));
-    return g;
+    // Truncated as POV-Ray does, once it is known to fit (NaN does not).
+    if (!(v >= 1.0 && v < 4.0)) fail(n, "noise_generator must be 1, 2 or 3, not " + formatNumber(v));
+    return static_cast<int>(v);
 }
 
 // color_map { [v colour] … }: a declared map by name first, if any, whose
