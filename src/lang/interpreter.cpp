@@ -519,28 +519,9 @@ void Interpreter::runDefault(const Node& n) {
             defaultTexture_ = evalTexture(e);
             checkOpaqueBottom(*defaultTexture_, e);
             break;
-        case Word::Pigment: {
-            auto t = std::make_shared<Texture>(*defaultTexture_);
-            TextureLayer& top = topLayer(*t);
-            top.pigment = *evalPigment(e, top.pigment);
-            if (t->above.empty()) checkOpaqueBottom(*t, e);
-            defaultTexture_ = std::move(t);
+        case Word::Pigment: case Word::Normal: case Word::Finish:
+            defaultTexture_ = withTopLayerItem(*defaultTexture_, e);
             break;
-        }
-        case Word::Finish: {
-            auto t = std::make_shared<Texture>(*defaultTexture_);
-            TextureLayer& top = topLayer(*t);
-            top.finish = *evalFinish(e, top.finish);
-            defaultTexture_ = std::move(t);
-            break;
-        }
-        case Word::Normal: {
-            auto t = std::make_shared<Texture>(*defaultTexture_);
-            TextureLayer& top = topLayer(*t);
-            top.normal = *evalNormal(e, top.normal);
-            defaultTexture_ = std::move(t);
-            break;
-        }
         default:
             fail(e, "#default takes texture, pigment, normal and finish");
         }

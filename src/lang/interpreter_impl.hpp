@@ -247,6 +247,7 @@ public:
     Num evalColourNode(const Node& n, ColourChannels channels);
     Vec3 evalRgb(const Node& n, std::string_view usedAs);
     void checkOpaqueBottom(const TextureLayer& bottom, const Node& at);
+    std::shared_ptr<const Texture> withTopLayerItem(const Texture& base, const Node& n);
     std::string evalString(const Node& n);
     const Value* lookup(std::uint32_t id) const;
     Value evalMacroValue(const Node& call);
@@ -261,6 +262,7 @@ public:
     std::shared_ptr<const ColourMapValue> evalColourMap(const Node& block);
     void applyMapModifier(const Node& n, Pigment& p);
     void setMapModifier(const Node& n, Pigment& p);
+    void startMapPattern(const Node& n, Pigment& p);
     std::shared_ptr<const Normal> evalNormal(const Node& block, const std::optional<Normal>& start);
     int evalNoiseGenerator(const Node& n);
     std::shared_ptr<const Texture> evalTexture(const Node& block);

@@ -143,6 +143,21 @@ void Interpreter::moveLayers(const Node& at, Texture& t, const Transform& m) {
     for (TextureLayer& layer : t.above) move(layer);
 }
 
+// A copy of `base` whose top layer takes the pigment {}, normal {} or
+// finish {} item `n` (an object's modifier, a #default entry).
+std::shared_ptr<const Texture> Interpreter::withTopLayerItem(const Texture& base, const Node& n) {
+    auto texture = std::make_shared<Texture>(base);
+    TextureLayer& top = topLayer(*texture);
+    if (n.word == Word::Pigment)
+        top.pigment = *evalPigment(n, top.pigment);
+    else if (n.word == Word::Normal)
+        top.normal = *evalNormal(n, top.normal);
+    else
+        top.finish = *evalFinish(n, top.finish);
+    if (texture->above.empty()) checkOpaqueBottom(*texture, n);
+    return texture;
+}
+
 void Interpreter::placeObject(ObjectTree&& tree, const Node& at) {
     checkObjects(at, objects_.size() + scene_.lights.size() + tree.leaves, "the scene");
     checkMemory(at, tree.leaves * sizeof(Object), "the scene's objects");
@@ -178,27 +193,23 @@ void Interpreter::flatten(ObjectTree& node, const std::shared_ptr<const Texture>
     const AsosOptions asos = inherit(node.asos, inheritedAsos);
     switch (node.kind) {
     case ObjectTree::Kind::Shape: {
-        if (node.mesh) {
-            const auto faces = static_cast<std::uint32_t>(node.mesh->faces.size());
-            const std::shared_ptr<const Texture> interned = texture ? textures_.intern(texture) : defaultTexture_;
-            for (std::uint32_t face = 0; face < faces; ++face) {
-                Object& o = objects_.add();
-                o.shape = TriangleShape{node.mesh, face};
-                o.worldFromObject = node.worldFromObject;
-                o.texture = interned;
-                o.noShadow = noShadow;
-                o.asos = asos;
-                o.loc = node.loc;
-            }
+        const std::shared_ptr<const Texture> interned = texture ? textures_.intern(texture) : defaultTexture_;
+        const auto add = [&](Shape shape) {
+            Object& o = objects_.add();
+            o.shape = std::move(shape);
+            o.worldFromObject = node.worldFromObject;
+            o.texture = interned;
+            o.noShadow = noShadow;
+            o.asos = asos;
+            o.loc = node.loc;
+        };
+        if (!node.mesh) {
+            add(std::move(node.shape));
             return;
         }
-        Object& o = objects_.add();
-        o.shape = std::move(node.shape);
-        o.worldFromObject = node.worldFromObject;
-        o.texture = texture ? textures_.intern(texture) : defaultTexture_;
-        o.noShadow = noShadow;
-        o.asos = asos;
-        o.loc = std::move(node.loc);
+        // A mesh: an object per face, all sharing its lists.
+        const auto faces = static_cast<std::uint32_t>(node.mesh->faces.size());
+        for (std::uint32_t face = 0; face < faces; ++face) add(TriangleShape{node.mesh, face});
         return;
     }
     case ObjectTree::Kind::Light: {
@@ -503,18 +514,8 @@ void Interpreter::applyObjectModifier(ObjectTree& tree, const Node& n, bool isSh
             return;
         }
         // pigment {}, normal {} and finish {} change the texture the object
-        // has (its top layer, as POV-Ray's Parse_Object_Mods), or a copy of
-        // the default one.
-        auto texture = std::make_shared<Texture>(tree.texture ? *tree.texture : *defaultTexture_);
-        TextureLayer& top = topLayer(*texture);
-        if (n.word == Word::Pigment)
-            top.pigment = *evalPigment(n, top.pigment);
-        else if (n.word == Word::Normal)
-            top.normal = *evalNormal(n, top.normal);
-        else
-            top.finish = *evalFinish(n, top.finish);
-        if (texture->above.empty()) checkOpaqueBottom(*texture, n);
-        tree.texture = std::move(texture);
+        // has (as POV-Ray's Parse_Object_Mods), or a copy of the default one.
+        tree.texture = withTopLayerItem(tree.texture ? *tree.texture : *defaultTexture_, n);
         return;
     }
     case Word::NoShadow:
@@ -602,17 +603,8 @@ std::shared_ptr<const Pigment> Interpreter::evalPigment(const Node& block, const
             p->color2 = n.count > 1 ? evalColour(n[1]) : kBrickRed;
         } else if (n.kind == NodeKind::Item && isMapPattern(n.word)) {
             pattern(n);
-            // As POV-Ray: a new pattern starts from its own defaults, but the
-            // modifiers read before it (turbulence, a colour map) stay.
-            p->kind = mapKind(n.word);
+            startMapPattern(n, *p);
             p->color1 = p->color2 = Color{};
-            p->wave = (n.word == Word::Marble || n.word == Word::Wood) ? Pigment::Wave::Triangle : Pigment::Wave::Ramp;
-            if (n.word == Word::Gradient) {
-                const Vec3 g = evalVector(n[0]);
-                const double length = glm::length(g);
-                if (length == 0.0) fail(n[0], "gradient <0, 0, 0> has no direction");
-                p->gradient = g / length;
-            }
         } else if (n.kind == NodeKind::Item && isMapModifier(n.word)) {
             applyMapModifier(n, *p);
             if (stage == Stage::Empty) stage = Stage::Modifiers;
@@ -672,6 +664,20 @@ void Interpreter::applyMapModifier(const Node& n, Pigment& p) {
     setMapModifier(n, p);
 }
 
+// A map pattern's item in a pigment or a normal: as POV-Ray, a new pattern
+// starts from its own defaults (its kind, its wave, gradient's direction),
+// but the modifiers read before it (turbulence, a colour map) stay.
+void Interpreter::startMapPattern(const Node& n, Pigment& p) {
+    p.kind = mapKind(n.word);
+    p.wave = (n.word == Word::Marble || n.word == Word::Wood) ? Pigment::Wave::Triangle : Pigment::Wave::Ramp;
+    if (n.word == Word::Gradient) {
+        const Vec3 g = evalVector(n[0]);
+        const double length = glm::length(g);
+        if (length == 0.0) fail(n[0], "gradient <0, 0, 0> has no direction");
+        p.gradient = g / length;
+    }
+}
+
 // One modifier's value (a normal's pattern takes them all, its
 // normal-only patterns included).
 void Interpreter::setMapModifier(const Node& n, Pigment& p) {
@@ -726,10 +732,13 @@ std::shared_ptr<const Normal> Interpreter::evalNormal(const Node& block, const s
             if (own || isMapPattern(n.word)) {
                 if (patternSeen) fail(n, "a normal has one pattern; this is a second one");
                 patternSeen = true;
-                // As in a pigment: a new pattern starts from its own
-                // defaults; the modifiers read before it stay.
                 Pigment& p = normal->pattern;
-                p.wave = (n.word == Word::Marble || n.word == Word::Wood) ? Pigment::Wave::Triangle : Pigment::Wave::Ramp;
+                if (own) {
+                    p.kind = Pigment::Kind::Solid;  // the value is not read
+                    p.wave = Pigment::Wave::Ramp;
+                } else {
+                    startMapPattern(n, p);
+                }
                 p.colourMap.clear();
                 switch (n.word) {
                 case Word::Bumps: normal->kind = Normal::Kind::Bumps; break;
@@ -738,13 +747,6 @@ std::shared_ptr<const Normal> Interpreter::evalNormal(const Node& block, const s
                 case Word::Ripples: normal->kind = Normal::Kind::Ripples; break;
                 case Word::Waves: normal->kind = Normal::Kind::Waves; break;
                 default: normal->kind = Normal::Kind::Pattern; break;
-                }
-                p.kind = own ? Pigment::Kind::Solid : mapKind(n.word);
-                if (n.word == Word::Gradient) {
-                    const Vec3 g = evalVector(n[0]);
-                    const double length = glm::length(g);
-                    if (length == 0.0) fail(n[0], "gradient <0, 0, 0> has no direction");
-                    p.gradient = g / length;
                 }
                 return;
             }
