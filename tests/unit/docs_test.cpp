@@ -1,18 +1,23 @@
 // The docs as code: every ```pov snippet of docs/*.md and docs/manual/ is
-// read by the interpreter, and every scene of examples/ opens with a comment
+// read by the interpreter, every scene of examples/ opens with a comment
 // that names the command rendering it and renders at 64 x 48 without an
-// error. The rule that wraps a snippet is docs/goldens.md's
+// error, the manual's keyword index lists exactly the words the language
+// accepts, and every link of the manual (pictures included) leads somewhere. The rule that wraps a snippet is docs/goldens.md's
 // ("Snippets in the docs"): the fence's word after `pov` says what it is.
 #include <catch2/catch.hpp>
 
 #include <algorithm>
+#include <cctype>
 #include <filesystem>
 #include <fstream>
+#include <regex>
+#include <set>
 #include <sstream>
 #include <string>
 #include <vector>
 
 #include "asos/lang/interpreter.hpp"
+#include "asos/lang/words.hpp"
 #include "run_asos.hpp"
 
 namespace fs = std::filesystem;
@@ -23,7 +28,7 @@ namespace {
 const fs::path kSource = ASOS_SOURCE_DIR;
 
 struct Snippet {
-    std::string where;  // docs/language.md:144, the fence's line
+    std::string where;  // docs/manual/objects.md:144, the fence's line
     std::string kind;   // the fence's word after `pov`: "", "in-object", "colours", "refused"
     std::string text;
 };
@@ -147,4 +152,90 @@ TEST_CASE("every example renders at 64 x 48 without an error", "[docs][examples]
         CHECK(r.err.find(": error:") == std::string::npos);
         CHECK(fs::exists(dir / png));
     }
+}
+
+namespace {
+
+std::string fileText(const fs::path& path) {
+    std::ifstream in(path);
+    std::stringstream text;
+    text << in.rdbuf();
+    return text.str();
+}
+
+// GitHub's anchor of a heading: lower case, punctuation dropped but for `-`
+// and `_`, spaces made `-`.
+std::string anchorOf(const std::string& heading) {
+    std::string anchor;
+    for (const char c : heading) {
+        const auto u = static_cast<unsigned char>(c);
+        if (std::isalnum(u) || c == '-' || c == '_') anchor += static_cast<char>(std::tolower(u));
+        else if (c == ' ') anchor += '-';
+    }
+    return anchor;
+}
+
+std::set<std::string> anchorsOf(const fs::path& file) {
+    std::set<std::string> anchors;
+    std::istringstream lines(fileText(file));
+    std::string line;
+    bool fenced = false;
+    while (std::getline(lines, line)) {
+        if (line.starts_with("```")) fenced = !fenced;
+        if (fenced || !line.starts_with("#")) continue;
+        const std::size_t text = line.find_first_not_of('#');
+        if (text != std::string::npos && line[text] == ' ') anchors.insert(anchorOf(line.substr(text + 1)));
+    }
+    return anchors;
+}
+
+}  // namespace
+
+TEST_CASE("the manual's keyword index lists every word the language accepts, and no other", "[docs]") {
+    // Accepted words are the word table's identifiers (operators aside).
+    std::set<std::string> accepted;
+    for (int w = 1; w < static_cast<int>(lang::Word::Count); ++w) {
+        const std::string_view text = lang::wordText(static_cast<lang::Word>(w));
+        if (std::isalpha(static_cast<unsigned char>(text.front())) || text.front() == '_') accepted.emplace(text);
+    }
+    REQUIRE(accepted.size() > 200);
+    // The index's rows: "| `word` |" or "| `#word` |".
+    std::set<std::string> indexed;
+    const std::regex row(R"(^\| `#?([a-z_0-9]+)` \|)");
+    std::istringstream lines(fileText(kSource / "docs/manual/keywords.md"));
+    std::string line;
+    std::smatch m;
+    while (std::getline(lines, line))
+        if (std::regex_search(line, m, row)) indexed.insert(m[1]);
+    for (const std::string& w : accepted) {
+        INFO("accepted by the language, missing from docs/manual/keywords.md: " << w);
+        CHECK(indexed.count(w) == 1);
+    }
+    for (const std::string& w : indexed) {
+        INFO("in docs/manual/keywords.md, not accepted by the language: " << w);
+        CHECK(accepted.count(w) == 1);
+    }
+}
+
+TEST_CASE("every link of the manual leads to a file, and to a heading there", "[docs]") {
+    std::vector<fs::path> pages;
+    for (const auto& e : fs::recursive_directory_iterator(kSource / "docs" / "manual"))
+        if (e.path().extension() == ".md") pages.push_back(e.path());
+    pages.push_back(kSource / "README.md");
+    const std::regex link(R"(\]\(([^)#\s]*)(#[^)\s]*)?\))");
+    int pictures = 0;
+    for (const fs::path& page : pages) {
+        const std::string text = fileText(page);
+        for (auto it = std::sregex_iterator(text.begin(), text.end(), link); it != std::sregex_iterator(); ++it) {
+            const std::string target = (*it)[1];
+            const std::string anchor = (*it)[2].matched ? std::string((*it)[2]).substr(1) : "";
+            if (target.find("://") != std::string::npos) continue;
+            const fs::path file = target.empty() ? page : page.parent_path() / target;
+            INFO(fs::relative(page, kSource).string() << ": link to " << target << (anchor.empty() ? "" : "#" + anchor));
+            CHECK(fs::exists(file));
+            if (file.extension() == ".png") ++pictures;
+            if (!anchor.empty() && fs::exists(file) && file.extension() == ".md") CHECK(anchorsOf(file).count(anchor) == 1);
+        }
+    }
+    CHECK(pictures >= 20);
 }

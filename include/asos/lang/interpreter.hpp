@@ -40,7 +40,7 @@ struct InterpreterOptions {
     std::size_t maxErrors = 100;                      // then stop: one mistake in a loop repeats
     std::size_t maxLoopIterations = 100'000'000;      // all #while/#for iterations together
     // What a scene may ask for, checked before it is allocated: past one, a
-    // located error names the limit and its option (docs/language.md, Limits).
+    // located error names the limit and its option (docs/manual/limits.md).
     std::size_t maxArrayElements = 10'000'000;        // in one array (--max-array-elements)
     std::size_t maxObjects = 50'000'000;              // shapes and lights in the scene or a union (--max-objects)
     std::size_t maxStringLength = 16'777'216;         // characters in one string (--max-string-length)
