@@ -44,6 +44,37 @@ cylinder { <0, 0, 2>, <0, 2, 2>, 0.3 pigment { color rgb <0.2, 0.8, 0.3> } }
 
 }  // namespace
 
+TEST_CASE("ASOS settings: an object's block, then the command line, then global_settings", "[cli]") {
+    // The one precedence rule (docs/manual/asos.md, "Which setting wins"),
+    // seen in the deepest level of eye pyrays the statistics count. The
+    // sphere's outline against the background involves the sphere alone.
+    const fs::path dir = scratchDir();
+    const auto scene = [&](const std::string& name, const std::string& own) {
+        std::ofstream(dir / name) << "#version 3.7;\n"
+                                     "global_settings { assumed_gamma 1.0 asos { max 1 } }\n"
+                                     "camera { location <0, 0, -4> look_at 0 }\n"
+                                     "light_source { <0, 5, -5>, rgb 1 }\n"
+                                     "sphere { 0, 1 pigment { rgb 1 } " << own << " }\n";
+        return (dir / name).string();
+    };
+    const std::string global = scene("global.pov", "");
+    const std::string own = scene("own.pov", "asos { max 2 }");
+    const auto deepest = [&](std::vector<std::string> args) {
+        args.insert(args.end(), {"-o", "out.png", "-W", "64", "-H", "48", "--stats", "--quiet"});
+        const Result r = runAsos(args);
+        INFO(r.err);
+        REQUIRE(r.exitCode == 0);
+        int level = -1;
+        for (int k = 0; k <= 10; ++k)
+            if (r.out.find("\n  pyrays level " + std::to_string(k) + " ") != std::string::npos) level = k;
+        return level;
+    };
+    CHECK(deepest({"render", global}) == 1);                  // global_settings over the default 4
+    CHECK(deepest({"render", global, "--max", "3"}) == 3);    // the command line over global_settings
+    CHECK(deepest({"render", own, "--max", "3"}) == 2);       // the object's own block over both
+    CHECK(deepest({"render", own, "--max", "0"}) == 2);
+}
+
 TEST_CASE("asos render writes the image, statistics and the samples AOV", "[cli]") {
     const std::string scene = sceneFile().string();
     const fs::path dir = scratchDir();
