@@ -3,8 +3,7 @@
 // colour difference that makes a pyramid subdivide, max the deepest
 // subdivision, jitter whether samples are jittered. Set it for the whole
 // scene in global_settings, for one object, or for one light (its shadow
-// beams); an object's or light's unset fields come from the command line,
-// then global_settings (docs/manual/asos.md, "Which setting wins").
+// beams); unset fields follow docs/manual/asos.md, "Which setting wins".
 // POV-Ray does not know this block: this scene is for asos only.
 //
 // With asos:     asos render examples/asos_options.pov -o asos_options.png
