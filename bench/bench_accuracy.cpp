@@ -11,8 +11,6 @@
 // axes, one curve per method, the Pareto front over all of them drawn
 // thick; and DIR/summary.md, per scene the fastest setting of each method
 // within --target RMSE, and the Pareto front. docs/performance.md shows them.
-#include <time.h>
-
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -35,6 +33,7 @@
 #include "asos/testing/image_error.hpp"
 #include "asos/testing/pareto_front.hpp"
 #include "asos/testing/povray_text.hpp"
+#include "bench_tools.hpp"
 #include "benchmarks.hpp"
 #include "cli/common/reference.hpp"
 
@@ -163,22 +162,6 @@ std::vector<Rung> povrayLadder(bool quick, bool areaLights) {
     return out;
 }
 
-double processCpuSeconds() {
-    timespec t{};
-    clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &t);
-    return double(t.tv_sec) + 1e-9 * double(t.tv_nsec);
-}
-
-std::string shellQuoted(const std::string& s) {
-    std::string out = "'";
-    for (char c : s) out += c == '\'' ? std::string("'\\''") : std::string(1, c);
-    return out + "'";
-}
-
-bool onPath(const std::string& program) {
-    return std::system(("command -v " + program + " >/dev/null 2>&1").c_str()) == 0;
-}
-
 // POV-Ray's render of `scene` with `options`, one thread: its image (read
 // from a linear EXR), the CPU time of its trace and its camera and shadow
 // rays, from its statistics. Nothing when it fails. `library`: the folder
@@ -218,12 +201,6 @@ std::optional<PovrayRun> runPovray(const fs::path& scene, const fs::path& librar
         if (std::regex_search(line, m, shadow)) run.rays += std::stoull(m[1]);
     }
     return run;
-}
-
-std::string number(double v, const char* format = "%.6g") {
-    char text[64];
-    std::snprintf(text, sizeof text, format, v);
-    return text;
 }
 
 // The gnuplot data: per method two blocks (its points, then its own front by
@@ -329,16 +306,10 @@ int runAccuracy(const AccuracyArgs& args) {
         lang::InterpreterOptions options;
         options.imageWidth = args.width;
         options.imageHeight = args.height;
-        Diagnostics diagnostics;
-        const std::optional<SceneDescription> description = lang::interpretFile(scenePath, options, diagnostics);
-        for (const Diagnostic& d : diagnostics.all()) std::fprintf(stderr, "%s", formatDiagnostic(d).c_str());
-        if (!description) return 1;
-        diagnostics.clear();
-        const std::unique_ptr<Scene> scene = Scene::build(*description, diagnostics);
-        if (!scene) {
-            for (const Diagnostic& d : diagnostics.all()) std::fprintf(stderr, "%s", formatDiagnostic(d).c_str());
-            return 1;
-        }
+        const std::optional<LoadedScene> loaded = loadScene(scenePath, options);
+        if (!loaded) return 1;
+        const SceneDescription* description = &loaded->description;
+        const std::unique_ptr<Scene>& scene = loaded->scene;
 
         cli::ReferenceSettings refSettings;
         refSettings.width = args.width;
