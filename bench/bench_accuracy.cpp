@@ -4,14 +4,13 @@
 // settings, one thread each: render time (CPU time, steadier than wall time
 // on a shared machine), rays, and the errors against the
 // reference (asos/testing/image_error.hpp); with `povray` on the PATH,
-// POV-Ray's +AM1/+AM2 ladder too. Writes DIR/accuracy.csv (every render),
+// POV-Ray's +AM1/+AM2 ladder too, on the scene with its asos {} blocks
+// blanked (asos/testing/povray_text.hpp). Writes DIR/accuracy.csv (every render),
 // DIR/SCENE.dat and SCENE.gp (gnuplot's data and script) and, with `gnuplot`
 // on the PATH, DIR/SCENE.png and SCENE.svg: RMSE against time on log-log
 // axes, one curve per method, the Pareto front over all of them drawn
 // thick; and DIR/summary.md, per scene the fastest setting of each method
 // within --target RMSE, and the Pareto front. docs/performance.md shows them.
-#include <time.h>
-
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -33,6 +32,8 @@
 #include "asos/testing/csv_table.hpp"
 #include "asos/testing/image_error.hpp"
 #include "asos/testing/pareto_front.hpp"
+#include "asos/testing/povray_text.hpp"
+#include "bench_tools.hpp"
 #include "benchmarks.hpp"
 #include "cli/common/reference.hpp"
 
@@ -161,35 +162,21 @@ std::vector<Rung> povrayLadder(bool quick, bool areaLights) {
     return out;
 }
 
-double processCpuSeconds() {
-    timespec t{};
-    clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &t);
-    return double(t.tv_sec) + 1e-9 * double(t.tv_nsec);
-}
-
-std::string shellQuoted(const std::string& s) {
-    std::string out = "'";
-    for (char c : s) out += c == '\'' ? std::string("'\\''") : std::string(1, c);
-    return out + "'";
-}
-
-bool onPath(const std::string& program) {
-    return std::system(("command -v " + program + " >/dev/null 2>&1").c_str()) == 0;
-}
-
 // POV-Ray's render of `scene` with `options`, one thread: its image (read
 // from a linear EXR), the CPU time of its trace and its camera and shadow
-// rays, from its statistics. Nothing when it fails.
+// rays, from its statistics. Nothing when it fails. `library`: the folder
+// its #includes are found in (the original scene's, when `scene` is a copy).
 struct PovrayRun {
     Image image;
     double seconds = 0.0;
     std::uint64_t rays = 0;
 };
-std::optional<PovrayRun> runPovray(const fs::path& scene, const fs::path& work, int width, int height,
-                                   const std::vector<std::string>& options) {
+std::optional<PovrayRun> runPovray(const fs::path& scene, const fs::path& library, const fs::path& work, int width,
+                                   int height, const std::vector<std::string>& options) {
     const fs::path image = work / "povray.exr", log = work / "povray.log";
     std::string command = "povray -D +WT1 +FE +I" + shellQuoted(scene.string()) + " +O" + shellQuoted(image.string()) +
-                          " +W" + std::to_string(width) + " +H" + std::to_string(height);
+                          " +L" + shellQuoted(library.string()) + " +W" + std::to_string(width) + " +H" +
+                          std::to_string(height);
     for (const std::string& o : options) command += " " + shellQuoted(o);
     command += " >" + shellQuoted(log.string()) + " 2>&1";
     if (std::system(command.c_str()) != 0) return std::nullopt;
@@ -214,12 +201,6 @@ std::optional<PovrayRun> runPovray(const fs::path& scene, const fs::path& work, 
         if (std::regex_search(line, m, shadow)) run.rays += std::stoull(m[1]);
     }
     return run;
-}
-
-std::string number(double v, const char* format = "%.6g") {
-    char text[64];
-    std::snprintf(text, sizeof text, format, v);
-    return text;
 }
 
 // The gnuplot data: per method two blocks (its points, then its own front by
@@ -325,16 +306,10 @@ int runAccuracy(const AccuracyArgs& args) {
         lang::InterpreterOptions options;
         options.imageWidth = args.width;
         options.imageHeight = args.height;
-        Diagnostics diagnostics;
-        const std::optional<SceneDescription> description = lang::interpretFile(scenePath, options, diagnostics);
-        for (const Diagnostic& d : diagnostics.all()) std::fprintf(stderr, "%s", formatDiagnostic(d).c_str());
-        if (!description) return 1;
-        diagnostics.clear();
-        const std::unique_ptr<Scene> scene = Scene::build(*description, diagnostics);
-        if (!scene) {
-            for (const Diagnostic& d : diagnostics.all()) std::fprintf(stderr, "%s", formatDiagnostic(d).c_str());
-            return 1;
-        }
+        const std::optional<LoadedScene> loaded = loadScene(scenePath, options);
+        if (!loaded) return 1;
+        const SceneDescription* description = &loaded->description;
+        const std::unique_ptr<Scene>& scene = loaded->scene;
 
         cli::ReferenceSettings refSettings;
         refSettings.width = args.width;
@@ -343,7 +318,7 @@ int runAccuracy(const AccuracyArgs& args) {
         refSettings.lightSamples = args.lightSamples;
         std::fprintf(stderr, "== %s: the reference\n", name.c_str());
         const cli::ReferenceImage ref = cli::loadOrRenderReference(*description, scenePath, text.str(), refSettings,
-                                                                   {}, 0.0, cacheFolder, !args.noCache);
+                                                                   {}, 0.0, cacheFolder, !args.noCache, {});
         if (!ref.error.empty()) {
             std::fprintf(stderr, "%s", ref.error.c_str());
             return 1;
@@ -360,9 +335,13 @@ int runAccuracy(const AccuracyArgs& args) {
         base.threads = 1;
         std::vector<Rung> ladder = asosLadder(args.quick, base);
         for (Rung& r : classicLadder(args.quick, areaLights, base)) ladder.push_back(std::move(r));
-        const bool asosBlocks = std::regex_search(text.str(), std::regex(R"(\basos\s*\{)"));
-        if (povray && !asosBlocks)
+        // POV-Ray reads a copy without our asos {} blocks, its includes from the scene's folder.
+        const fs::path povrayScene = dir / (name + "-povray.pov");
+        if (povray) {
+            std::ofstream(povrayScene, std::ios::binary) << withoutAsosBlocks(text.str());
             for (Rung& r : povrayLadder(args.quick, areaLights)) ladder.push_back(std::move(r));
+        }
+        const fs::path sceneFolder = fs::absolute(scenePath).parent_path();
 
         std::vector<Measured> rows;
         for (const Rung& rung : ladder) {
@@ -370,7 +349,8 @@ int runAccuracy(const AccuracyArgs& args) {
             if (rung.method.starts_with("povray")) {
                 std::optional<PovrayRun> best;
                 for (int i = 0; i < args.repeat; ++i) {
-                    std::optional<PovrayRun> run = runPovray(scenePath, dir, args.width, args.height, rung.povrayOptions);
+                    std::optional<PovrayRun> run = runPovray(povrayScene, sceneFolder, dir, args.width, args.height,
+                                                                 rung.povrayOptions);
                     if (run && (!best || run->seconds < best->seconds)) best = std::move(run);
                 }
                 if (!best) {

@@ -28,6 +28,10 @@ void addLightsBenchmark(CLI::App& app, CommandResult& result);
 // `asos-bench accuracy`: every method's error against time, charted (bench_accuracy.cpp).
 void addAccuracyBenchmark(CLI::App& app, CommandResult& result);
 
+void addStabilityBenchmark(CLI::App& app, CommandResult& result);
+
+void addEpsBenchmark(CLI::App& app, CommandResult& result);
+
 // An example scene, `relative` to the examples folder, for a benchmark's
 // default: the installed share/asos/examples beside the program when there is
 // one, else the source tree's examples/ (example_scene.cpp).

@@ -13,6 +13,8 @@ int main(int argc, char** argv) {
     addRenderBenchmark(app, result);
     addLightsBenchmark(app, result);
     addAccuracyBenchmark(app, result);
+    addStabilityBenchmark(app, result);
+    addEpsBenchmark(app, result);
 
     return asos::cli::runProgram(app, argc, argv, result);
 }

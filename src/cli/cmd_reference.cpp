@@ -5,6 +5,7 @@
 // of the scene text and the settings, so that a second call is a copy.
 #include <cstdio>
 #include <fstream>
+#include <functional>
 #include <iostream>
 #include <memory>
 #include <optional>
@@ -17,6 +18,7 @@
 #include "cli/commands.hpp"
 #include "cli/common/arguments.hpp"
 #include "cli/common/reference.hpp"
+#include "cli/progress_report.hpp"
 
 namespace asos::cli {
 
@@ -56,11 +58,16 @@ int runReference(const ReferenceArgs& args) {
     for (const Diagnostic& d : diagnostics.all()) std::cerr << formatDiagnostic(d);
     if (!scene) return kExitBadScene;
 
+    ProgressReport progress(ProgressReport::modeForStderr(args.quiet), false);
+    progress.start({});
+    std::function<void(const TileProgress&)> onTile;
+    if (progress.wanted()) onTile = [&progress](const TileProgress& p) { progress.update(p); };
     const ReferenceImage ref = loadOrRenderReference(*scene, args.scene, text.str(), s, args.inputs.defines,
                                                      inputs.options.clock,
                                                      args.cache ? std::optional<std::filesystem::path>(*args.cache)
                                                                 : referenceCacheFolder(),
-                                                     !args.noCache);
+                                                     !args.noCache, onTile);
+    progress.interrupt();
     if (!ref.error.empty()) {
         std::cerr << ref.error;
         return kExitBadScene;
@@ -96,7 +103,7 @@ void addReferenceCommand(CLI::App& app, CommandResult& result) {
     cmd->add_option("--eye-samples", args->settings.eyeSamples,
                     "N x N jittered eye rays per pixel (default 32)");
     cmd->add_option("--light-samples", args->settings.lightSamples,
-                    "M x M jittered points of every area light, each traced (default 4)");
+                    "M x M stratified points over every area light's area, per eye ray (default 4)");
     cmd->add_option("--threads", args->settings.threads, "Worker threads (default 0: all cores)");
     cmd->add_option("--cache", args->cache,
                     "Cache folder (default $ASOS_REFERENCE_CACHE, else $XDG_CACHE_HOME/asos/references, "
@@ -107,7 +114,7 @@ void addReferenceCommand(CLI::App& app, CommandResult& result) {
                     "NAME=VALUE declared before the scene runs: a number, a vector or a quoted string");
     cmd->add_option("-L,--library-path", args->inputs.includePaths,
                     "Folder searched by #include after the including file's and the scene's");
-    cmd->add_flag("--quiet", args->quiet, "Say nothing about the cache");
+    cmd->add_flag("--quiet", args->quiet, "No progress, and nothing about the cache");
     cmd->callback([args, &result] { result.exitCode = runReference(*args); });
 }
 

@@ -3,6 +3,7 @@
 // of the whole benchmark on a tiny scene whose errors must fall with effort.
 #include <catch2/catch.hpp>
 
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <map>
@@ -11,9 +12,11 @@
 #include <vector>
 
 #include "asos/image/image.hpp"
+#include "asos/image/image_io.hpp"
 #include "asos/testing/csv_table.hpp"
 #include "asos/testing/image_error.hpp"
 #include "asos/testing/pareto_front.hpp"
+#include "asos/testing/povray_text.hpp"
 #include "run_asos.hpp"
 
 namespace fs = std::filesystem;
@@ -134,6 +137,80 @@ TEST_CASE("asos reference renders once and then reads its cache", "[accuracy][cl
     CHECK(asos::test::runAsos(dir, other).err.find("rendered in") != std::string::npos);
     other[7] = "0";
     CHECK(asos::test::runAsos(dir, other).exitCode == 2);
+}
+
+TEST_CASE("withoutAsosBlocks blanks our blocks and nothing else", "[accuracy]") {
+    const std::string scene = "sphere { 0, 1 asos { eps 1/64 max 4 } }\n"
+                              "global_settings { asos /* ours { */ {\n jitter on } ambient_light 1 }\n"
+                              "#declare asos_eps = 1; // asos { in a comment\n"
+                              "#debug \"asos { in a string\"\n"
+                              "/* nested /* asos { */ still a comment */ box { 0, 1 asos{max 3} }\n";
+    const std::string out = withoutAsosBlocks(scene);
+    REQUIRE(out.size() == scene.size());
+    CHECK(out == "sphere { 0, 1                         }\n"
+                 "global_settings {                    \n             ambient_light 1 }\n"
+                 "#declare asos_eps = 1; // asos { in a comment\n"
+                 "#debug \"asos { in a string\"\n"
+                 "/* nested /* asos { */ still a comment */ box { 0, 1             }\n");
+    CHECK(withoutAsosBlocks("asos") == "asos");                   // no block: kept
+    CHECK(withoutAsosBlocks("x asos { max 2") == "x             ");  // left open: to the end
+}
+
+TEST_CASE("asos reference: a penumbra under a rectangle light as the closed form has it", "[accuracy][cli]") {
+    // A wall (the plane z = 0, white, diffuse only) under a 2 x 2 square
+    // light at z = -4; halfway, at z = -2, an opaque half-plane covers
+    // x < 0. From the wall's point (x, y), the ray to the light's point
+    // (lx, ly) crosses z = -2 at (x + lx) / 2: the light's points with
+    // lx > -x reach it, the visible fraction is clamp((1 + x) / 2, 0, 1),
+    // a penumbra from x = -1 to x = 1. POV-Ray's emitter lights the point
+    // by that fraction along the light centre's direction: the wall's value
+    // is fraction x cos, cos = 4 / |(x, y, -4)|. An orthographic camera
+    // between the half-plane and the wall sees 4 x 1 of the wall.
+    // POV-Ray's jittered lattice of 4 x 4 points reaches half a step past
+    // the light's edges, a light 8/3 wide: a penumbra wider by a third,
+    // off by up to 0.11 near its ends.
+    const fs::path dir = asos::test::testCaseDir("accuracy", "reference penumbra");
+    std::ofstream(dir / "penumbra.pov") << R"(#version 3.7;
+global_settings { assumed_gamma 1.0 }
+camera { orthographic location <0, 0, -0.5> look_at <0, 0, 0> right x * 4 up y * 1 }
+light_source { <0, 0, -4> color rgb 1 area_light <2, 0, 0>, <0, 2, 0>, 4, 4 jitter }
+plane { -z, 0 pigment { color rgb 1 } finish { ambient 0 diffuse 1 } }
+polygon { 5, <-10, -10>, <0, -10>, <0, 10>, <-10, 10>, <-10, -10> translate -2 * z
+  pigment { color rgb 0 } finish { ambient 0 diffuse 0 } }
+)";
+    const int w = 64, h = 16;
+    const auto r = asos::test::runAsos(dir, {"reference", "penumbra.pov", "-W", std::to_string(w), "-H",
+                                             std::to_string(h), "--eye-samples", "16", "--no-cache", "--cache",
+                                             (dir / "cache").string(), "-o", "ref.exr"});
+    INFO(r.err);
+    REQUIRE(r.exitCode == 0);
+    CHECK(r.err.find("Rendered 1024 of 1024 pixels (100%)") != std::string::npos);  // its progress
+    const ReadResult ref = readImage(dir / "ref.exr");
+    REQUIRE(ref.ok());
+    // Each pixel's closed-form value, averaged over the pixel (64 x 64 points).
+    const auto exact = [](double x, double y) {
+        return std::clamp((1.0 + x) / 2.0, 0.0, 1.0) * 4.0 / std::sqrt(x * x + y * y + 16.0);
+    };
+    double sumOfSquares = 0.0, worst = 0.0, penumbraSum = 0.0, expectedSum = 0.0;
+    for (int py = 0; py < h; ++py)
+        for (int px = 0; px < w; ++px) {
+            double expected = 0.0;
+            for (int j = 0; j < 64; ++j)
+                for (int i = 0; i < 64; ++i)
+                    expected += exact(-2.0 + (px + (i + 0.5) / 64.0) * 4.0 / w, 0.5 - (py + (j + 0.5) / 64.0) / h);
+            expected /= 64.0 * 64.0;
+            const double d = std::abs(double(ref.image.at(px, py, 1)) - expected);
+            sumOfSquares += d * d;
+            worst = std::max(worst, d);
+            penumbraSum += ref.image.at(px, py, 1);
+            expectedSum += expected;
+        }
+    const double rmse = std::sqrt(sumOfSquares / (w * h));
+    INFO("RMSE " << rmse << ", max " << worst << ", mean " << penumbraSum / (w * h) << " against "
+                 << expectedSum / (w * h));
+    // 16 x 16 eye rays, 4 x 4 light strata each: noise alone.
+    CHECK(worst < 0.02);
+    CHECK(rmse < 0.005);
 }
 
 TEST_CASE("asos-bench accuracy: a quick ladder on a tiny scene", "[accuracy][bench]") {

@@ -35,6 +35,8 @@ TEST_CASE("asos-bench runs a tiny case of each benchmark", "[bench]") {
          "--threads", "1", "--repeat", "1"},
         {"lights", "-W", "16", "-H", "12", "--threads", "1", "--lights", "point,rectangular", "--grids", "2",
          "--eps", "1/4", "--reference", "2"},
+        {"stability", "-W", "16", "-H", "12", "--frames", "3", "--quick", "--no-gnuplot", "-o", "stability"},
+        {"eps", "-W", "16", "-H", "12", "--max", "4", "--eps", "16"},
     };
     for (const auto& args : cases) {
         INFO(args[0] << (args.size() > 1 ? " " + args[1] : ""));

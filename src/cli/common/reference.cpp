@@ -6,6 +6,7 @@
 #include <system_error>
 
 #include "asos/image/image_io.hpp"
+#include "asos/testing/culled_grid_light.hpp"
 
 namespace asos::cli {
 
@@ -39,6 +40,8 @@ RenderSettings referenceRenderSettings(const ReferenceSettings& r) {
     s.samples = r.eyeSamples;
     s.lightMethod = LightMethod::Grid;
     s.lightSamples = r.lightSamples;
+    // The light's true area, stratified: the lattice's jitter would widen it.
+    s.areaLightSampler = culledGridAreaLightSamples;
     s.threads = r.threads;
     return s;
 }
@@ -65,7 +68,7 @@ std::string referenceFileName(const std::filesystem::path& scene, const std::str
                               const ReferenceSettings& settings, const std::vector<std::string>& defines,
                               double clock) {
     Fnv1a h;
-    h.add("asos reference 1");  // the recipe's version: bump when the reference's method changes
+    h.add("asos reference 2");  // the recipe's version: bump when the reference's method changes
     h.add(sceneText);
     h.add(std::to_string(settings.eyeSamples) + " " + std::to_string(settings.lightSamples));
     for (const std::string& d : defines) h.add(d);
@@ -81,7 +84,8 @@ std::string referenceFileName(const std::filesystem::path& scene, const std::str
 ReferenceImage loadOrRenderReference(const SceneDescription& description, const std::filesystem::path& scene,
                                      const std::string& sceneText, const ReferenceSettings& settings,
                                      const std::vector<std::string>& defines, double clock,
-                                     const std::optional<std::filesystem::path>& cacheFolder, bool useCached) {
+                                     const std::optional<std::filesystem::path>& cacheFolder, bool useCached,
+                                     const std::function<void(const TileProgress&)>& progress) {
     ReferenceImage out;
     if (cacheFolder) out.cached = *cacheFolder / referenceFileName(scene, sceneText, settings, defines, clock);
     if (useCached && !out.cached.empty() && std::filesystem::is_regular_file(out.cached)) {
@@ -95,8 +99,9 @@ ReferenceImage loadOrRenderReference(const SceneDescription& description, const 
     }
     Diagnostics diagnostics;
     const auto start = std::chrono::steady_clock::now();
-    std::optional<RenderOutput> rendered =
-        render(withEveryLightPoint(description), referenceRenderSettings(settings), diagnostics);
+    RenderSettings renderSettings = referenceRenderSettings(settings);
+    renderSettings.progress = progress;
+    std::optional<RenderOutput> rendered = render(withEveryLightPoint(description), renderSettings, diagnostics);
     out.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     if (!rendered) {
         for (const Diagnostic& d : diagnostics.all()) out.error += formatDiagnostic(d);
