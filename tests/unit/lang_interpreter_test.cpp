@@ -781,3 +781,22 @@ TEST_CASE("endless loops and runaway error counts stop", "[lang][interpreter]") 
     CHECK(many.diagnostics.all().size() == 101);  // 100 errors, then a note
     CHECK_THAT(many.diagnostics.all().back().message, Contains("too many errors"));
 }
+
+TEST_CASE("noise_generator is truncated once it is known to fit an int", "[lang][interpreter][regression]") {
+    // fuzz/findings/fuzz_scene-noise-generator-3a2be428: 1e10 was cast to
+    // int before the range check, undefined behaviour that only the
+    // sanitizer build sees (the message was the same); the answers below
+    // pin the truncation and the refusals on both sides of the range.
+    const auto& scene = ok(run("global_settings { noise_generator 3.9 }\n"
+                               "sphere { 0, 1 pigment { bozo noise_generator 1 } }"));
+    CHECK(scene.globals.noiseGenerator == 3);
+    REQUIRE(scene.objects.size() == 1);
+    CHECK(scene.objects[0].texture->pigment.noiseGenerator == 1);
+    const std::pair<std::string, std::string> refusals[] = {
+        {"1e10", "1e+10"}, {"-1e10", "-1e+10"}, {"0.99", "0.99"}, {"4", "4"}};
+    for (const auto& [written, shown] : refusals) {
+        const Run refused = run("global_settings { noise_generator " + written + " }");
+        CHECK_FALSE(refused.scene);
+        CHECK(refused.errors() == "1:35: noise_generator must be 1, 2 or 3, not " + shown + "\n");
+    }
+}
