@@ -7,14 +7,16 @@
 # POV-Ray comes too: its include files are what `#include "colors.inc"` finds,
 # the tests compare with it, and its example scenes are the corpus test's.
 # GNU parallel runs docs/manual/farm.md's recipe in the farm test; gnuplot
-# draws `asos-bench accuracy`'s charts (docs/performance.md).
+# draws `asos-bench accuracy`'s charts (docs/performance.md); clang-14 and
+# its runtimes (the sanitizers', libFuzzer's: libclang-rt-14-dev) build the
+# sanitizer half of CI and the fuzz targets (scripts/sanitize.sh, fuzz.sh).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
 packages=(build-essential cmake ninja-build pkg-config
           tao-pegtl-dev libglm-dev libopenimageio-dev openimageio-tools
           catch2 libtbb-dev libcli11-dev povray povray-includes povray-examples
-          parallel gnuplot-nox
+          parallel gnuplot-nox clang-14 libclang-rt-14-dev
           ${ASOS_EXTRA_PACKAGES:-})
 missing=()
 for p in "${packages[@]}"; do

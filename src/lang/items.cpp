@@ -12,6 +12,7 @@
 // kept as a tree (CsgTree) shared by one Object per leaf.
 #include <cmath>
 
+#include "asos/geometry/margins.hpp"
 #include "asos/scene/asos_settings.hpp"
 #include "asos/shapes/shape_issue.hpp"
 #include "src/lang/interpreter_impl.hpp"
@@ -674,7 +675,10 @@ void Interpreter::startMapPattern(const Node& n, Pigment& p) {
         const Vec3 g = evalVector(n[0]);
         const double length = glm::length(g);
         if (length == 0.0) fail(n[0], "gradient <0, 0, 0> has no direction");
-        p.gradient = g / length;
+        // A vector already of unit length to rounding (the dump's) is kept:
+        // dividing again moves it by an ulp, and the dump would not read
+        // back to itself.
+        p.gradient = std::abs(length - 1.0) <= kFewUlps ? g : g / length;
     }
 }
 

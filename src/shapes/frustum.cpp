@@ -52,18 +52,42 @@ Frustum::SideQuadratic Frustum::sideQuadratic(const Profile& f, const Vec3& orig
     q.shift = glm::dot(center - origin, d);
     if (dd != 1.0) q.shift /= dd;
     q.o = origin + q.shift * d - center;
-    // C = |o.xy|^2 - r(o.z)^2 is only as good as the larger of its terms. On
-    // a steep slope (a short, wide frustum) r(o.z) at the nearest point can
-    // dwarf the distance the answer depends on; there the line's crossing
-    // of the plane z = centre, where r is the centre's own radius, is better.
+    // C = |o.xy|^2 - r(o.z)^2 is only as good as the larger of its terms.
+    const auto scale = [&](const Vec3& o) {
+        const double r = f.r0 + f.slope * (q.centerZ + o.z);
+        return o.x * o.x + o.y * o.y + r * r;
+    };
+    double best = scale(q.o);
+    // On a steep slope (a short, wide frustum) r(o.z) at the nearest point
+    // can dwarf the distance the answer depends on; there the line's
+    // crossing of the plane z = centre, where r is the centre's own radius,
+    // is better.
     if (f.slope != 0.0 && d.z != 0.0) {
-        const double r = f.r0 + f.slope * (q.centerZ + q.o.z);
         const double crossing = (q.centerZ - origin.z) / d.z;
         const Vec3 o = origin + crossing * d - center;
-        const double rc = f.r0 + f.slope * q.centerZ;
-        if (o.x * o.x + o.y * o.y + rc * rc < q.o.x * q.o.x + q.o.y * q.o.y + r * r) {
+        const Vec3 onPlane(o.x, o.y, 0.0);
+        if (const double s = scale(onPlane); s < best) {
             q.shift = crossing;
-            q.o = Vec3(o.x, o.y, 0.0);
+            q.o = onPlane;
+            best = s;
+        }
+    }
+    // A needle (r far below the distances above) needs the line's point
+    // nearest the axis within the slab zLo..zHi: elsewhere |o.xy|^2 can
+    // exceed r^2 by more than a double's digits, and a ray starting inside
+    // the needle "left" it at once. Taken only where it conditions C at
+    // least 16 times better, so that rays the points above resolve keep
+    // their bits.
+    if (const double across2 = d.x * d.x + d.y * d.y; across2 > 0.0) {
+        double nearest = -(origin.x * d.x + origin.y * d.y) / across2;
+        if (d.z != 0.0) {
+            const double t0 = (f.zLo - origin.z) / d.z, t1 = (f.zHi - origin.z) / d.z;
+            nearest = std::clamp(nearest, std::min(t0, t1), std::max(t0, t1));
+        }
+        const Vec3 o = origin + nearest * d - center;
+        if (16.0 * scale(o) < best) {
+            q.shift = nearest;
+            q.o = o;
         }
     }
     const double k = f.slope;

@@ -143,6 +143,20 @@ TEST_CASE("a write that fails part way (a file size limit) leaves the old files 
     CHECK(asos::test::slurp(dir / "stats.json") == oldStats);
     CHECK(asos::test::filesIn(dir) == before);
 
+    // Likewise the samples AOV (an EXR of 433 bytes) beside an image that fits.
+    const std::string oldAov = plantOld(dir / "aov.exr");
+    const std::set<std::string> beforeAov = asos::test::filesIn(dir);
+    const asos::test::ProgramResult aov = asos::test::runProgram(
+        ASOS_EXE, dir,
+        {"render", "scene.pov", "-o", "small.png", "-W", "4", "-H", "3", "--aov", "samples=aov.exr", "--quiet"},
+        tiny);
+    INFO(aov.err);
+    CHECK(aov.exitCode == 3);
+    CHECK(aov.err == "asos render: error: cannot write 'aov.exr': File too large\n");
+    CHECK(asos::test::slurp(dir / "small.png") == oldImage);
+    CHECK(asos::test::slurp(dir / "aov.exr") == oldAov);
+    CHECK(asos::test::filesIn(dir) == beforeAov);
+
     // Without the limit the same run writes both.
     const asos::test::ProgramResult ok = asos::test::runAsos(
         dir, {"render", "scene.pov", "-o", "small.png", "-W", "4", "-H", "3", "--stats-json", "stats.json", "--quiet"});

@@ -12,6 +12,7 @@
 
 #include "asos/lang/interpreter.hpp"
 #include "asos/lang/parse.hpp"
+#include "asos/scene/dump.hpp"
 #include "interpret_text.hpp"
 
 using namespace asos;
@@ -780,4 +781,43 @@ TEST_CASE("endless loops and runaway error counts stop", "[lang][interpreter]") 
     CHECK_FALSE(many.scene);
     CHECK(many.diagnostics.all().size() == 101);  // 100 errors, then a note
     CHECK_THAT(many.diagnostics.all().back().message, Contains("too many errors"));
+}
+
+TEST_CASE("noise_generator is truncated once it is known to fit an int", "[lang][interpreter][regression]") {
+    // fuzz/findings/fuzz_scene-noise-generator-3a2be428: 1e10 was cast to
+    // int before the range check, undefined behaviour that only the
+    // sanitizer build sees (the message was the same); the answers below
+    // pin the truncation and the refusals on both sides of the range.
+    const Run accepted = run("global_settings { noise_generator 3.9 }\n"
+                             "sphere { 0, 1 pigment { bozo noise_generator 1 } }");
+    const auto& scene = ok(accepted);
+    CHECK(scene.globals.noiseGenerator == 3);
+    REQUIRE(scene.objects.size() == 1);
+    CHECK(scene.objects[0].texture->pigment.noiseGenerator == 1);
+    const std::pair<std::string, std::string> refusals[] = {
+        {"1e10", "1e+10"}, {"-1e10", "-1e+10"}, {"0.99", "0.99"}, {"4", "4"}};
+    for (const auto& [written, shown] : refusals) {
+        const Run refused = run("global_settings { noise_generator " + written + " }");
+        CHECK_FALSE(refused.scene);
+        CHECK(refused.errors() == "1:35: noise_generator must be 1, 2 or 3, not " + shown + "\n");
+    }
+}
+
+TEST_CASE("a gradient's direction reads back from its dump unchanged", "[lang][interpreter][regression]") {
+    // fuzz/findings/fuzz_scene-gradient-0c99cb29 (the seed
+    // tests/golden/povray/map_plain.pov): gradient <1, 1, 0> was made unit
+    // length, dumped as <0.7071067811865475, ...>, and made unit length again
+    // on reading, 0.7071067811865476: the dump was not a fixed point.
+    const Run first = run("sphere { 0, 1 pigment { gradient <1, 1, 0> } }\n"
+                          "sphere { 0, 1 pigment { gradient <0.7071067811865475, 0.7071067811865475, 0> } }\n"
+                          "sphere { 0, 1 pigment { gradient 2 * y } }");
+    const auto& scene = ok(first);
+    REQUIRE(scene.objects.size() == 3);
+    CHECK(scene.objects[0].texture->pigment.gradient == Vec3(0.7071067811865475, 0.7071067811865475, 0.0));
+    CHECK(scene.objects[1].texture->pigment.gradient == Vec3(0.7071067811865475, 0.7071067811865475, 0.0));
+    CHECK(scene.objects[2].texture->pigment.gradient == Vec3(0.0, 1.0, 0.0));
+    const DumpOptions plain{.locations = false};
+    const std::string dump = dumpScene(scene, plain);
+    const Run again = run(dump);
+    CHECK(dumpScene(ok(again), plain) == dump);
 }

@@ -145,6 +145,43 @@ TEST_CASE("Cone far shorter than wide: the fuzzer's finding", "[shapes][cone][re
     CHECK_FALSE(flat.intersect(Ray{{-13, -7, 5}, glm::normalize(Vec3(1, 0.55, -0.31))}, 0.0, kInfinity));
 }
 
+TEST_CASE("A needle seen from inside it: the fuzzer's finding", "[shapes][cone][regression]") {
+    // fuzz/findings/fuzz_cone-needle-160e7bd9: an open cone 13 long and
+    // 6e-10 wide under a shear, the cone's apex inside it. The side's
+    // quadratic was set up at a point of the ray about 1 from the axis,
+    // where |o.xy|^2 swallowed r^2 whole: a ray "left" the needle at t
+    // 3.4e-12 while the classification (rightly) put every hit past 3.1e-10.
+    // The exact exit, worked to 60 digits: 9.7242523061433e-10.
+    const Mat4 m(Vec4(1.5623529411764707, 0.56235294117647061, 0.56235294117647061, 0.0),
+                 Vec4(0.56235294117647061, 1.5623529411764707, 0.56235294117647061, 0.0),
+                 Vec4(0.59999999999999998, 0.59999999999999998, 1.6000000000000001, 0.0),
+                 Vec4(5.0, 5.0, 5.0, 1.0));
+    const Primitive c = cone({-4.0, -3.999999999992724, -3.9999999999927258}, 6.7657845846018708e-10,
+                             {3.7490196078431373, 3.7490196078431373, 3.7490196078360896}, 5.0468395982510364e-10,
+                             true, Transform(m));
+    const Vec3 apex(10.0, 10.0, 10.0);
+    const auto hit = c.intersect(Ray{apex, {0.90969020877024787, 0.39657400577436286, 0.12325900377505372}}, 0.0,
+                                 kInfinity);
+    REQUIRE(hit);
+    // Within the rounding of positions about 10 from the origin (~1e-15),
+    // a few millionths of this radius.
+    CHECK(hit->t == Approx(9.7242523061433e-10).epsilon(1e-5));
+    Cone k;
+    k.apex = apex;
+    k.axis = Vec3(0.57735026918962584);
+    k.halfAngle = 1.5;
+    const ConeClass answer = c.classify(PreparedCone(k, true));
+    CHECK(probeCone(c, k, answer, {}, true).violations == 0);
+    // Untransformed: from a point of the axis, a ray at 45 degrees leaves
+    // where its distance from the axis, t / sqrt(2), meets the radius
+    // (5.25e-10 there; the slope moves it by 1e-11 of itself).
+    const Primitive needle = cone({0, -4, 0}, 6e-10, {0, 4, 0}, 5e-10, true);
+    const auto out = needle.intersect(Ray{{0, 2, 0}, glm::normalize(Vec3(1, 1, 0))}, 0.0, kInfinity);
+    REQUIRE(out);
+    CHECK(out->t == Approx(5.25e-10 * std::sqrt(2.0)).epsilon(1e-9));
+    CHECK(needle.intersect(Ray{{0, 2, 0}, glm::normalize(Vec3(0, 1, 1))}, 0.0, kInfinity));
+}
+
 TEST_CASE("Cone cone classification is conservative (property)", "[shapes][cone][property]") {
     using namespace shapetest;
     const PropertyStats stats = runConeProperty("cone", 0xc0e5ull, 100000, [](Rng& rng) {
