@@ -25,19 +25,26 @@ Bounds3 padded(Bounds3 b) {
 // component v (the face ahead of v's sign), and each component's range over
 // the cone is the row's projection's. Empty (lo > hi) where that is not
 // bounded (a cone over a half-space and more).
+// The range over a cone's unit directions of their local component along
+// axis i (the row of localFromWorld), padded.
+std::pair<double, double> localSpeeds(const LocalFrame& frame, const PreparedCone& cone, int i) {
+    const Vec3 row = frame.kind == LocalFrame::Kind::Translate
+                         ? Vec3(i == 0, i == 1, i == 2)
+                         : Vec3(frame.localFromWorld[0][i], frame.localFromWorld[1][i], frame.localFromWorld[2][i]);
+    const double len = glm::length(row), along = glm::dot(row, cone.axis);
+    const double across = glm::length(glm::cross(row, cone.axis));
+    const double pad = kThousandsOfUlps * len;
+    const double hiV = along >= len * cone.cosHalf ? len : along * cone.cosHalf + across * cone.sinHalf + pad;
+    const double loV = along <= -len * cone.cosHalf ? -len : along * cone.cosHalf - across * cone.sinHalf - pad;
+    return {loV, hiV};
+}
+
 std::pair<double, double> boxExits(const Box& box, const LocalFrame& frame, const PreparedCone& cone) {
     if (!(cone.cosHalf > 0.0)) return {kInfinity, -kInfinity};
     const Vec3 a = frame.pointToLocal(cone.apex);
     double lower = kInfinity, upper = kInfinity;
     for (int i = 0; i < 3; ++i) {
-        const Vec3 row = frame.kind == LocalFrame::Kind::Translate
-                             ? Vec3(i == 0, i == 1, i == 2)
-                             : Vec3(frame.localFromWorld[0][i], frame.localFromWorld[1][i], frame.localFromWorld[2][i]);
-        const double len = glm::length(row), along = glm::dot(row, cone.axis);
-        const double across = glm::length(glm::cross(row, cone.axis));
-        const double pad = kThousandsOfUlps * len;
-        const double hiV = along >= len * cone.cosHalf ? len : along * cone.cosHalf + across * cone.sinHalf + pad;
-        const double loV = along <= -len * cone.cosHalf ? -len : along * cone.cosHalf - across * cone.sinHalf - pad;
+        const auto [loV, hiV] = localSpeeds(frame, cone, i);
         // A ray that meets the box lies within the slab behind the face it
         // heads for.
         const double toHi = std::max(box.hi()[i] - a[i], 0.0), toLo = std::max(a[i] - box.lo()[i], 0.0);
@@ -159,6 +166,19 @@ ConeClass Primitive::classify(const Cone& worldCone) const {
 ConeClass Primitive::classify(const PreparedCone& cone) const {
     if (!clip_) [[likely]]
         return classifyOwn(cone);
+    // From within a convex leaf's solid: its exits alone, which may show a
+    // Miss; otherwise both answers hold, the narrower depths with them.
+    const std::optional<ConeClass> exits = exitsClass(cone);
+    if (exits && exits->coverage == Coverage::Miss) return *exits;
+    ConeClass k = clippedClass(cone);
+    if (!exits || k.coverage != Coverage::Marginal) return k;
+    k.tNear = std::max(k.tNear, exits->tNear);
+    k.tFar = std::min(k.tFar, exits->tFar);
+    if (!(k.tNear <= k.tFar)) return {};
+    return k;
+}
+
+ConeClass Primitive::clippedClass(const PreparedCone& cone) const {
     const ConeClass own = classifyOwn(cone);
     if (own.coverage == Coverage::Miss) return own;
     // Every crossing of the leaf in the cone: its first within own's
@@ -383,6 +403,132 @@ bool Primitive::keptWithin(const Primitive& solid, const PreparedCone& cone) con
             for (std::uint32_t c : whole.nodes[t.node].children)
                 if (c == node) return true;
     return false;
+}
+
+namespace {
+
+// Over the directions d of a cone, the range of u.d for a unit u, padded.
+std::pair<double, double> dotRange(const Vec3& u, const PreparedCone& cone) {
+    const double c = glm::dot(u, cone.axis), s = glm::length(glm::cross(u, cone.axis));
+    const double pad = kThousandsOfUlps;
+    // cos(psi + h) and cos(max(psi - h, 0)), psi the angle from u to the axis.
+    const double lo = c * cone.cosHalf - s * cone.sinHalf;
+    const double wider = c * cone.cosHalf + s * cone.sinHalf;
+    const bool throughU = c >= 0.0 && s * cone.cosHalf <= c * cone.sinHalf;  // psi <= h
+    const bool throughMinusU = c <= 0.0 && s * cone.cosHalf <= -c * cone.sinHalf;  // pi - psi <= h
+    return {throughMinusU ? -1.0 : lo - pad, throughU ? 1.0 : wider + pad};
+}
+
+// The least depth at which a ray from `apex` along a direction d with
+// w.d >= b (w = centre - apex, |w| = rho) leaves the ball of radius r about
+// `centre` (a sphere, or a cylinder's cross-section with w across its axis):
+// the larger root of t^2 - 2 (w.d) t + rho^2 - r^2 = 0, which grows with
+// w.d, at least b + sqrt(b^2 - (rho^2 - r^2)) (a cylinder's side: the
+// larger root of |d_across|^2 t^2 - 2 (w.d) t + rho^2 - r^2, with
+// |d_across| <= 1, is larger still). 0 where the apex is outside and b <= 0.
+double leastExit(double b, double rho, double r) {
+    const double k = (rho - r) * (rho + r);
+    if (k < 0.0) return b + std::sqrt(b * b - k);  // from inside: every ray leaves
+    if (!(b > 0.0)) return 0.0;
+    const double q = b * b - k;
+    return q > 0.0 ? b + std::sqrt(q) : b;
+}
+
+// How far a ray must head away from the centre (the cosine to the plane
+// holding the ball at the apex) to be taken as leaving it.
+constexpr double kAway = 1e-6;
+
+// Whether an apex at `rho` from the centre (or axis) lies on the surface of
+// radius r closely enough for the sphere's or side's bounds: k = rho^2 - r^2
+// so small that a ray heading in crosses the surface first (outside) before
+// tMin / 2 (t <= k / (w.d), and w.d >= tMin / 2 wherever the exits' bound
+// passes tMin), and one heading away (w.d <= -kAway rho) leaves it (inside)
+// within tMin / 2 (t <= |k| / (2 kAway rho)).
+bool onSurface(double rho, double r, double tMin) {
+    const double k = std::abs((rho - r) * (rho + r));
+    return k <= 0.25 * tMin * tMin && k <= kAway * rho * tMin;
+}
+
+}  // namespace
+
+std::optional<ConeClass> Primitive::exitsClass(const PreparedCone& cone) const {
+    if (!cone.valid || !bounded_) return std::nullopt;
+    const Vec3& apex = cone.apex;
+    const double scale = 1.0 + l1Norm(apex) + l1Norm(worldBounds_.lo) + l1Norm(worldBounds_.hi);
+    const double tol = kPositionTolerance * scale;
+    // A ray counted from the apex itself would meet the surface there.
+    if (!(cone.tMin > 1e3 * tol)) return std::nullopt;
+    const bool rigid = frame_.kind != LocalFrame::Kind::General;
+    const double worldPerLocal = frame_.kind == LocalFrame::Kind::Similarity ? frame_.worldPerLocal : 1.0;
+    // The exits' depths: [lower, upper] (lower = -inf where unknown).
+    double lower = -kInfinity, upper = kInfinity;
+    bool known = false;
+    if (const Box* box = std::get_if<Box>(&shape_)) {
+        // An apex outside the box (by rounding) may see a ray enter it: only
+        // before tMin, where every ray heading in along an axis it lies
+        // outside of gains the gap by then.
+        if (!(cone.cosHalf > 0.0)) return std::nullopt;
+        const Vec3 a = frame_.pointToLocal(apex);
+        for (int i = 0; i < 3; ++i) {
+            const double below = box->lo()[i] - a[i], above = a[i] - box->hi()[i];
+            if (!(below > 0.0) && !(above > 0.0)) continue;
+            const auto [loV, hiV] = localSpeeds(frame_, cone, i);
+            const double gap = std::max(below, above) * (1.0 + 1e-9);
+            const double needed = gap / (0.5 * cone.tMin);
+            const bool entersSoon = below > 0.0 ? (hiV <= 0.0 || loV >= needed) : (loV >= 0.0 || hiV <= -needed);
+            if (!entersSoon) return std::nullopt;
+        }
+        const auto [lo, hi] = boxExits(*box, frame_, cone);
+        if (lo > hi) return std::nullopt;
+        lower = lo;
+        upper = hi;
+        known = true;
+    } else if (const Sphere* sphere = std::get_if<Sphere>(&shape_); sphere && rigid) {
+        const Vec3 w = frame_.pointToWorld(Vec3(0.0)) - apex;
+        const double rho = glm::length(w), r = sphere->radius() * worldPerLocal;
+        const bool surface = onSurface(rho, r, cone.tMin);
+        if (!(rho > 0.0) || !(surface || rho < r)) return std::nullopt;
+        const auto [dLo, dHi] = dotRange(w / rho, cone);
+        // Every ray heads out of the ball (away from the centre past the
+        // plane that holds it at the apex): it never meets the sphere.
+        if (surface && dHi < -kAway) return ConeClass{};
+        lower = leastExit(rho * dLo, rho, r) * (1.0 - 1e-9) - tol;
+        known = true;
+    } else if (const Cylinder* cylinder = std::get_if<Cylinder>(&shape_);
+               cylinder && rigid && !cylinder->canShadowItself()) {
+        const Vec3 p0 = frame_.pointToWorld(Vec3(0.0));
+        const Vec3 p1 = frame_.pointToWorld(Vec3(0.0, 0.0, cylinder->frustum().length()));
+        const double length = glm::length(p1 - p0);
+        if (!(length > 0.0)) return std::nullopt;
+        const Vec3 e = (p1 - p0) / length;
+        const double along = glm::dot(apex - p0, e);
+        const Vec3 w = p0 + along * e - apex;  // to the axis, across it
+        const double rho = glm::length(w), r = cylinder->frustum().radiusAt(0.0) * worldPerLocal;
+        const bool surface = onSurface(rho, r, cone.tMin);
+        if (!(rho > 0.0) || !(surface || rho < r)) return std::nullopt;
+        const auto [dLo, dHi] = dotRange(w / rho, cone);
+        // The caps: a ray reaches a cap's plane no nearer than the apex's
+        // distance to it; a cap the apex lies on (or near) bounds nothing.
+        const double toCap = std::min(along, length - along);
+        const double side = leastExit(rho * dLo, rho, r);
+        // Above the plane holding the cylinder at a point of its side (the
+        // side's tangent plane; the apex within the caps' slab).
+        if (surface && dHi < -kAway && toCap > tol) return ConeClass{};
+        lower = std::min(side, std::max(toCap, 0.0)) * (1.0 - 1e-9) - tol;
+        known = true;
+    }
+    if (!known) return std::nullopt;
+    // Every kept crossing lies in the kept part's box.
+    const Vec3 far = glm::max(glm::abs(worldBounds_.lo - apex), glm::abs(worldBounds_.hi - apex));
+    upper = std::min(upper, padUp(glm::length(far)) + tol);
+    lower = std::max(lower, cone.tMin);
+    upper = std::min(upper, cone.tMax);
+    if (!(lower <= upper)) return ConeClass{};
+    const CsgClip::Verdict v = clip_->verdict(lower, upper, cone,
+                                              [this](const PreparedCone& part) { return classifyOwn(part); },
+                                              CsgClip::kSpanSplits);
+    if (v == CsgClip::Verdict::Dropped || v == CsgClip::Verdict::None) return ConeClass{};
+    return ConeClass{Coverage::Marginal, lower, upper, false};
 }
 
 bool Primitive::canShadowItself() const {

@@ -414,3 +414,55 @@ TEST_CASE("CSG cone classification is conservative (property)", "[shapes][csg][p
     CHECK(stats.marginal > 0);
     CHECK(stats.miss > 0);
 }
+
+TEST_CASE("A cut's wall seen from its own surface: the exits a clip drops", "[shapes][csg]") {
+    // examples/bench/csg_room.pov's window reveal and bowl.
+    TreeBuilder b;
+    const auto root = b.compound(Op::Difference);
+    b.attach(root, b.leaf(BoxShape{{-3, 0, 3}, {3, 3, 3.15}}));
+    b.attach(root, b.leaf(BoxShape{{-2.2, 1, 2.9}, {-0.8, 2.3, 3.3}}));
+    const Primitive cut = b.make(1);
+    const Vec3 light{0.3, 2.8, 0.4};
+    for (const Vec3& p : {Vec3{-2.2, 1.5, 3.05}, Vec3{-1.5, 1.0, 3.1}, Vec3{-1.5, 1.0, 3.149}}) {
+        Cone cone{p, light - p, 0.18};
+        cone.tMin = 1e-3;
+        const ConeClass k = cut.classify(PreparedCone(cone));
+        INFO(p.x << " " << p.y << " " << p.z << " -> " << int(k.coverage) << " [" << k.tNear << ", " << k.tFar << "]");
+        CHECK(k.coverage == Coverage::Miss);
+    }
+}
+
+TEST_CASE("A CSG leaf seen from within its solid or on its surface is conservative (property)",
+          "[shapes][csg][property]") {
+    // Cones from a point of the leaf's own surface (a shaded point's shadow
+    // beam) or inside its solid, their rays counted from 1e-3 on
+    // (Primitive::exitsClass): every probe ray's kept hit agrees.
+    Rng rng(0xc5600003ull);
+    int misses = 0, cases = 0, failures = 0;
+    for (int i = 0; i < 4000; ++i) {
+        const shapetest::ShapeCase shape = randomCsg(rng);
+        const Primitive prim = Primitive::make(shape.shape, Transform{});
+        Vec3 apex = shape.surfacePoint(rng);
+        if (rng.chance(0.3)) apex += rng.unitVector() * rng.uniform(0.0, 0.3);
+        Cone cone{apex, rng.unitVector(), rng.uniform(0.001, 0.4)};
+        cone.tMin = 1e-3;
+        const ConeClass k = prim.classify(PreparedCone(cone));
+        ++cases;
+        if (k.coverage == Coverage::Miss) ++misses;
+        for (const Vec3& dir : probeDirections(cone)) {
+            const auto hit = prim.intersect(Ray{apex, dir}, cone.tMin, kInfinity);
+            const bool wrong = k.coverage == Coverage::Miss ? hit.has_value()
+                               : k.coverage == Coverage::Full
+                                   ? !hit || hit->t < k.tNear - 1e-9 || hit->t > k.tFar + 1e-9
+                                   : hit && (hit->t < k.tNear - 1e-9 || hit->t > k.tFar + 1e-9);
+            if (wrong && failures++ < 5)
+                FAIL_CHECK("case " << i << ": " << shape.text << "\n  apex " << shapetest::fmt(apex) << " axis "
+                                   << shapetest::fmt(cone.axis) << " half-angle " << cone.halfAngle << "\n  answer "
+                                   << int(k.coverage) << " [" << k.tNear << ", " << k.tFar << "], the ray along "
+                                   << shapetest::fmt(dir) << (hit ? " hits at " + std::to_string(hit->t) : " misses"));
+            if (wrong) break;
+        }
+    }
+    CHECK(failures == 0);
+    CHECK(misses > cases / 10);
+}

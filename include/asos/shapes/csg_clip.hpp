@@ -113,12 +113,14 @@ struct CsgClip {
     ConeClass restrict(const ConeClass& own, const ConeClass& second, const PreparedCone& cone,
                        FunctionRef<ConeClass(const PreparedCone&)> ownClass) const;
 
-private:
     // What the tests say of the leaf's crossings within a span of depth:
     // all kept, all dropped, not known, or none there.
     enum class Verdict : std::uint8_t { Kept, Dropped, Unsure, None };
     // A span the tests leave unsure is split in halves, `splits` deep.
     static constexpr int kSpanSplits = 3;
+    // The tests asked over the cone's depths [t0, t1] (within its range):
+    // a span they leave unsure is split in halves, `splits` deep, a half
+    // the leaf's own answer (ownClass) does not cross left out.
     Verdict verdict(double t0, double t1, const PreparedCone& cone,
                     FunctionRef<ConeClass(const PreparedCone&)> ownClass, int splits) const;
 };

@@ -183,6 +183,21 @@ private:
     template <class F>
     decltype(auto) visit(F&& f) const;
     ConeClass classifyOwn(const PreparedCone& cone) const;
+    // A CSG leaf's answer from its clip's tests over the depths of its
+    // nearest crossings and of its later ones (docs/geometry.md, "CSG").
+    ConeClass clippedClass(const PreparedCone& cone) const;
+    // A CSG leaf of a closed convex solid (a box; a sphere or capped
+    // cylinder under a translation or similarity) over a cone whose apex
+    // lies within the solid or on its surface, its rays counted from
+    // cone.tMin on: a ray from there meets the surface only where it
+    // leaves the solid, once (and from the surface only if it heads into
+    // it), so the leaf's crossings in the cone are those exits, whose
+    // depths are bounded (a box's from its slab planes, a sphere's or a
+    // cylinder side's from the chord, a cap's from its plane) and asked of
+    // the clip: Miss where every exit is dropped or, from the surface,
+    // every ray heads away from the solid, else Marginal over the exits'
+    // depths. None where the apex is not shown within or tMin is too small.
+    std::optional<ConeClass> exitsClass(const PreparedCone& cone) const;
     // A CSG leaf's answers (clip_ set), out of line.
     std::optional<LocalHit> clippedHit(const Ray& worldRay, double tMin, double tMax) const;
     bool clippedAny(const Ray& worldRay, double tMin, double tMax) const;
