@@ -9,20 +9,11 @@
 #include <string>
 
 #include "asos/diag/diagnostics.hpp"
+#include "asos/fuzz_options.hpp"
 #include "asos/lang/interpreter.hpp"
 #include "asos/scene/dump.hpp"
 
 namespace {
-
-asos::lang::InterpreterOptions fuzzOptions() {
-    asos::lang::InterpreterOptions options;
-    // Small enough that a loop or an array the fuzzer writes ends in
-    // milliseconds; the limits themselves are what is tested.
-    options.maxLoopIterations = 20'000;
-    options.maxArrayElements = 20'000;
-    options.maxErrors = 10;
-    return options;
-}
 
 [[noreturn]] void fail(const char* what, const std::string& first, const std::string& second) {
     std::fprintf(stderr, "fuzz_scene: %s\n--- first dump\n%s\n--- second\n%s\n", what, first.c_str(),
@@ -33,7 +24,7 @@ asos::lang::InterpreterOptions fuzzOptions() {
 }  // namespace
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
-    static const asos::lang::InterpreterOptions options = fuzzOptions();
+    static const asos::lang::InterpreterOptions options = asos::fuzzSceneOptions();
     std::string text(reinterpret_cast<const char*>(data), size);
     asos::Diagnostics diagnostics;
     const auto scene = asos::lang::interpretText(std::move(text), "fuzz.pov", options, diagnostics);
