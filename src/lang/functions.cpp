@@ -175,6 +175,15 @@ private:
             return;
         case NodeKind::Call: builtin(n); return;
         case NodeKind::MacroCall: userCall(n); return;
+        case NodeKind::Member:
+            // F(…).gray: a member of a vector function's value (pigment,
+            // transform, spline), which asos refuses as those functions.
+            if (n[0].kind == NodeKind::MacroCall)
+                if (const Value* v = in_.lookup(n[0][0].id))
+                    if (const auto* f = std::get_if<std::shared_ptr<const FunctionValue>>(v); f && !(*f)->program)
+                        throw Refused{(*f)->refusal};
+            in_.fail(n, quote(std::string(".") += wordText(n.word)) +
+                            " needs a vector; a float function's value has no members");
         default:
             in_.fail(n, "a function holds floats only; this is not a float expression POV-Ray allows in a function");
         }

@@ -121,6 +121,11 @@ TEST_CASE("internal, pigment and pattern functions are refused where used", "[fu
     CHECK(errorsOf(std::string(d) + "#declare B = f_gradientX(1, 2, 3);") ==
           "5:14: 'pattern' in a function is not supported by asos (the function { pattern { … } } declared at "
           "t.pov:3:24), called here as 'f_gradientX'\n");
+    CHECK(errorsOf(std::string(d) + "#declare G = function { f_pig(x, y, z).gray }\n#declare B = G(1, 2, 3);") ==
+          "6:14: 'pigment' in a function is not supported by asos (the function { pigment { … } } declared at "
+          "t.pov:4:18), called here as 'G'\n");
+    CHECK(errorsOf("#declare F = function { x }\n#declare G = function { F(x, y, z).x }") ==
+          "2:35: '.x' needs a vector; a float function's value has no members\n");
     CHECK(errorsOf(std::string(d) + "plane { y, 0 pigment { function { f_pig(x, y, z) } } }") ==
           "5:35: 'pigment' in a function is not supported by asos (the function { pigment { … } } declared at "
           "t.pov:4:18)\n");
