@@ -111,7 +111,7 @@ std::string write(const FunctionProgram& f, std::span<const std::string> argumen
             const FunctionProgram& callee = *f.callees[i.a];
             std::vector<std::string> args(callee.parameters());
             for (std::size_t k = args.size(); k-- > 0;) args[k] = pop();
-            stack.push_back("(" + write(callee, args, loops) + ")");
+            stack.push_back(write(callee, args, loops));  // an operation's text is in parentheses already
             break;
         }
         case Op::LoopStart: {

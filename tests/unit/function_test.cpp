@@ -143,5 +143,5 @@ TEST_CASE("the function pattern takes the function's value, wrapped as POV-Ray's
     CHECK(mapPatternValue(p, Vec3(0.0, 1.25, 0.0)) == Approx(0.25));         // above 1: wrapped
     CHECK(mapPatternValue(p, Vec3(0.0, -0.25, 0.0)) == Approx(0.75));        // below 0: as the wave wraps it
     const std::string xyz[] = {"x", "y", "z"};
-    CHECK(functionText(*p.function, xyz) == "(((x * 0.5) + y))");
+    CHECK(functionText(*p.function, xyz) == "((x * 0.5) + y)");
 }
