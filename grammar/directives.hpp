@@ -7,6 +7,7 @@
 // wherever it fails (must_if), so such rules are used only where failing is
 // an error; a token needed both ways gets two names (`lbrace`, `block_open`).
 #include "grammar/expressions.hpp"
+#include "grammar/functions.hpp"
 
 namespace asos::grammar {
 
@@ -101,7 +102,7 @@ struct declare_semicolon : semicolon {};
 struct texture_layers_open : success {};
 struct layered_texture : seq<at<TAO_PEGTL_KEYWORD("texture")>, texture_layers_open, plus<texture_block>> {};
 struct declarable_block : sor<object_statement, light_source_block, camera_block, pigment_block,
-                              normal_block, finish_block, texture_block, colour_map_block> {};
+                              normal_block, finish_block, texture_block, colour_map_block, function_value> {};
 // POV-Ray wants the ';' after a float, vector or colour, not after a string,
 // a block, an array or a macro's value (which may be a block). A string is told
 // by how it starts: a literal or a function whose value is a string.

@@ -89,6 +89,16 @@ template <> inline constexpr auto error_message<comparison_operand> = "expected 
 template <> inline constexpr auto error_message<conjunction_operand> = "expected an operand";
 template <> inline constexpr auto error_message<disjunction_operand> = "expected an operand";
 template <> inline constexpr auto error_message<op_colon> = "expected ':' of the '?:' expression";
+// functions
+template <> inline constexpr auto error_message<internal_open> = "expected '(' after 'internal'";
+template <> inline constexpr auto error_message<internal_number> = "expected the number of the internal function";
+template <> inline constexpr auto error_message<function_parameter_list> = "expected the function's parameter names";
+template <> inline constexpr auto error_message<function_parameter> = "expected a parameter name";
+template <> inline constexpr auto error_message<function_open> = "expected '{' to open the function's body";
+template <> inline constexpr auto error_message<function_pattern_open> = "expected '{' to open the function's body";
+template <> inline constexpr auto error_message<function_body> = "expected the function's expression";
+template <> inline constexpr auto error_message<function_expression> = "expected the function's expression";
+template <> inline constexpr auto error_message<function_close> = "expected '}' to close the function";
 // directives
 template <> inline constexpr auto error_message<condition> = "expected a condition in parentheses";
 template <> inline constexpr auto error_message<if_end> = "expected #elseif, #else or #end to close #if";

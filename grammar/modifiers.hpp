@@ -68,7 +68,7 @@ struct spotted_item : kw_spotted {};
 struct granite_item : kw_granite {};
 struct agate_item : kw_agate {};
 struct map_pattern_item : sor<gradient_item, radial_item, onion_item, marble_item, wood_item, leopard_item,
-                              bozo_item, spotted_item, granite_item, agate_item> {};
+                              bozo_item, spotted_item, granite_item, agate_item, function_pattern_item> {};
 // Their modifiers; the interpreter checks that the pattern takes them.
 struct turbulence_item : if_must<kw_turbulence, vector_value> {};  // a float for all three axes
 struct octaves_item : if_must<kw_octaves, float_value> {};

@@ -93,6 +93,7 @@ std::string describe(const Value& v) {
         std::string operator()(const std::shared_ptr<const Normal>&) const { return "a normal"; }
         std::string operator()(const Poison&) const { return "an erroneous value"; }
         std::string operator()(const Unset&) const { return "an element without a value"; }
+        std::string operator()(const std::shared_ptr<const FunctionValue>&) const { return "a function"; }
     };
     return std::visit(Visitor{}, v);
 }
@@ -434,6 +435,8 @@ Value Interpreter::eval(const Node& n) {
         return arrayElement(n);
     case NodeKind::MacroCall:
         return evalMacroValue(n);
+    case NodeKind::Function:
+        return makeFunction(n);
     case NodeKind::Array:
         return makeArray(n);
     default:
@@ -556,6 +559,8 @@ Value Interpreter::call(const Node& n) {
         return Num::vector(a * std::cos(t) + glm::cross(k, a) * std::sin(t) +
                            k * glm::dot(k, a) * (1.0 - std::cos(t)));
     }
+    case Word::Sum: case Word::Prod:
+        fail(n, quote(wordText(n.word)) + " is allowed only inside a function { … }, as in POV-Ray");
     case Word::Select: {
         const double a = f(0);
         if (args.size() == 3) return eval(args[a < 0 ? 1 : 2]);

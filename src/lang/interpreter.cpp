@@ -419,12 +419,16 @@ BreakNode Interpreter::runDirective(const Node& n, EntryHandler handle) {
     case NodeKind::Declare:
     case NodeKind::Local: {
         Value value = Poison{};
+        const std::uint32_t outerDeclaring = declaring_;
+        declaring_ = n[0].kind == NodeKind::Name ? n[0].id : kNoName;
         try {
             value = evalDeclarable(n[1]);
+            declaring_ = outerDeclaring;
             if (n.flags && std::holds_alternative<Num>(value))
                 fail(n[1], "expected ';' after the declared value: POV-Ray wants one after a float, a vector "
                            "or a colour, and this is " + describe(value));
         } catch (const Abandon&) {
+            declaring_ = outerDeclaring;
             // Declared anyway, as poison, so that its uses do not each report
             // "not declared" after the real error.
             if (n[0].kind != NodeKind::Name) throw;

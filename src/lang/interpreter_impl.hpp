@@ -92,6 +92,13 @@ struct SourceFile {
 
 struct ArrayValue;
 struct MacroDef;
+// A declared function (lang/functions.cpp): its program, or, for the kinds
+// asos refuses where they are used (internal(N), pigment, pattern,
+// transform and spline functions, and functions that call those), why.
+struct FunctionValue {
+    std::shared_ptr<const FunctionProgram> program;  // null: refused where used
+    std::string refusal;                             // the message then
+};
 // A declared color_map.
 struct ColourMapValue {
     std::vector<ColourMapEntry> entries;
@@ -101,7 +108,8 @@ using Value = std::variant<Num, std::string, std::shared_ptr<const ObjectTree>,
                            std::shared_ptr<const Pigment>, std::shared_ptr<const Finish>,
                            std::shared_ptr<const Texture>, std::shared_ptr<const CameraValue>,
                            std::shared_ptr<ArrayValue>, std::shared_ptr<const MacroDef>,
-                           std::shared_ptr<const ColourMapValue>, std::shared_ptr<const Normal>, Poison, Unset>;
+                           std::shared_ptr<const ColourMapValue>, std::shared_ptr<const Normal>, Poison, Unset,
+                           std::shared_ptr<const FunctionValue>>;
 
 // A declared array: up to 5 dimensions, its elements all of one kind (the first
 // one given sets it, as in POV-Ray). Arrays are values: names share one until
@@ -253,6 +261,14 @@ public:
     Value evalMacroValue(const Node& call);
     bool isDefined(const Node& n);
     Value arrayElement(const Node& index);
+
+    // functions.cpp
+    // function(…) { … } compiled (parameters and body as the Function node's).
+    Value makeFunction(const Node& fn);
+    // A function of x, y, z from an expression (the function pattern's body).
+    std::shared_ptr<const FunctionProgram> compileFunctionOfPoint(const Node& body);
+    // F(…) where F is a function: its value, the arguments evaluated as floats.
+    Num callFunction(const Node& call, const FunctionValue& f);
 
     // items.cpp
     void runTopEntry(const Node& n);
@@ -415,6 +431,10 @@ private:
         Interpreter& self_;
         const ObjectTree& tree_;
     };
+    // The name a #declare or #local is giving a value to (a function may not
+    // call it: POV-Ray's functions are not recursive); kNoName: none.
+    static constexpr std::uint32_t kNoName = 0xffffffffu;
+    std::uint32_t declaring_ = kNoName;
     std::vector<std::uint32_t> randomStreams_;  // seed(): POV-Ray's generators, by number
 
     SceneDescription scene_;

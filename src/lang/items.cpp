@@ -67,6 +67,7 @@ bool isMapPattern(Word w) {
     switch (w) {
     case Word::Gradient: case Word::Radial: case Word::Onion: case Word::Marble: case Word::Wood:
     case Word::Leopard: case Word::Bozo: case Word::Spotted: case Word::Granite: case Word::Agate:
+    case Word::Function:
         return true;
     default: return false;
     }
@@ -83,6 +84,7 @@ Pigment::Kind mapKind(Word w) {
     case Word::Bozo: return Pigment::Kind::Bozo;
     case Word::Spotted: return Pigment::Kind::Spotted;
     case Word::Granite: return Pigment::Kind::Granite;
+    case Word::Function: return Pigment::Kind::Function;
     default: return Pigment::Kind::Agate;
     }
 }
@@ -670,6 +672,7 @@ void Interpreter::applyMapModifier(const Node& n, Pigment& p) {
 // but the modifiers read before it (turbulence, a colour map) stay.
 void Interpreter::startMapPattern(const Node& n, Pigment& p) {
     p.kind = mapKind(n.word);
+    p.function = n.word == Word::Function ? compileFunctionOfPoint(n[0]) : nullptr;
     p.wave = (n.word == Word::Marble || n.word == Word::Wood) ? Pigment::Wave::Triangle : Pigment::Wave::Ramp;
     if (n.word == Word::Gradient) {
         const Vec3 g = evalVector(n[0]);

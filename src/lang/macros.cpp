@@ -50,6 +50,10 @@ void Interpreter::invokeMacro(const Node& call, BodyContext context, EntryHandle
     const Node& name = call[0];
     const Value* found = lookup(name.id);
     if (!found) fail(name, "'" + nameOf(name) + "' is not declared");
+    if (std::holds_alternative<std::shared_ptr<const FunctionValue>>(*found) && context == BodyContext::Value) {
+        handle(call);  // a function's call standing as a macro's value
+        return;
+    }
     const auto* pointer = std::get_if<std::shared_ptr<const MacroDef>>(found);
     if (!pointer) fail(name, "'" + nameOf(name) + "' is " + describe(*found) + ", not a macro");
     const std::shared_ptr<const MacroDef> macro = *pointer;  // alive even if the body #undefs it
@@ -93,6 +97,8 @@ void Interpreter::invokeMacro(const Node& call, BodyContext context, EntryHandle
 
 // A macro called for its value: its body is one value (after any directives).
 Value Interpreter::evalMacroValue(const Node& call) {
+    if (const Value* callee = lookup(call[0].id))
+        if (const auto* f = std::get_if<std::shared_ptr<const FunctionValue>>(callee)) return callFunction(call, **f);
     std::optional<Value> result;
     auto collect = [&](const Node& n) {
         if (result) fail(n, "the macro '" + nameOf(call[0]) + "' gives a second value here; one is wanted");

@@ -475,6 +475,8 @@ Arity arityOf(Word w) {
         return {2, 2};
     case Word::VaxisRotate: case Word::Substr:
         return {3, 3};
+    case Word::Sum: case Word::Prod:
+        return {4, 4};
     case Word::Vstr:
         return {5, 5};
     case Word::Select:
@@ -511,6 +513,36 @@ struct action<g::function_call> {
         b.close(NodeKind::Call, w, posOf(in));
     }
 };
+
+// User-defined functions (grammar/functions.hpp).
+template <>
+struct action<g::function_start> {
+    static void apply0(Builder& b) { b.open(Word::Function); }
+};
+template <>
+struct action<g::function_parameters> {
+    static void apply0(Builder& b) { b.frame().flag = true; }
+};
+template <> struct action<g::function_parameter_name> : PushName {};
+template <>
+struct action<g::function_block> {
+    template <typename Input>
+    static void apply(const Input& in, Builder& b) {
+        const std::string_view word = leadingWord(in.string_view());
+        b.pushWord(NodeKind::Item, Word::Function, posOf(in));
+        b.top().flags = word == "pigment" ? 1 : word == "pattern" ? 2 : word == "transform" ? 3 : 4;
+    }
+};
+template <> struct action<g::function_internal> : Reduce<NodeKind::Item, Word::Internal, 1> {};
+template <>
+struct action<g::function_value> {
+    template <typename Input>
+    static void apply(const Input& in, Builder& b) {
+        const std::uint8_t flags = b.frame().flag ? 1 : 0;
+        b.close(NodeKind::Function, Word::Function, posOf(in), flags);
+    }
+};
+template <> struct action<g::function_pattern_item> : Reduce<NodeKind::Item, Word::Function, 1> {};
 
 // Colours.
 template <>

@@ -80,6 +80,14 @@ double rawValue(const Pigment& p, const Vec3& q) {
             const double v = 0.5 * (PovNoise::cycloidal(1.3 * turb + 1.1 * q.z) + 1.0);
             return v < 0.0 ? 0.0 : std::pow(std::min(1.0, v), 0.77);
         }
+        case Pigment::Kind::Function: {
+            // POV-Ray's FunctionPattern: the function of the point, above 1
+            // wrapped as gradient's; NaN (sqrt(-1) …) reads as 0 here.
+            const double point[3] = {q.x, q.y, q.z};
+            const double v = p.function->evaluate(point);
+            if (std::isnan(v)) return 0.0;
+            return v > 1.0 ? std::fmod(v, 1.0) : v;
+        }
         case Pigment::Kind::Solid:
         case Pigment::Kind::Checker:
         case Pigment::Kind::Brick: break;

@@ -1,5 +1,7 @@
 #include "asos/scene/dump.hpp"
 
+#include "asos/scene/function_text.hpp"
+
 #include <charconv>
 #include <ostream>
 #include <sstream>
@@ -227,6 +229,11 @@ void writeMapPatternName(Writer& w, const Pigment& p) {
             w << "agate agate_turb ";
             w.num(p.agateTurb);
             break;
+        case Pigment::Kind::Function: {
+            const std::string xyz[] = {"x", "y", "z"};
+            w << "function { " << functionText(*p.function, xyz) << " }";
+            break;
+        }
     }
 }
 

@@ -57,6 +57,11 @@ enum class NodeKind : std::uint8_t {
     MacroBody,    // id: the body's byte offset in its file; count: its length in bytes
     Array,        // children: the sizes, then an optional Initialiser; flags: number of sizes
     Initialiser,  // children: elements, or Initialisers one level down
+    // function(…) { … }: children: the parameters (Names, or Constants x y z u
+    // v), then the body: an expression, or an Item (word Internal: its number;
+    // word Function, flags 1 to 4: a pigment, pattern, transform or spline
+    // block, left unread); flags: 1 when a parameter list was written.
+    Function,
 };
 
 struct Node {

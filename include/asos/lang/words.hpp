@@ -79,6 +79,9 @@ namespace asos::lang {
     WORD(Val, "val") WORD(Defined, "defined") WORD(Substr, "substr") WORD(Strcmp, "strcmp")              \
     WORD(Vstr, "vstr") WORD(Asc, "asc") WORD(Strupr, "strupr") WORD(Strlwr, "strlwr") WORD(Rand, "rand")        \
     WORD(Seed, "seed") WORD(Dimensions, "dimensions") WORD(DimensionSize, "dimension_size")            \
+    WORD(Sum, "sum") WORD(Prod, "prod")                                                            \
+    /* user-defined functions */                                                                \
+    WORD(Function, "function") WORD(Internal, "internal")                                          \
     /* operators (spelled as written) */                                                        \
     WORD(OpAdd, "+") WORD(OpSub, "-") WORD(OpMul, "*") WORD(OpDiv, "/") WORD(OpNot, "!") WORD(OpLess, "<")        \
     WORD(OpLessEqual, "<=") WORD(OpEqual, "=") WORD(OpNotEqual, "!=") WORD(OpGreaterEqual, ">=")            \

@@ -14,6 +14,7 @@
 #include "asos/diag/source_loc.hpp"
 #include "asos/geometry/transform.hpp"
 #include "asos/geometry/vec.hpp"
+#include "asos/scene/function_program.hpp"
 
 namespace asos {
 
@@ -183,7 +184,7 @@ struct ColourMapEntry {
 struct Pigment {
     // Checker and Brick have two colours and plane edges; the others run a
     // value over [0, 1] through a colour map (render/map_pattern.hpp).
-    enum class Kind { Solid, Checker, Brick, Gradient, Radial, Onion, Marble, Wood, Leopard, Bozo, Spotted, Granite, Agate };
+    enum class Kind { Solid, Checker, Brick, Gradient, Radial, Onion, Marble, Wood, Leopard, Bozo, Spotted, Granite, Agate, Function };
     enum class Wave { Ramp, Triangle, Sine };
     Kind kind = Kind::Solid;
     Color color1{};                       // the solid colour, or the pattern's first (brick: the mortar)
@@ -204,6 +205,8 @@ struct Pigment {
     double agateTurb = 1.0;
     int noiseGenerator = 0;               // 1, 2 or 3; 0: the scene's (global_settings)
     Transform worldFromPattern;           // full transform of the pattern space
+    // Kind::Function: the function of x, y, z (shared; equal when the same one).
+    std::shared_ptr<const FunctionProgram> function;
     bool operator==(const Pigment&) const = default;
 };
 
