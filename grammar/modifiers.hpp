@@ -144,8 +144,9 @@ struct roughness_item : if_must<kw_roughness, float_value> {};
 struct crand_item : if_must<kw_crand, float_value> {};
 struct reflection_item : if_must<kw_reflection, reflection_value> {};
 struct finish_name : indexed_name {};  // a declared finish
+struct finish_emission : kw_emission {};  // a finish's emission: not ours
 struct finish_entry
-    : sor<ambient_item, diffuse_item, brilliance_item, phong_item, phong_size_item, specular_item,
+    : sor<finish_emission, ambient_item, diffuse_item, brilliance_item, phong_item, phong_size_item, specular_item,
           roughness_item, crand_item, reflection_item, finish_name, unsupported_item> {};
 struct finish_end : rbrace {};
 struct finish_block : if_must<kw_finish, block_open, entries<finish_entry>, finish_end> {};

@@ -129,8 +129,8 @@ TEST_CASE("syntax errors name the place and what was found there", "[lang][parse
     CHECK(errorOf("sphere { 0, 1 foo }") == "1:15: expected an object modifier or '}', found 'foo'");
     CHECK(errorOf("#declare X = 1\nsphere { X, 1 }") == "2:1: expected ';' after the declared value, found 'sphere'");
     CHECK(errorOf("spheres { 0, 1 }") ==
-          "1:1: expected a scene item (camera, light_source, an object, global_settings, background) or a "
-          "directive, found 'spheres'");
+          "1:1: expected a scene item (camera, light_source, an object, global_settings, background, sky_sphere, "
+          "fog) or a directive, found 'spheres'");
     CHECK(errorOf("#declare V = <1, 2, 3, 4, 5, 6>;") == "1:14: a vector has 2 to 5 components, this one has 6");
     CHECK(errorOf("#declare V = vrotate(x);") == "1:14: 'vrotate' takes 2 arguments, not 1");
     CHECK(errorOf("#declare S = \"abc\n\";") == "1:18: unterminated string: expected '\"' before the end of the line");
