@@ -214,7 +214,6 @@ template <> inline constexpr auto rejection_message<cylinder_light> = "'cylinder
 template <> inline constexpr auto rejection_message<cylinder_camera> = "the 'cylinder' camera is not supported by asos";
 template <> inline constexpr auto rejection_message<camera_normal> = "'normal' in a camera is not supported by asos";
 template <> inline constexpr auto rejection_message<texture_pattern> = "texture patterns ('{}' of textures) are not supported by asos; use {} in the pigment";
-template <> inline constexpr auto rejection_message<pigment_normal_pattern> = "'{}' is not supported by asos as a pigment's pattern (only in a normal)";
 template <> inline constexpr auto rejection_message<finish_emission> = "'{}' in a finish is not supported by asos";
 template <> inline constexpr auto rejection_message<normal_block_pattern> = "'{}' in a normal (a pattern of normals) is not supported by asos";
 template <> inline constexpr auto rejection_message<reflection_block> = "'reflection { … }' is not supported by asos; write reflection followed by a colour or a float";

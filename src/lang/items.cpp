@@ -68,6 +68,7 @@ bool isMapPattern(Word w) {
     switch (w) {
     case Word::Gradient: case Word::Radial: case Word::Onion: case Word::Marble: case Word::Wood:
     case Word::Leopard: case Word::Bozo: case Word::Spotted: case Word::Granite: case Word::Agate:
+    case Word::Bumps: case Word::Dents: case Word::Wrinkles: case Word::Ripples: case Word::Waves:
         return true;
     default: return false;
     }
@@ -84,6 +85,11 @@ Pigment::Kind mapKind(Word w) {
     case Word::Bozo: return Pigment::Kind::Bozo;
     case Word::Spotted: return Pigment::Kind::Spotted;
     case Word::Granite: return Pigment::Kind::Granite;
+    case Word::Bumps: return Pigment::Kind::Bumps;
+    case Word::Dents: return Pigment::Kind::Dents;
+    case Word::Wrinkles: return Pigment::Kind::Wrinkles;
+    case Word::Ripples: return Pigment::Kind::Ripples;
+    case Word::Waves: return Pigment::Kind::Waves;
     default: return Pigment::Kind::Agate;
     }
 }

@@ -305,7 +305,6 @@ template <> struct action<g::camera_normal> : Reject<g::camera_normal> {};
 template <> struct action<g::texture_pattern> : Reject<g::texture_pattern> {};
 template <> struct action<g::reflection_block> : Reject<g::reflection_block> {};
 template <> struct action<g::normal_block_pattern> : Reject<g::normal_block_pattern> {};
-template <> struct action<g::pigment_normal_pattern> : Reject<g::pigment_normal_pattern> {};
 template <> struct action<g::finish_emission> : Reject<g::finish_emission> {};
 template <>
 struct action<g::texture_layers_open> {

@@ -223,6 +223,11 @@ void writeMapPatternName(Writer& w, const Pigment& p) {
         case Pigment::Kind::Bozo: w << "bozo"; break;
         case Pigment::Kind::Spotted: w << "spotted"; break;
         case Pigment::Kind::Granite: w << "granite"; break;
+        case Pigment::Kind::Bumps: w << "bumps"; break;
+        case Pigment::Kind::Dents: w << "dents"; break;
+        case Pigment::Kind::Wrinkles: w << "wrinkles"; break;
+        case Pigment::Kind::Ripples: w << "ripples"; break;
+        case Pigment::Kind::Waves: w << "waves"; break;
         case Pigment::Kind::Agate:
             w << "agate agate_turb ";
             w.num(p.agateTurb);

@@ -145,8 +145,6 @@ TEST_CASE("unsupported POV-Ray constructs are named at their keyword", "[lang][p
     CHECK(errorOf("sphere { 0, 1 pigment { crackle } }") == "1:25: 'crackle' is not supported by asos");
     CHECK(errorOf("light_source { 0, 1 cylinder }") == "1:21: 'cylinder' lights are not supported by asos");
     CHECK(errorOf("camera { normal { bumps 0.1 } }") == "1:10: 'normal' in a camera is not supported by asos");
-    CHECK(errorOf("sphere { 0, 1 pigment { wrinkles } }") ==
-          "1:25: 'wrinkles' is not supported by asos as a pigment's pattern (only in a normal)");
     CHECK(errorOf("sphere { 0, 1 normal { checker } }") ==
           "1:24: 'checker' in a normal (a pattern of normals) is not supported by asos");
     CHECK(errorOf("sphere { 0, 1 normal { bumps slope_map { [0 <0, 1>] } } }") ==

@@ -183,7 +183,13 @@ struct ColourMapEntry {
 struct Pigment {
     // Checker and Brick have two colours and plane edges; the others run a
     // value over [0, 1] through a colour map (render/map_pattern.hpp).
-    enum class Kind { Solid, Checker, Brick, Gradient, Radial, Onion, Marble, Wood, Leopard, Bozo, Spotted, Granite, Agate };
+    enum class Kind {
+        Solid, Checker, Brick, Gradient, Radial, Onion, Marble, Wood, Leopard, Bozo, Spotted, Granite, Agate,
+        // The normal patterns' own values as pigment patterns (POV-Ray's
+        // pattern.cpp): bumps is bozo's noise, dents its cube, wrinkles ten
+        // octaves of it, ripples and waves POV-Ray's ten wave sources.
+        Bumps, Dents, Wrinkles, Ripples, Waves
+    };
     enum class Wave { Ramp, Triangle, Sine };
     Kind kind = Kind::Solid;
     Color color1{};                       // the solid colour, or the pattern's first (brick: the mortar)
