@@ -214,6 +214,7 @@ template <> inline constexpr auto rejection_message<cylinder_light> = "'cylinder
 template <> inline constexpr auto rejection_message<cylinder_camera> = "the 'cylinder' camera is not supported by asos";
 template <> inline constexpr auto rejection_message<camera_normal> = "'normal' in a camera is not supported by asos";
 template <> inline constexpr auto rejection_message<texture_pattern> = "texture patterns ('{}' of textures) are not supported by asos; use {} in the pigment";
+template <> inline constexpr auto rejection_message<declared_atmosphere> = "'{}' as a declared value is not supported by asos (write the {} in the scene)";
 template <> inline constexpr auto rejection_message<finish_emission> = "'{}' in a finish is not supported by asos";
 template <> inline constexpr auto rejection_message<normal_block_pattern> = "'{}' in a normal (a pattern of normals) is not supported by asos";
 template <> inline constexpr auto rejection_message<reflection_block> = "'reflection { … }' is not supported by asos; write reflection followed by a colour or a float";

@@ -196,6 +196,10 @@ TEST_CASE("The language reads sky_sphere and fog as POV-Ray does", "[atmosphere]
     CHECK_THAT(test::run("fog { 3 }").errors(), StartsWith("1:7: should use the distance keyword (as POV-Ray warns)\n0:0:"));
     CHECK(test::run("sphere { 0, 1 finish { emission 1 } }").errors() ==
           "1:24: 'emission' in a finish is not supported by asos\n");
+    CHECK(test::run("#declare S = sky_sphere { pigment { rgb 1 } }").errors() ==
+          "1:14: 'sky_sphere' as a declared value is not supported by asos (write the sky_sphere in the scene)\n");
+    CHECK(test::run("#declare F = fog { distance 3 }").errors() ==
+          "1:14: 'fog' as a declared value is not supported by asos (write the fog in the scene)\n");
     CHECK(test::run("rainbow { angle 42 }").errors() == "1:1: 'rainbow' is not supported by asos\n");
     CHECK(test::run("fog { distance 3 media { } }").errors() == "1:18: 'media' is not supported by asos\n");
 }
