@@ -116,8 +116,10 @@ struct string_start
 struct macro_value : seq<lone_macro_call, macro_call> {};
 struct lone_name : seq<at<indexed_name, not_at<sor<expression_continues, one<'('>>>>, indexed_name> {};
 struct missing_semicolon : success {};
+// A declared sky_sphere or fog: not ours (a scene's own are).
+struct declared_atmosphere : sor<kw_sky_sphere, kw_fog> {};
 struct declared_value
-    : sor<seq<declarable_block, opt<layered_texture>, opt<semicolon>>, seq<array_value, opt<semicolon>>,
+    : sor<declared_atmosphere, seq<declarable_block, opt<layered_texture>, opt<semicolon>>, seq<array_value, opt<semicolon>>,
           seq<sor<macro_value, lone_name>, sor<semicolon, missing_semicolon>>,
           seq<at<string_start>, expression, opt<semicolon>>, seq<expression, declare_semicolon>> {};
 struct declare_directive : if_must<declare_start, declared_target, declare_equals, declared_value> {};

@@ -29,7 +29,7 @@ struct body_context;
     };
 // clang-format off
 ASOS_BODY_CONTEXT(value_entry, Value, "expected one value (an expression, an object, a light_source, a camera, a pigment, a finish, a texture or an array), as the macro is called for its value")
-ASOS_BODY_CONTEXT(top_entry, Top, "expected a scene item (camera, light_source, an object, global_settings, background) or a directive, as the macro is called at the top of the scene")
+ASOS_BODY_CONTEXT(top_entry, Top, "expected a scene item (camera, light_source, an object, global_settings, background, sky_sphere, fog) or a directive, as the macro is called at the top of the scene")
 ASOS_BODY_CONTEXT(object_modifier, ObjectModifier, "expected an object modifier, as the macro is called among an object's modifiers")
 ASOS_BODY_CONTEXT(union_entry, Union, "expected an object, a light_source or an object modifier, as the macro is called in a union")
 ASOS_BODY_CONTEXT(mesh_entry, Mesh, "expected a triangle, a smooth_triangle or an object modifier, as the macro is called in a mesh")
@@ -40,6 +40,8 @@ ASOS_BODY_CONTEXT(pigment_entry, Pigment, "expected a colour, a pattern, a trans
 ASOS_BODY_CONTEXT(normal_entry, Normal, "expected a normal pattern, a transform or a pattern modifier, as the macro is called in a normal")
 ASOS_BODY_CONTEXT(finish_entry, Finish, "expected a finish item, as the macro is called in a finish")
 ASOS_BODY_CONTEXT(texture_entry, Texture, "expected pigment, normal, finish or a transform, as the macro is called in a texture")
+ASOS_BODY_CONTEXT(sky_sphere_entry, SkySphere, "expected pigment, emission or a transform, as the macro is called in a sky_sphere")
+ASOS_BODY_CONTEXT(fog_entry, Fog, "expected a fog item, as the macro is called in a fog")
 ASOS_BODY_CONTEXT(global_entry, GlobalSettings, "expected a global setting, as the macro is called in global_settings")
 ASOS_BODY_CONTEXT(asos_entry, Asos, "expected eps, max, jitter or highlights, as the macro is called in an asos block")
 ASOS_BODY_CONTEXT(default_entry, Default, "expected texture, pigment, normal or finish, as the macro is called in #default")
@@ -202,10 +204,12 @@ template <> inline constexpr auto error_message<light_position> = "expected the 
 template <> inline constexpr auto error_message<light_end> = "expected a light_source item or '}'";
 template <> inline constexpr auto error_message<camera_end> = "expected a camera item or '}'";
 template <> inline constexpr auto error_message<global_settings_end> = "expected assumed_gamma, max_trace_level, ambient_light, noise_generator, asos or '}' in global_settings";
+template <> inline constexpr auto error_message<sky_sphere_end> = "expected pigment, emission, a transform or '}' in sky_sphere";
+template <> inline constexpr auto error_message<fog_end> = "expected fog_type, distance, a colour, fog_offset, fog_alt, up, turbulence, octaves, omega, lambda, turb_depth, a transform or '}' in fog";
 template <> inline constexpr auto error_message<background_colour> = "expected the colour of the background";
 template <> inline constexpr auto error_message<background_end> = "expected '}' after the colour of the background";
 // top
-template <> inline constexpr auto error_message<end_of_file> = "expected a scene item (camera, light_source, an object, global_settings, background) or a directive";
+template <> inline constexpr auto error_message<end_of_file> = "expected a scene item (camera, light_source, an object, global_settings, background, sky_sphere, fog) or a directive";
 template <> inline constexpr auto error_message<lone_expression> = "expected an expression";
 // A macro's body that does not fit where the macro is called.
 template <typename Entry> inline constexpr const char* error_message<macro_body_end<Entry>> = body_context<Entry>::misfit;
@@ -220,7 +224,8 @@ template <> inline constexpr auto rejection_message<cylinder_light> = "'cylinder
 template <> inline constexpr auto rejection_message<cylinder_camera> = "the 'cylinder' camera is not supported by asos";
 template <> inline constexpr auto rejection_message<camera_normal> = "'normal' in a camera is not supported by asos";
 template <> inline constexpr auto rejection_message<texture_pattern> = "texture patterns ('{}' of textures) are not supported by asos; use {} in the pigment";
-template <> inline constexpr auto rejection_message<pigment_normal_pattern> = "'{}' is not supported by asos as a pigment's pattern (only in a normal)";
+template <> inline constexpr auto rejection_message<declared_atmosphere> = "'{}' as a declared value is not supported by asos (write the {} in the scene)";
+template <> inline constexpr auto rejection_message<finish_emission> = "'{}' in a finish is not supported by asos";
 template <> inline constexpr auto rejection_message<normal_block_pattern> = "'{}' in a normal (a pattern of normals) is not supported by asos";
 template <> inline constexpr auto rejection_message<reflection_block> = "'reflection { … }' is not supported by asos; write reflection followed by a colour or a float";
 template <> inline constexpr auto rejection_message<pattern_of_blocks<kw_checker>> = "'checker' of pigments or textures is not supported by asos; give checker two colours";

@@ -99,8 +99,13 @@ struct map_modifier
     : sor<turbulence_item, octaves_item, omega_item, lambda_item, frequency_item, phase_item, agate_turb_item,
           noise_generator_item, ramp_wave_item, triangle_wave_item, sine_wave_item, colour_map_block> {};
 struct pigment_colour : seq<colour_in_place> {};  // a colour, or a declared pigment
-// The normal patterns as a pigment's value: not ours.
-struct pigment_normal_pattern : sor<kw_bumps, kw_dents, kw_wrinkles, kw_ripples, kw_waves> {};
+// The normal patterns, in a pigment as map patterns of their own values.
+struct bumps_item : kw_bumps {};
+struct dents_item : kw_dents {};
+struct wrinkles_item : kw_wrinkles {};
+struct ripples_item : kw_ripples {};
+struct waves_item : kw_waves {};
+struct pigment_normal_pattern : sor<bumps_item, dents_item, wrinkles_item, ripples_item, waves_item> {};
 struct pigment_entry : sor<checker_item, brick_item, map_pattern_item, transform_item, brick_size_item, mortar_item,
                            map_modifier, pigment_normal_pattern, pigment_colour, unsupported_item> {};
 struct pigment_end : rbrace {};
@@ -111,11 +116,6 @@ struct pigment_block : if_must<kw_pigment, block_open, entries<pigment_entry>, p
 // slope. The bump size written right after the pattern (`bumps 0.4`,
 // `granite, -0.1`) is read where a number plainly follows (a digit, a sign,
 // a point, a parenthesis or a name), as POV-Ray's optional float there.
-struct bumps_item : kw_bumps {};
-struct dents_item : kw_dents {};
-struct wrinkles_item : kw_wrinkles {};
-struct ripples_item : kw_ripples {};
-struct waves_item : kw_waves {};
 struct bump_amount_value : seq<expression> {};
 struct bump_amount : seq<opt<comma>, at<sor<ascii::digit, one<'.', '-', '+', '('>, name>>, bump_amount_value> {};
 struct normal_pattern_item
@@ -144,8 +144,9 @@ struct roughness_item : if_must<kw_roughness, float_value> {};
 struct crand_item : if_must<kw_crand, float_value> {};
 struct reflection_item : if_must<kw_reflection, reflection_value> {};
 struct finish_name : indexed_name {};  // a declared finish
+struct finish_emission : kw_emission {};  // a finish's emission: not ours
 struct finish_entry
-    : sor<ambient_item, diffuse_item, brilliance_item, phong_item, phong_size_item, specular_item,
+    : sor<finish_emission, ambient_item, diffuse_item, brilliance_item, phong_item, phong_size_item, specular_item,
           roughness_item, crand_item, reflection_item, finish_name, unsupported_item> {};
 struct finish_end : rbrace {};
 struct finish_block : if_must<kw_finish, block_open, entries<finish_entry>, finish_end> {};

@@ -196,4 +196,26 @@ struct background_end : rbrace {};
 struct background_block
     : if_must<kw_background, block_open, background_colour, arguments_end, background_end> {};
 
+// --- sky_sphere { pigment {…} … emission C transforms } --------------------------
+struct emission_item : if_must<kw_emission, colour_value> {};
+struct sky_sphere_entry : sor<pigment_block, emission_item, transform_item, unsupported_item> {};
+struct sky_sphere_end : rbrace {};
+struct sky_sphere_block : if_must<kw_sky_sphere, block_open, entries<sky_sphere_entry>, sky_sphere_end> {};
+
+// --- fog { fog_type N distance D colour C fog_offset F fog_alt F up V
+//           turbulence V octaves N omega F lambda F turb_depth F transforms } ----
+// A bare colour is the fog's colour; a bare float its distance (POV-Ray
+// warns "Should use distance keyword").
+struct fog_type_item : if_must<kw_fog_type, float_value> {};
+struct distance_item : if_must<kw_distance, float_value> {};
+struct fog_offset_item : if_must<kw_fog_offset, float_value> {};
+struct fog_alt_item : if_must<kw_fog_alt, float_value> {};
+struct turb_depth_item : if_must<kw_turb_depth, float_value> {};
+struct fog_colour : seq<colour_in_place> {};
+struct fog_entry
+    : sor<fog_type_item, distance_item, fog_offset_item, fog_alt_item, turb_depth_item, up_item, turbulence_item,
+          octaves_item, omega_item, lambda_item, transform_item, unsupported_item, fog_colour> {};
+struct fog_end : rbrace {};
+struct fog_block : if_must<kw_fog, block_open, entries<fog_entry>, fog_end> {};
+
 }  // namespace asos::grammar

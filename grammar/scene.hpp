@@ -5,7 +5,7 @@
 namespace asos::grammar {
 
 struct top_entry : sor<camera_block, light_source_block, object_statement, global_settings_block,
-                       background_block, bare_default, unsupported_item> {};
+                       background_block, sky_sphere_block, fog_block, bare_default, unsupported_item> {};
 // One entry of the file; the parser may hand each to the interpreter as soon
 // as it is complete.
 struct top_item : sor<directive<top_entry>, macro_entry<top_entry>, top_entry> {};

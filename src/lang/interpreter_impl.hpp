@@ -369,6 +369,8 @@ private:
     Transform composeAt(const Node& at, const Transform& outer, const Transform& inner);
     Light evalLight(const Node& block);
     void applyGlobalSettings(const Node& block);
+    SkySphere evalSkySphere(const Node& block);
+    Fog evalFog(const Node& block);
     // `forLight`: the block is a light's, where `emitter` belongs.
     AsosOptions evalAsos(const Node& block, AsosOptions start, bool forLight = false);
     Transform evalTransformItem(const Node& item);

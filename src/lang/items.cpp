@@ -14,6 +14,7 @@
 
 #include "asos/geometry/margins.hpp"
 #include "asos/scene/asos_settings.hpp"
+#include "asos/scene/pov_tolerances.hpp"
 #include "asos/shapes/shape_issue.hpp"
 #include "src/lang/interpreter_impl.hpp"
 
@@ -68,6 +69,7 @@ bool isMapPattern(Word w) {
     case Word::Gradient: case Word::Radial: case Word::Onion: case Word::Marble: case Word::Wood:
     case Word::Leopard: case Word::Bozo: case Word::Spotted: case Word::Granite: case Word::Agate:
     case Word::Function:
+    case Word::Bumps: case Word::Dents: case Word::Wrinkles: case Word::Ripples: case Word::Waves:
         return true;
     default: return false;
     }
@@ -85,6 +87,11 @@ Pigment::Kind mapKind(Word w) {
     case Word::Spotted: return Pigment::Kind::Spotted;
     case Word::Granite: return Pigment::Kind::Granite;
     case Word::Function: return Pigment::Kind::Function;
+    case Word::Bumps: return Pigment::Kind::Bumps;
+    case Word::Dents: return Pigment::Kind::Dents;
+    case Word::Wrinkles: return Pigment::Kind::Wrinkles;
+    case Word::Ripples: return Pigment::Kind::Ripples;
+    case Word::Waves: return Pigment::Kind::Waves;
     default: return Pigment::Kind::Agate;
     }
 }
@@ -117,6 +124,13 @@ void Interpreter::runTopEntry(const Node& n) {
         return;
     case Word::Background:
         scene_.background = evalColour(n[0]);
+        return;
+    case Word::SkySphere:
+        // POV-Ray keeps the last sky_sphere.
+        scene_.skySphere = evalSkySphere(n);
+        return;
+    case Word::Fog:
+        scene_.fogs.push_back(evalFog(n));
         return;
     default:
         if (!isObjectBlock(n)) fail(n, "this is not a scene item");
@@ -1104,6 +1118,97 @@ void Interpreter::applyGlobalSettings(const Node& block) {
         }
     };
     runEntries(block.children(), EntryHandler(entry));
+}
+
+// --- sky_sphere and fog ----------------------------------------------------------------------
+
+// POV-Ray's Parse_Skysphere: pigments (each in POV-Ray's default pigment),
+// emission and transforms in any order; the transforms move the sphere, not
+// the pigments written after them.
+SkySphere Interpreter::evalSkySphere(const Node& block) {
+    SkySphere sky;
+    sky.loc = locOf(block);
+    auto entry = [&](const Node& n) {
+        if (isTransform(n)) {
+            sky.worldFromSky = composeAt(n, evalTransformItem(n), sky.worldFromSky);
+        } else if (n.kind == NodeKind::Block && n.word == Word::Pigment) {
+            sky.pigments.push_back(*evalPigment(n, defaultTexture_->pigment));
+        } else if (n.kind == NodeKind::Item && n.word == Word::Emission) {
+            sky.emission = evalRgb(n[0], "emission");
+        } else {
+            fail(n, "this is not a sky_sphere item");
+        }
+    };
+    runEntries(block.children(), EntryHandler(entry));
+    if (sky.pigments.empty()) fail(block, "a sky_sphere needs at least one pigment (POV-Ray: empty sky_sphere statement)");
+    return sky;
+}
+
+// POV-Ray's Parse_Fog: its items in any order; rotate, scale and matrix turn
+// its up vector, translate is ignored with POV-Ray's warning; up is made
+// unit at the end.
+Fog Interpreter::evalFog(const Node& block) {
+    Fog fog;
+    fog.loc = locOf(block);
+    auto entry = [&](const Node& n) {
+        if (isTransform(n)) {
+            if (n.word == Word::Translate) {
+                evalVector(n[0]);
+                report(Severity::Warning, n, "a fog's up vector can't be translated (as in POV-Ray, ignored)");
+            } else {
+                fog.up = evalTransformItem(n).vector(fog.up);
+            }
+            return;
+        }
+        if (n.kind != NodeKind::Item) {
+            // A bare colour is the fog's colour, a bare float its distance.
+            const Num v = evalNum(n);
+            if (v.dim == 1) {
+                report(Severity::Warning, n, "should use the distance keyword (as POV-Ray warns)");
+                fog.distance = v.v[0];
+            } else {
+                fog.color = evalColour(n);
+            }
+            return;
+        }
+        switch (n.word) {
+        case Word::FogType: {
+            // POV-Ray truncates, warns of a type it does not know and
+            // renders it as constant fog.
+            const double t = evalFloat(n[0]);
+            fog.type = std::isfinite(t) ? static_cast<int>(std::clamp(t, -1e9, 1e9)) : 0;
+            if (fog.type != 1 && fog.type != 2)
+                report(Severity::Warning, n[0], "unknown fog type " + formatNumber(t) + ": rendered as constant fog (as POV-Ray)");
+            break;
+        }
+        case Word::Distance: fog.distance = evalFloat(n[0]); break;
+        case Word::FogOffset: fog.offset = evalFloat(n[0]); break;
+        case Word::FogAlt: fog.alt = evalFloat(n[0]); break;
+        case Word::TurbDepth: fog.turbDepth = evalFloat(n[0]); break;
+        case Word::Up: fog.up = evalVector(n[0]); break;
+        case Word::Turbulence: {
+            const Num t = evalNum(n[0]);
+            if (t.dim > 3) fail(n[0], "expected a float or a vector after turbulence, found " + describe(t));
+            fog.turbulence = t.dim == 1 ? Vec3(t.v[0]) : Vec3(t.v[0], t.v[1], t.v[2]);
+            fog.turbulent = true;
+            break;
+        }
+        case Word::Octaves:
+            fog.octaves = static_cast<int>(std::clamp(evalFloat(n[0]), 1.0, 10.0));
+            fog.turbulent = true;
+            break;
+        case Word::Omega: fog.omega = evalFloat(n[0]); fog.turbulent = true; break;
+        case Word::Lambda: fog.lambda = evalFloat(n[0]); fog.turbulent = true; break;
+        default: fail(n, "this is not a fog item");
+        }
+    };
+    runEntries(block.children(), EntryHandler(entry));
+    const double length = glm::length(fog.up);
+    if (!(length > 0.0)) fail(block, "the fog's up vector is <0, 0, 0>");
+    fog.up /= length;
+    if (fog.type == 2 && fog.alt == 0.0 && std::fabs(fog.distance) > kPovEpsilon)
+        fail(block, "a ground fog (fog_type 2) needs a fog_alt other than 0 (its density divides by it)");
+    return fog;
 }
 
 AsosOptions Interpreter::evalAsos(const Node& block, AsosOptions start, bool forLight) {

@@ -305,7 +305,8 @@ template <> struct action<g::camera_normal> : Reject<g::camera_normal> {};
 template <> struct action<g::texture_pattern> : Reject<g::texture_pattern> {};
 template <> struct action<g::reflection_block> : Reject<g::reflection_block> {};
 template <> struct action<g::normal_block_pattern> : Reject<g::normal_block_pattern> {};
-template <> struct action<g::pigment_normal_pattern> : Reject<g::pigment_normal_pattern> {};
+template <> struct action<g::finish_emission> : Reject<g::finish_emission> {};
+template <> struct action<g::declared_atmosphere> : Reject<g::declared_atmosphere> {};
 template <>
 struct action<g::texture_layers_open> {
     static void apply0(Builder& b) { b.openAroundLast(); }
@@ -624,6 +625,8 @@ template <> struct action<g::light_source_block> : CloseBlock<Word::LightSource>
 template <> struct action<g::camera_block> : CloseBlock<Word::Camera> {};
 template <> struct action<g::global_settings_block> : CloseBlock<Word::GlobalSettings> {};
 template <> struct action<g::background_block> : CloseBlock<Word::Background> {};
+template <> struct action<g::sky_sphere_block> : CloseBlock<Word::SkySphere> {};
+template <> struct action<g::fog_block> : CloseBlock<Word::Fog> {};
 template <> struct action<g::pigment_block> : CloseBlock<Word::Pigment> {};
 template <> struct action<g::normal_block> : CloseBlock<Word::Normal> {};
 template <> struct action<g::finish_block> : CloseBlock<Word::Finish> {};
@@ -673,6 +676,12 @@ template <> struct action<g::specular_item> : ItemAction<Word::Specular, 1> {};
 template <> struct action<g::roughness_item> : ItemAction<Word::Roughness, 1> {};
 template <> struct action<g::reflection_item> : ItemAction<Word::Reflection, 1> {};
 template <> struct action<g::crand_item> : ItemAction<Word::Crand, 1> {};
+template <> struct action<g::emission_item> : ItemAction<Word::Emission, 1> {};
+template <> struct action<g::fog_type_item> : ItemAction<Word::FogType, 1> {};
+template <> struct action<g::distance_item> : ItemAction<Word::Distance, 1> {};
+template <> struct action<g::fog_offset_item> : ItemAction<Word::FogOffset, 1> {};
+template <> struct action<g::fog_alt_item> : ItemAction<Word::FogAlt, 1> {};
+template <> struct action<g::turb_depth_item> : ItemAction<Word::TurbDepth, 1> {};
 template <> struct action<g::bumps_item> : ItemAction<Word::Bumps, 0> {};
 template <> struct action<g::dents_item> : ItemAction<Word::Dents, 0> {};
 template <> struct action<g::wrinkles_item> : ItemAction<Word::Wrinkles, 0> {};
@@ -1061,6 +1070,8 @@ std::optional<Ast> parseMacroBody(std::string_view fileText, TextSpan body, std:
     case BodyContext::Default: return parse(static_cast<g::default_entry*>(nullptr));
     case BodyContext::Mesh: return parse(static_cast<g::mesh_entry*>(nullptr));
     case BodyContext::Mesh2List: return parse(static_cast<g::mesh2_item*>(nullptr));
+    case BodyContext::SkySphere: return parse(static_cast<g::sky_sphere_entry*>(nullptr));
+    case BodyContext::Fog: return parse(static_cast<g::fog_entry*>(nullptr));
     }
     return std::nullopt;
 }

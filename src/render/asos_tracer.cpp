@@ -73,7 +73,7 @@ std::uint32_t sortOut(const Scene& scene, const PreparedCone& cone, std::vector<
 AsosTracer::AsosTracer(const RayTracer& tracer, const CameraModel& camera,
                        const AsosSettings& sceneSettings, std::uint64_t seed, bool patternEdges,
                        bool patternFilter)
-    : tracer_(tracer), scene_(tracer.scene()), camera_(camera), seed_(seed),
+    : tracer_(tracer), scene_(tracer.scene()), camera_(camera), seed_(seed), sceneSettings_(sceneSettings),
       patternEdges_(patternEdges), patternFilter_(patternFilter) {
     const SceneDescription& d = scene_.description();
     objectSettings_.reserve(d.objects.size());
@@ -136,7 +136,7 @@ public:
                RenderCounters& counters, AsosPixelReport* report)
         : asos_(tracer), tracer_(tracer.tracer_), scene_(tracer.scene_), camera_(tracer.camera_),
           px_(px), py_(py), rng_(tracer.seed_, px, py), s_(scratch), c_(counters), report_(report),
-          background_(backgroundColor(scene_.description())) {}
+          atmosphere_(tracer_.atmosphere()) {}
 
     PixelResult run();
 
@@ -175,6 +175,7 @@ private:
                      const Ray& ray, const std::vector<Item>& items, const Node& parent);
     Vec3 shadeLeaf(const ImageSquare& square, int level, std::uint32_t ix, std::uint32_t iy,
                    const Ray& ray, const std::optional<SurfaceHit>& hit);
+    Vec3 skyLeaf(const ImageSquare& square, int level) const;
     std::optional<Color> leafPigment(const ImageSquare& square, const SurfaceHit& hit) const;
     std::optional<SurfaceHit> nearestInList(const Ray& ray, const std::vector<Item>& items,
                                             std::uint32_t first, std::uint32_t count,
@@ -193,7 +194,7 @@ private:
     AsosScratch& s_;
     RenderCounters& c_;
     AsosPixelReport* report_;
-    Vec3 background_;
+    const Atmosphere& atmosphere_;
     Vec3 color_{0.0};
     std::uint32_t pyrays_ = 0;
     int deepest_ = 0, leaves_ = 0;
@@ -280,7 +281,7 @@ std::optional<Vec3> AsosTracer::PixelTrace::settle(const EyePyray& pyray, const 
     to.hits.resize(to.items.size(), 0);
     if (count == 0) {
         ++leaves_;
-        return background_;
+        return skyLeaf(pyray.square(), level);
     }
     if (count == 1 && to.items[first].cls.coverage == Coverage::Full) {
         const Item& front = to.items[first];
@@ -507,7 +508,7 @@ std::optional<SurfaceHit> AsosTracer::PixelTrace::nearestInList(const Ray& ray,
 Vec3 AsosTracer::PixelTrace::shadeLeaf(const ImageSquare& square, int level, std::uint32_t ix,
                                        std::uint32_t iy, const Ray& ray,
                                        const std::optional<SurfaceHit>& hit) {
-    if (!hit) return background_;
+    if (!hit) return atmosphere_.miss(ray);
     std::optional<Footprint> footprint;  // made when a light first needs it
     LightSample storage;
     // Area lights: shadow beams from the shaded point (render/area_light.hpp),
@@ -548,7 +549,32 @@ Vec3 AsosTracer::PixelTrace::shadeLeaf(const ImageSquare& square, int level, std
         storage = pointLightSample(light.position, light.color, p.position, lit);
         return {&storage, 1};
     };
-    return tracer_.shadeWith(*hit, ray, 1, 1.0, lightArriving, c_, context, leafPigment(square, *hit));
+    const Vec3 shaded = tracer_.shadeWith(*hit, ray, 1, 1.0, lightArriving, c_, context, leafPigment(square, *hit));
+    return atmosphere_.fogged(shaded, ray, hit->t);
+}
+
+// A pyray that meets no object sees the sky (and the fogs) over its whole
+// square: its central ray's colour where the sky cannot vary; otherwise,
+// where the sky's colour at the square's corners strays from the centre's
+// by more than the scene's EPS, the average of its four quarters, each
+// decided again, down to the scene's MAX level (docs/algorithm.md, "The
+// sky and fog"). The corner test is an estimate, not a bound: a sky pattern finer
+// than the square may slip between the five points.
+Vec3 AsosTracer::PixelTrace::skyLeaf(const ImageSquare& square, int level) const {
+    const Vec3 centre = atmosphere_.miss(camera_.ray(square.uMid(), square.vMid()));
+    const AsosSettings& settings = asos_.sceneSettings_;
+    if (!atmosphere_.skyVaries() || level >= settings.maxLevel) return centre;
+    double change = 0.0;
+    for (int corner = 0; corner < 4; ++corner) {
+        const Vec3 c = atmosphere_.miss(camera_.ray((corner & 1) ? square.u1 : square.u0,
+                                                    (corner & 2) ? square.v1 : square.v0));
+        const Vec3 d = glm::abs(c - centre);
+        change = std::max({change, d.x, d.y, d.z});
+    }
+    if (!(change > settings.eps)) return centre;
+    Vec3 sum(0.0);
+    for (int quarter = 0; quarter < 4; ++quarter) sum += skyLeaf(square.quarter(quarter), level + 1);
+    return 0.25 * sum;
 }
 
 // With the pattern filter, a patterned leaf's pigment averaged over the

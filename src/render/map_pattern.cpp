@@ -4,6 +4,7 @@
 #include <cmath>
 #include <numbers>
 
+#include "asos/render/normal_pattern.hpp"
 #include "asos/render/pov_noise.hpp"
 
 namespace asos {
@@ -62,7 +63,45 @@ double rawValue(const Pigment& p, const Vec3& q) {
             return s * s;
         }
         case Pigment::Kind::Bozo:
-        case Pigment::Kind::Spotted: return noise.noise(q, generatorOf(p));
+        case Pigment::Kind::Spotted:
+        case Pigment::Kind::Bumps: return noise.noise(q, generatorOf(p));
+        case Pigment::Kind::Dents: {
+            const double n = noise.noise(q, generatorOf(p));
+            return n * n * n;
+        }
+        case Pigment::Kind::Wrinkles: {
+            // Ten octaves of the noise, halved; under generators 2 and 3
+            // each octave stretched to 2 n - 0.5 and clipped to [0, 1].
+            const int generator = generatorOf(p);
+            auto octave = [&](const Vec3& at) {
+                const double n = noise.noise(at, generator);
+                return generator > 1 ? std::clamp(2.0 * n - 0.5, 0.0, 1.0) : n;
+            };
+            double value = octave(q), lambda = 2.0, omega = 0.5;
+            for (int i = 1; i < 10; ++i, lambda *= 2.0, omega *= 0.5) value += omega * octave(q * lambda);
+            return value / 2.0;
+        }
+        case Pigment::Kind::Ripples:
+        case Pigment::Kind::Waves: {
+            // POV-Ray's ten wave sources, each a cycloid of the distance to
+            // it (waves: at its own frequency, weighted by its inverse);
+            // the pattern's frequency and phase inside, and again as the
+            // wave after (as POV-Ray applies them).
+            const WaveSources& waves = WaveSources::tables();
+            double sum = 0.0;
+            for (int i = 0; i < WaveSources::kCount; ++i) {
+                double length = glm::length(q - waves.sources[static_cast<std::size_t>(i)]);
+                if (length == 0.0) length = 1.0;
+                if (p.kind == Pigment::Kind::Ripples) {
+                    sum += PovNoise::cycloidal(length * p.frequency + p.phase);
+                } else {
+                    const double f = waves.frequencies[static_cast<std::size_t>(i)];
+                    sum += PovNoise::cycloidal(length * p.frequency * f + p.phase) / f;
+                }
+            }
+            sum /= WaveSources::kCount;
+            return p.kind == Pigment::Kind::Ripples ? 0.5 * (1.0 + sum) : 0.2 * (2.5 + sum);
+        }
         case Pigment::Kind::Granite: {
             const int generator = generatorOf(p);
             double sum = 0.0, freq = 1.0;

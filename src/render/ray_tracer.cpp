@@ -9,8 +9,8 @@ Vec3 RayTracer::radiance(const Ray& ray, int depth, double weight, RenderCounter
 
 Vec3 RayTracer::radiance(const std::optional<SurfaceHit>& hit, const Ray& ray, int depth,
                          double weight, RenderCounters& counters, const LightContext& context) const {
-    if (!hit) return backgroundColor(description());
-    return shade(*hit, ray, depth, weight, counters, context);
+    if (!hit) return atmosphere_.miss(ray);
+    return atmosphere_.fogged(shade(*hit, ray, depth, weight, counters, context), ray, hit->t);
 }
 
 Vec3 RayTracer::shade(const SurfaceHit& hit, const Ray& ray, int depth, double weight,

@@ -225,6 +225,11 @@ void writeMapPatternName(Writer& w, const Pigment& p) {
         case Pigment::Kind::Bozo: w << "bozo"; break;
         case Pigment::Kind::Spotted: w << "spotted"; break;
         case Pigment::Kind::Granite: w << "granite"; break;
+        case Pigment::Kind::Bumps: w << "bumps"; break;
+        case Pigment::Kind::Dents: w << "dents"; break;
+        case Pigment::Kind::Wrinkles: w << "wrinkles"; break;
+        case Pigment::Kind::Ripples: w << "ripples"; break;
+        case Pigment::Kind::Waves: w << "waves"; break;
         case Pigment::Kind::Agate:
             w << "agate agate_turb ";
             w.num(p.agateTurb);
@@ -273,9 +278,9 @@ void writeNormal(Writer& w, const Normal& n) {
     w << " }\n";
 }
 
-void writeLayer(Writer& w, const TextureLayer& t) {
-    const Pigment& p = t.pigment;
-    w << "  texture {\n    pigment { ";
+// pigment { … }, without a line end.
+void writePigment(Writer& w, const Pigment& p) {
+    w << "pigment { ";
     switch (p.kind) {
         case Pigment::Kind::Solid:
             w.colour(p.color1);
@@ -310,7 +315,13 @@ void writeLayer(Writer& w, const TextureLayer& t) {
         w << ' ';
         w.matrix(p.worldFromPattern);
     }
-    w << " }\n";
+    w << " }";
+}
+
+void writeLayer(Writer& w, const TextureLayer& t) {
+    w << "  texture {\n    ";
+    writePigment(w, t.pigment);
+    w << '\n';
     if (t.normal) writeNormal(w, *t.normal);
     const Finish& f = t.finish;
     w << "    finish { ambient ";
@@ -357,6 +368,44 @@ void writeDump(std::ostream& out, const SceneDescription& scene, const DumpOptio
     w.asos(g.asos, "  ");
     w << "}\n\nbackground { ";
     w.colour(scene.background) << " }\n\n";
+    if (const std::optional<SkySphere>& sky = scene.skySphere) {
+        w.location(sky->loc);
+        w << "sky_sphere {\n";
+        for (const Pigment& p : sky->pigments) {
+            w << "  ";
+            writePigment(w, p);
+            w << '\n';
+        }
+        if (sky->emission != Vec3(1.0)) {
+            w << "  emission ";
+            w.rgb(sky->emission) << '\n';
+        }
+        if (!sky->worldFromSky.isIdentity()) {
+            w << "  ";
+            w.matrix(sky->worldFromSky) << '\n';
+        }
+        w << "}\n\n";
+    }
+    for (const Fog& f : scene.fogs) {
+        w.location(f.loc);
+        w << "fog {\n  fog_type " << f.type << "\n  distance ";
+        w.num(f.distance) << "\n  ";
+        w.colour(f.color) << "\n  up ";
+        w.vec(f.up) << '\n';
+        if (f.type == 2) {
+            w << "  fog_offset ";
+            w.num(f.offset) << "\n  fog_alt ";
+            w.num(f.alt) << '\n';
+        }
+        if (f.turbulent) {
+            w << "  turbulence ";
+            w.vec(f.turbulence) << " octaves " << f.octaves << " omega ";
+            w.num(f.omega) << " lambda ";
+            w.num(f.lambda) << " turb_depth ";
+            w.num(f.turbDepth) << '\n';
+        }
+        w << "}\n\n";
+    }
 
     const Camera& c = scene.camera;
     w.location(c.loc);

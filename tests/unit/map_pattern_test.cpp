@@ -117,3 +117,39 @@ TEST_CASE("Map patterns are sampled at points, not filtered", "[pattern]") {
     const Vec3 at(0.3, 0.7, 0.1);  // noise 0.395 there (generator 2)
     CHECK(evaluatePigment(p, at) == Color{Vec3(1.0), 0.0, 0.0});
 }
+
+// The normal patterns as pigment patterns against POV-Ray's values, printed
+// by povray 3.7.0 through `function { pigment { P } }` (its red channel, a
+// float: hence the tolerance) at three points, under the default generator
+// (2) unless said.
+TEST_CASE("bumps, dents, wrinkles, ripples and waves as pigments give POV-Ray's values", "[pattern]") {
+    const Vec3 points[] = {{0.3, 0.7, 0.1}, {-2.25, 3.5, 11.75}, {1.1, -0.4, 2.6}};
+    struct Case {
+        Pigment::Kind kind;
+        double frequency, phase;
+        int generator;
+        double values[3];
+    };
+    const Case cases[] = {
+        {Pigment::Kind::Bumps, 1.0, 0.0, 0, {0.395001381636, 0.323338031769, 0.427360773087}},
+        {Pigment::Kind::Dents, 1.0, 0.0, 0, {0.061630528420, 0.033804181963, 0.078051984310}},
+        {Pigment::Kind::Wrinkles, 1.0, 0.0, 0, {0.461333215237, 0.402962327003, 0.459846347570}},
+        {Pigment::Kind::Wrinkles, 1.0, 0.0, 1, {0.428862065077, 0.369282394648, 0.427344411612}},
+        {Pigment::Kind::Ripples, 1.0, 0.0, 0, {0.280421525240, 0.544350028038, 0.443206280470}},
+        {Pigment::Kind::Waves, 1.0, 0.0, 0, {0.681625902653, 0.704053044319, 0.392501085997}},
+        // frequency and phase inside the pattern, and again as the wave.
+        {Pigment::Kind::Ripples, 2.0, 0.3, 0, {0.178480356932, 0.040751449764, 0.148157015443}},
+        {Pigment::Kind::Waves, 1.5, 0.2, 0, {0.903958678246, 0.829548001289, 0.977406203747}},
+    };
+    for (const Case& c : cases) {
+        Pigment p;
+        p.kind = c.kind;
+        p.frequency = c.frequency;
+        p.phase = c.phase;
+        p.noiseGenerator = c.generator;
+        for (int i = 0; i < 3; ++i) {
+            INFO("kind " << static_cast<int>(c.kind) << ", point " << i);
+            CHECK(mapPatternValue(p, points[i]) == Approx(c.values[i]).margin(1e-6));
+        }
+    }
+}

@@ -39,6 +39,8 @@ enum class BodyContext : std::uint8_t {
     Default,
     Mesh,
     Mesh2List,
+    SkySphere,
+    Fog,
 };
 
 // Parses a scene file and hands each top-level entry (an item or a directive,

@@ -14,7 +14,9 @@ namespace asos::lang {
     WORD(Camera, "camera") WORD(LightSource, "light_source") WORD(Sphere, "sphere") WORD(Box, "box")        \
     WORD(Cone, "cone") WORD(Cylinder, "cylinder") WORD(Disc, "disc") WORD(Polygon, "polygon")               \
     WORD(Plane, "plane") WORD(Union, "union") WORD(Difference, "difference") WORD(Intersection, "intersection") WORD(Merge, "merge") WORD(Object, "object") WORD(GlobalSettings, "global_settings") \
-    WORD(Background, "background")                                                                 \
+    WORD(Background, "background") WORD(SkySphere, "sky_sphere") WORD(Emission, "emission")       \
+    WORD(Fog, "fog") WORD(FogType, "fog_type") WORD(Distance, "distance") WORD(FogOffset, "fog_offset") \
+    WORD(FogAlt, "fog_alt") WORD(TurbDepth, "turb_depth")                                          \
     WORD(Quadric, "quadric")                                                                       \
     WORD(Torus, "torus") WORD(Sturm, "sturm")                                                      \
     WORD(Triangle, "triangle") WORD(SmoothTriangle, "smooth_triangle") WORD(Mesh, "mesh") WORD(Mesh2, "mesh2") \

@@ -106,6 +106,7 @@ private:
     const Scene& scene_;
     const CameraModel& camera_;
     std::uint64_t seed_;
+    AsosSettings sceneSettings_;  // the sky's
     std::vector<AsosSettings> objectSettings_;
     std::vector<AsosSettings> lightSettings_;
     bool patternEdges_;

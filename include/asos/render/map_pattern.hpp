@@ -1,10 +1,10 @@
 #pragma once
 // The patterns whose value runs over [0, 1] and picks a colour from a colour
 // map (gradient, radial, onion, marble, wood, leopard, bozo, spotted,
-// granite, agate), with POV-Ray 3.7's arithmetic: turbulence displacing the
-// point (marble and wood apply it themselves), the pattern's value, the wave
-// (frequency, phase, ramp/triangle/sine), then the map's linear blend
-// between its entries. Their colour varies continuously, with no edge
+// granite, agate; bumps, dents, wrinkles, ripples, waves), with POV-Ray
+// 3.7's arithmetic: turbulence displacing the point (marble and wood apply
+// it themselves), the pattern's value, the wave (frequency, phase,
+// ramp/triangle/sine), then the map's linear blend between its entries. Their colour varies continuously, with no edge
 // planes: ASOS samples them at a leaf's point (docs/algorithm.md, "Map
 // patterns").
 #include <span>

@@ -12,6 +12,7 @@
 #include <span>
 
 #include "asos/render/area_light.hpp"
+#include "asos/render/atmosphere.hpp"
 #include "asos/render/scene_lights.hpp"
 #include "asos/render/shading.hpp"
 #include "asos/render/stats.hpp"
@@ -28,13 +29,16 @@ public:
     explicit RayTracer(const Scene& scene, const LightSetup& lights = {})
         : scene_(scene),
           shading_(ShadingSettings::from(scene.description())),
-          lights_(scene.description(), lights) {}
+          lights_(scene.description(), lights),
+          atmosphere_(scene.description()) {}
 
     const Scene& scene() const { return scene_; }
     const SceneDescription& description() const { return scene_.description(); }
     const ShadingSettings& shadingSettings() const { return shading_; }
     std::span<const Light> lights() const { return scene_.description().lights; }
     const SceneLights& sceneLights() const { return lights_; }
+    // The sky and the fogs (render/atmosphere.hpp).
+    const Atmosphere& atmosphere() const { return atmosphere_; }
 
     // The nearest hit of an eye or reflected ray.
     std::optional<SurfaceHit> nearestHit(const Ray& ray) const {
@@ -53,7 +57,7 @@ public:
     Vec3 radiance(const Ray& ray, int depth, double weight, RenderCounters& counters,
                   const LightContext& context = {}) const;
     // The same, given the ray's nearest hit (nearestHit or nearestHits):
-    // the background where there is none.
+    // the sky (or background) where there is none; fogged either way.
     Vec3 radiance(const std::optional<SurfaceHit>& hit, const Ray& ray, int depth, double weight,
                   RenderCounters& counters, const LightContext& context = {}) const;
 
@@ -101,6 +105,7 @@ private:
     const Scene& scene_;
     ShadingSettings shading_;
     SceneLights lights_;
+    Atmosphere atmosphere_;
 };
 
 // Whether the light at `lightPosition` can light a surface point with

@@ -184,7 +184,13 @@ struct ColourMapEntry {
 struct Pigment {
     // Checker and Brick have two colours and plane edges; the others run a
     // value over [0, 1] through a colour map (render/map_pattern.hpp).
-    enum class Kind { Solid, Checker, Brick, Gradient, Radial, Onion, Marble, Wood, Leopard, Bozo, Spotted, Granite, Agate, Function };
+    enum class Kind {
+        Solid, Checker, Brick, Gradient, Radial, Onion, Marble, Wood, Leopard, Bozo, Spotted, Granite, Agate,
+        // The normal patterns' own values as pigment patterns (POV-Ray's
+        // pattern.cpp): bumps is bozo's noise, dents its cube, wrinkles ten
+        // octaves of it, ripples and waves POV-Ray's ten wave sources.
+        Bumps, Dents, Wrinkles, Ripples, Waves, Function
+    };
     enum class Wave { Ramp, Triangle, Sine };
     Kind kind = Kind::Solid;
     Color color1{};                       // the solid colour, or the pattern's first (brick: the mortar)
@@ -295,12 +301,46 @@ struct GlobalSettings {
     AsosOptions asos;
 };
 
+// POV-Ray's sky_sphere { pigment {…} … emission C transforms }: the colour
+// of a ray that hits nothing, its pigments (lowest first, the last written
+// on top) evaluated at the ray's unit direction taken back through
+// worldFromSky, each times `emission`, over the background
+// (render/atmosphere.hpp).
+struct SkySphere {
+    std::vector<Pigment> pigments;
+    Vec3 emission{1.0};
+    Transform worldFromSky;
+    SourceLoc loc;
+};
+
+// POV-Ray's fog { fog_type 1|2 distance D colour C … }: constant fog (1)
+// or ground fog (2, its density 1 below fog_offset along `up` and falling
+// as 1 / (1 + h^2) above, h the height over fog_offset in units of
+// fog_alt), with POV-Ray's optional turbulence of its depth.
+struct Fog {
+    int type = 1;
+    double distance = 0.0;
+    Color color{};
+    double offset = 0.0;  // fog_offset
+    double alt = 0.0;     // fog_alt
+    Vec3 up{0.0, 1.0, 0.0};  // unit (POV-Ray normalises it)
+    bool turbulent = false;  // any of turbulence, octaves, omega, lambda given
+    Vec3 turbulence{0.0};
+    int octaves = 6;
+    double omega = 0.5;
+    double lambda = 2.0;
+    double turbDepth = 0.5;
+    SourceLoc loc;
+};
+
 struct SceneDescription {
     Camera camera;
     std::vector<Light> lights;
     std::vector<Object> objects;  // unions are flattened, a CSG gives one per leaf; order of appearance
     GlobalSettings globals;
     Color background{};  // its transmit darkens it (POV-Ray without alpha output)
+    std::optional<SkySphere> skySphere;  // the last one written
+    std::vector<Fog> fogs;               // in the order written
     // The POV-Ray version the scene is read as, in hundredths as POV-Ray keeps
     // it: its last #version, or 3.62 when it has none (POV-Ray's assumption).
     double version = 3.7;
