@@ -53,6 +53,9 @@ echo "make-docs: $(wc -l < "$work/snippets") snippet pictures"
 # Getting started: the first render and its heat map.
 render examples/first.pov first -W 320 -H 240 --aov samples="$pictures/first-samples.png"
 
+# Getting started: the house after the paper's Figure 7.
+render examples/figure7.pov figure7 -W 320 -H 240
+
 # The asos chapter: one scene at three settings of EPS and MAX, with heat maps.
 for setting in "16 2" "64 4" "256 6"; do
   read -r eps max <<< "$setting"
