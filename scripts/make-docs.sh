@@ -63,6 +63,17 @@ for setting in "16 2" "64 4" "256 6"; do
     --aov samples="$pictures/eps${eps}-max${max}-samples.png"
 done
 
+# The paper's Figure 8: the office four ways, in the paper's places (ASOS at
+# MAX 3 upper left, random MAX-cones lower left, 3 x 3 and 4 x 4 jittered
+# sampling on the right), joined by oiiotool.
+for setting in "asos:--max 3" "random:--max 3 --jitter on" "3x3:--method jitter --samples 3" \
+               "4x4:--method jitter --samples 4"; do
+  # shellcheck disable=SC2086  # the options are words
+  "$asos" render examples/figure8.pov -o "$work/f8-${setting%%:*}.png" -W 160 -H 107 --quiet ${setting#*:}
+done
+oiiotool --nosoftwareattrib "$work/f8-asos.png" "$work/f8-3x3.png" "$work/f8-random.png" "$work/f8-4x4.png" \
+  --mosaic 2x2 --eraseattrib ".*" -o "$pictures/figure8.png"
+
 # asos beside POV-Ray 3.7, both at 160 x 120: POV-Ray with its own default
 # antialiasing (+A0.3, method 1), asos with its default, ASOS.
 if command -v povray > /dev/null; then
