@@ -32,6 +32,9 @@ void addStabilityBenchmark(CLI::App& app, CommandResult& result);
 
 void addEpsBenchmark(CLI::App& app, CommandResult& result);
 
+// `asos-bench scale`: time and memory against objects and pixels (bench_scale.cpp).
+void addScaleBenchmark(CLI::App& app, CommandResult& result);
+
 // An example scene, `relative` to the examples folder, for a benchmark's
 // default: the installed share/asos/examples beside the program when there is
 // one, else the source tree's examples/ (example_scene.cpp).

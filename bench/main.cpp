@@ -15,6 +15,7 @@ int main(int argc, char** argv) {
     addAccuracyBenchmark(app, result);
     addStabilityBenchmark(app, result);
     addEpsBenchmark(app, result);
+    addScaleBenchmark(app, result);
 
     return asos::cli::runProgram(app, argc, argv, result);
 }

@@ -37,6 +37,7 @@ TEST_CASE("asos-bench runs a tiny case of each benchmark", "[bench]") {
          "--eps", "1/4", "--reference", "2"},
         {"stability", "-W", "16", "-H", "12", "--frames", "3", "--quick", "--no-gnuplot", "-o", "stability"},
         {"eps", "-W", "16", "-H", "12", "--max", "4", "--eps", "16"},
+        {"scale", "-W", "16", "-H", "12", "--quick", "--no-gnuplot", "-o", "scale"},
     };
     for (const auto& args : cases) {
         INFO(args[0] << (args.size() > 1 ? " " + args[1] : ""));
