@@ -192,37 +192,6 @@ Vec3 Interpreter::evalRgb(const Node& n, std::string_view usedAs) {
     return c.rgb;
 }
 
-namespace {
-// The first colour of the pigment with filter or transmit, if any.
-std::optional<Color> seeThroughColour(const Pigment& p) {
-    auto seeThrough = [](const Color& c) { return c.filter != 0.0 || c.transmit != 0.0; };
-    if (seeThrough(p.color1)) return p.color1;
-    if (seeThrough(p.color2)) return p.color2;
-    for (const ColourMapEntry& e : p.colourMap)
-        if (seeThrough(e.color)) return e.color;
-    return std::nullopt;
-}
-}  // namespace
-
-// A layer over another may let it show through; the bottom layer would let
-// the objects behind show, which asos does not render.
-void Interpreter::checkOpaqueBottom(const TextureLayer& bottom, const Node& at) {
-    const std::optional<Color> c = seeThroughColour(bottom.pigment);
-    if (!c) return;
-    const std::string colour = "rgbft <" + formatNumber(c->rgb.x) + ", " + formatNumber(c->rgb.y) + ", " +
-                               formatNumber(c->rgb.z) + ", " + formatNumber(c->filter) + ", " +
-                               formatNumber(c->transmit) + ">";
-    std::string message = "transparency is not supported by asos: this pigment's colour " + colour +
-                          " (" + filterAndTransmit(*c) + ")" +
-                          " would make the surface transparent in POV-Ray (only a layer over "
-                          "another texture may let what is under it show)";
-    // All five alike is, in practice, a float used as a colour.
-    if (c->rgb.x == c->filter && c->rgb.y == c->filter && c->rgb.z == c->filter && c->transmit == c->filter)
-        message += "; a float as a colour sets filter and transmit too: write 'rgb " +
-                   formatNumber(c->filter) + "' for a grey";
-    fail(at, std::move(message));
-}
-
 std::string Interpreter::evalString(const Node& n) {
     Value v = eval(n);
     if (auto* s = std::get_if<std::string>(&v)) return std::move(*s);

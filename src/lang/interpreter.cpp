@@ -521,7 +521,6 @@ void Interpreter::runDefault(const Node& n) {
         switch (e.word) {
         case Word::Texture:
             defaultTexture_ = evalTexture(e);
-            checkOpaqueBottom(*defaultTexture_, e);
             break;
         case Word::Pigment: case Word::Normal: case Word::Finish:
             defaultTexture_ = withTopLayerItem(*defaultTexture_, e);

@@ -171,7 +171,6 @@ std::shared_ptr<const Texture> Interpreter::withTopLayerItem(const Texture& base
         top.normal = *evalNormal(n, top.normal);
     else
         top.finish = *evalFinish(n, top.finish);
-    if (texture->above.empty()) checkOpaqueBottom(*texture, n);
     return texture;
 }
 
@@ -524,8 +523,6 @@ void Interpreter::applyObjectModifier(ObjectTree& tree, const Node& n, bool isSh
                 auto layered = std::make_shared<Texture>(*tree.texture);
                 layerOver(*layered, *texture);
                 texture = std::move(layered);
-            } else {
-                checkOpaqueBottom(*texture, n);
             }
             tree.texture = std::move(texture);
             return;

@@ -2,6 +2,7 @@
 
 #include "asos/render/area_light_shadow.hpp"
 #include "asos/render/grid_light.hpp"
+#include "asos/render/transparent_shadow.hpp"
 
 namespace asos {
 
@@ -38,8 +39,17 @@ std::span<const LightSample> areaLightSamples(const Scene& scene, const SceneLig
         : model.emitter == LightEmitter::Povray   ? povraySamples(scene, lights, query, scratch, counters)
         : setup.method == LightMethod::Asos       ? asosAreaLightSamples(scene, model, setup.apex, query, scratch, counters)
                                                   : gridAreaLightSamples(scene, model, query, scratch, counters);
-    if (!query.diffuseOnly || samples.size() < 2) return samples;
-    return mergeDiffuse(samples, scratch.merged);
+    // Transparent occluders filter each sample along its own ray (the
+    // methods above pass them: Scene::occluded and the beams' candidates).
+    std::span<const LightSample> seen = samples;
+    if (scene.anyTransparent() && !model.shadowless) {
+        scratch.filtered.assign(samples.begin(), samples.end());
+        for (LightSample& s : scratch.filtered)
+            s.color *= transparentShadowFilter(scene, query.point, query.point + s.direction * s.distance, counters);
+        seen = scratch.filtered;
+    }
+    if (!query.diffuseOnly || seen.size() < 2) return seen;
+    return mergeDiffuse(seen, scratch.merged);
 }
 
 bool povrayLightsPoint(const LightModel& model, const AreaLightQuery& query) {

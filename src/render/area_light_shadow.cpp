@@ -190,7 +190,7 @@ public:
         };
         if (s_.beamCandidates.size() <= q_.lightIndex) s_.beamCandidates.resize(q_.lightIndex + 1);
         s_.beamCandidates[q_.lightIndex].visit(scene_, rootCone, prepared, [&](std::uint32_t object) {
-            if (scene_.object(object).noShadow) return;
+            if (scene_.object(object).noShadow || scene_.transparent(object)) return;  // transparent: areaLightSamples filters
             if (object == q_.shadedObject && !q_.shadedCanSelfShadow && shadedLeftOut) return;
             const Primitive& primitive = scene_.primitive(object);
             if (beyondLight(primitive)) return;

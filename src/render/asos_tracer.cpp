@@ -5,6 +5,7 @@
 
 #include "asos/render/highlight_bound.hpp"
 #include "asos/render/pattern_filter.hpp"
+#include "asos/render/transparent_shadow.hpp"
 #include "asos/shapes/depth_order.hpp"
 #include "asos/shapes/local_cone.hpp"
 
@@ -23,8 +24,9 @@ bool inFront(const Scene& scene, const PreparedCone& cone, const Item& a, const 
 }
 
 // Sorts out the objects of items[first, end) for a pyray: drops, in place
-// and in order, those no ray of the pyray can see, which a Full object (met
-// by every ray) comes before on every ray (two that each come before the
+// and in order, those no ray of the pyray can see, which an opaque Full
+// object (met by every ray; a transparent one hides nothing) comes before
+// on every ray (two that each come before the
 // other, to the tolerances of surelyInFront, are both kept); then marks as
 // crossed each Full object left whose order against another one left is
 // not known (a sphere sunk into a plane). Returns how many are left; items
@@ -34,9 +36,13 @@ std::uint32_t sortOut(const Scene& scene, const PreparedCone& cone, std::vector<
     const std::size_t end = items.size();
     // Wholly behind the nearest far depth of a Full object: hidden, as
     // cheaply as that.
+    // A transparent object hides nothing: what is behind it shows through.
+    const auto hides = [&](const Item& item) {
+        return item.cls.coverage == Coverage::Full && !scene.transparent(item.object);
+    };
     double front = kInfinity;
     for (std::size_t i = first; i < end; ++i)
-        if (items[i].cls.coverage == Coverage::Full) front = std::min(front, items[i].cls.tFar);
+        if (hides(items[i])) front = std::min(front, items[i].cls.tFar);
     hidden.assign(end - first, 0);
     for (std::size_t i = first; i < end; ++i) {
         if (items[i].cls.tNear > front) {
@@ -44,7 +50,7 @@ std::uint32_t sortOut(const Scene& scene, const PreparedCone& cone, std::vector<
             continue;
         }
         for (std::size_t j = first; j < end; ++j) {
-            if (j == i || items[j].cls.coverage != Coverage::Full || items[j].cls.tNear > front) continue;
+            if (j == i || !hides(items[j]) || items[j].cls.tNear > front) continue;
             if (inFront(scene, cone, items[j], items[i]) &&
                 !(items[i].cls.coverage == Coverage::Full && inFront(scene, cone, items[i], items[j]))) {
                 hidden[i - first] = 1;
@@ -546,7 +552,12 @@ Vec3 AsosTracer::PixelTrace::shadeLeaf(const ImageSquare& square, int level, std
             lit = pointLightLitFraction(scene_, *footprint, query, s_.shadow, c_);
             if (!(lit > 0.0)) return {};
         }
-        storage = pointLightSample(light.position, light.color, p.position, lit);
+        // Transparent objects are not among the shadow pyrays' occluders:
+        // they filter the light along the central shadow ray.
+        const Vec3 filter =
+            light.shadowless ? Vec3(1.0) : transparentShadowFilter(scene_, p.position, light.position, c_);
+        if (filter == Vec3(0.0)) return {};
+        storage = pointLightSample(light.position, light.color * filter, p.position, lit);
         return {&storage, 1};
     };
     const Vec3 shaded = tracer_.shadeWith(*hit, ray, 1, 1.0, lightArriving, c_, context, leafPigment(square, *hit));

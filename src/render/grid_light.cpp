@@ -43,7 +43,7 @@ double visibleFraction(const Form& form, const Scene& scene, const LightModel& m
     // blocks from kPovMinIsectDepth on (a ray that grazes it leaves it
     // within the tolerance).
     const Primitive& shaded = scene.primitive(q.shadedObject);
-    const bool cached = !scene.object(q.shadedObject).noShadow;
+    const bool cached = !scene.object(q.shadedObject).noShadow && !scene.transparent(q.shadedObject);
     // Each lattice point traced once; POV-Ray's jitter moves it by up to
     // half a step either way, past the light's edges.
     const auto lit = [&](int i, int j) {

@@ -202,7 +202,7 @@ double pointLightLitFraction(const Scene& scene, const Footprint& footprint,
     selfMargin = root.diameter;
     if (s.candidates.size() <= q.lightIndex) s.candidates.resize(q.lightIndex + 1);
     s.candidates[q.lightIndex].visit(scene, root.cone, [&](std::uint32_t object) {
-        if (scene.object(object).noShadow) return;
+        if (scene.object(object).noShadow || scene.transparent(object)) return;  // transparent: filtered by the caller
         if (object == q.shadedObject && !q.shadedCanSelfShadow) return;
         ++counters.coneTests;
         const ConeClass k =

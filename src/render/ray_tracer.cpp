@@ -1,5 +1,10 @@
 #include "asos/render/ray_tracer.hpp"
 
+#include "asos/render/transparent_shadow.hpp"
+
+#include <algorithm>
+#include <cmath>
+
 namespace asos {
 
 Vec3 RayTracer::radiance(const Ray& ray, int depth, double weight, RenderCounters& counters,
@@ -67,13 +72,20 @@ bool RayTracer::shadowRayBlocked(const Vec3& point, const Vec3& lightPosition,
                            distance - kPovShadowTolerance);
 }
 
+Vec3 RayTracer::shadowRayFilter(const Vec3& point, const Vec3& lightPosition,
+                                RenderCounters& counters) const {
+    if (shadowRayBlocked(point, lightPosition, counters)) return Vec3(0.0);
+    return transparentShadowFilter(scene_, point, lightPosition, counters);
+}
+
 std::span<const LightSample> RayTracer::plainLightSample(const ShadingPoint& point,
                                                          LightSample& storage,
                                                          RenderCounters& counters) const {
     const Light& light = *point.light;
     if (!facesLight(point.position, point.normal, light.position)) return {};
-    if (!light.shadowless && shadowRayBlocked(point.position, light.position, counters)) return {};
-    storage = pointLightSample(light.position, light.color, point.position);
+    const Vec3 through = light.shadowless ? Vec3(1.0) : shadowRayFilter(point.position, light.position, counters);
+    if (through == Vec3(0.0)) return {};
+    storage = pointLightSample(light.position, light.color * through, point.position);
     return {&storage, 1};
 }
 

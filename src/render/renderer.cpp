@@ -203,6 +203,41 @@ bool effectivePatternFilter(const RenderSettings& s) {
     return s.method == RenderMethod::Asos && s.patternFilter.value_or(!s.patternEdges);
 }
 
+namespace {
+// What asos renders differently from POV-Ray with transparent objects, a
+// warning each at the first object concerned: a merge of transparent
+// objects keeps their inner surfaces (merge renders as union); and the
+// shadows transparent objects cast from area lights are filtered along one
+// ray per light sample (the centre's, for POV-Ray's lights without
+// area_illumination), where POV-Ray filters every point of the light.
+void warnTransparency(const SceneDescription& d, Diagnostics& diagnostics) {
+    const Object* first = nullptr;
+    for (const Object& o : d.objects) {
+        if (!mayBeTransparent(*o.texture)) continue;
+        if (!first && !o.noShadow) first = &o;
+        const auto* csg = std::get_if<CsgShape>(&o.shape);
+        if (!csg) continue;
+        for (const CsgTree::Node& n : csg->tree->nodes)
+            if (n.op == CsgTree::Op::Merge) {
+                diagnostics.warning(o.loc, "a merge of transparent objects keeps their inner surfaces in asos "
+                                           "(it renders as a union; POV-Ray removes them)");
+                csg = nullptr;
+                break;
+            }
+        if (!csg) break;
+    }
+    if (!first) return;
+    for (const Light& l : d.lights)
+        if (l.area && !l.shadowless) {
+            diagnostics.warning(first->loc,
+                                "asos filters the shadow a transparent object casts from an area light along one "
+                                "ray per light sample (toward the light's centre, without area_illumination): "
+                                "its edges are sharper than POV-Ray's, which filters every point of the light");
+            return;
+        }
+}
+}  // namespace
+
 RenderOutput render(const Scene& scene, const RenderSettings& settings) {
     if (std::string problems = checkRenderSettings(settings); !problems.empty())
         throw std::invalid_argument(problems);
@@ -249,6 +284,7 @@ std::optional<RenderOutput> render(const SceneDescription& description,
     if (std::string problems = checkRenderSettings(settings); !problems.empty())
         throw std::invalid_argument(problems);
     if (!checkRenderable(description, diagnostics)) return std::nullopt;
+    warnTransparency(description, diagnostics);
     const auto start = std::chrono::steady_clock::now();
     std::unique_ptr<Scene> scene = Scene::build(description, diagnostics);
     const double buildSeconds =

@@ -75,13 +75,19 @@ std::unique_ptr<Scene> Scene::build(SceneDescription description, Diagnostics& d
         const std::uint32_t object = scene->objectOf_[slot];
         scene->slotOf_[object] = static_cast<std::uint32_t>(slot);
         scene->primitives_.push_back(std::move(byObject[object]));
-        scene->castsShadow_.push_back(description.objects[object].noShadow ? 0 : 1);
+        scene->castsShadow_.push_back(
+            description.objects[object].noShadow || mayBeTransparent(*description.objects[object].texture) ? 0 : 1);
     }
     const std::size_t treeSlots = scene->bvh_.itemOrder().size();
     scene->leafSpheres_.assign(treeSlots, TranslatedSphere{Vec3(0.0), -1.0});
     for (std::size_t i = 0; i < treeSlots; ++i) {
         const auto sphere = scene->primitives_[scene->unbounded_.size() + i].translatedSphere();
         if (sphere) scene->leafSpheres_[i] = *sphere;
+    }
+    scene->transparent_.reserve(n);
+    for (const Object& o : description.objects) {
+        scene->transparent_.push_back(mayBeTransparent(*o.texture) ? 1 : 0);
+        scene->anyTransparent_ = scene->anyTransparent_ || scene->transparent_.back();
     }
     scene->description_ = std::move(description);
     return scene;

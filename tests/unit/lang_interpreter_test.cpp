@@ -105,8 +105,8 @@ TEST_CASE("colours", "[lang][interpreter]") {
 }
 
 // Each use of a colour as POV-Ray's Parse_Colour reads it (checked with
-// `povray`): a surface's colour with filter or transmit would be transparent
-// in an object's bottom texture layer, which asos refuses (at the pigment); a light's colour, ambient, reflection and ambient_light
+// `povray`): a surface's colour with filter or transmit is transparent in an
+// object's bottom texture layer; a light's colour, ambient, reflection and ambient_light
 // keep red, green and blue, a float there being a grey.
 TEST_CASE("filter and transmit where a colour is used", "[lang][interpreter]") {
     const std::string v37 = "#version 3.7; global_settings { assumed_gamma 1 }\n";
@@ -128,21 +128,13 @@ TEST_CASE("filter and transmit where a colour is used", "[lang][interpreter]") {
                                 "sphere { 0, 1 pigment { color 0.5 } }\n"
                                 "plane { y, 0 pigment { checker rgb 1 rgbt <0, 0, 0, 0.25> } }\n"
                                 "plane { y, 0 pigment { brick rgb 1 transmit 1 } }\n");
-    CHECK_FALSE(transparent.scene);
-    CHECK(transparent.errors() ==
-          "3:15: transparency is not supported by asos: this pigment's colour rgbft <1, 1, 1, 0.9, 0> (filter "
-          "0.9) would make the surface transparent in POV-Ray (only a layer over another texture may let what "
-          "is under it show)\n"
-          "4:15: transparency is not supported by asos: this pigment's colour rgbft <0.5, 0.5, 0.5, 0.5, 0.5> "
-          "(filter 0.5 and transmit 0.5) would make the surface transparent in POV-Ray (only a layer over "
-          "another texture may let what is under it show); a float as a colour sets filter and transmit too: "
-          "write 'rgb 0.5' for a grey\n"
-          "5:14: transparency is not supported by asos: this pigment's colour rgbft <0, 0, 0, 0, 0.25> (transmit "
-          "0.25) would make the surface transparent in POV-Ray (only a layer over another texture may let what "
-          "is under it show)\n"
-          "6:14: transparency is not supported by asos: this pigment's colour rgbft <1, 1, 1, 0, 1> (transmit 1) "
-          "would make the surface transparent in POV-Ray (only a layer over another texture may let what is "
-          "under it show)\n");
+    // In the bottom layer they make the surface transparent, as in POV-Ray.
+    const auto& t = ok(transparent);
+    CHECK(transparent.diagnostics.all().empty());
+    CHECK(t.objects.at(0).texture->pigment.color1 == Color{{1, 1, 1}, 0.9, 0});
+    CHECK(t.objects.at(1).texture->pigment.color1 == Color{{0.5, 0.5, 0.5}, 0.5, 0.5});
+    CHECK(t.objects.at(2).texture->pigment.color2 == Color{{0, 0, 0}, 0, 0.25});
+    CHECK(t.objects.at(3).texture->pigment.color1.transmit == 1.0);
 
     // A float is a grey where only red, green and blue are read: no warning.
     Run grey = run(v37 + "global_settings { ambient_light color 0.8 }\n"
@@ -216,9 +208,6 @@ TEST_CASE("Layered textures", "[lang][interpreter]") {
                             "sphere { 0, 1 texture { L pigment { rgb 0 } } }\n");
     CHECK_FALSE(refused.scene);
     CHECK(refused.errors() ==
-          "2:15: transparency is not supported by asos: this pigment's colour rgbft <1, 1, 1, 0, 0.5> (transmit "
-          "0.5) would make the surface transparent in POV-Ray (only a layer over another texture may let what "
-          "is under it show)\n"
           "3:14: only textures are layered: this pigment is followed by a texture\n"
           "5:27: a pigment in a layered texture's block is not supported by asos; give it to one of its layers\n");
 }

@@ -81,13 +81,14 @@ void compareWithPovray(const std::string& scene, RenderMethod method, const std:
 // patterns with POV-Ray's noise and turbulence and the function pattern (map_*), CSG (csg),
 // layered textures (layered, and layered_legacy for a scene older than 3.7),
 // the normal patterns (normals) and their values as pigment patterns
-// (map_normal_patterns), and sky_sphere with fog (atmosphere, and
-// atmosphere_legacy for a scene older than 3.7).
+// (map_normal_patterns), sky_sphere with fog (atmosphere, and
+// atmosphere_legacy for a scene older than 3.7) and transparency without an
+// interior (transparency).
 TEST_CASE("The renderer matches POV-Ray with one ray per pixel", "[golden][povray]") {
     for (const char* scene : {"flat_perspective", "flat_orthographic", "lighting", "reflection", "primitives",
                               "brick", "gamma_off", "assumed_gamma", "map_plain", "map_noise", "map_turbulence",
                               "csg", "layered", "layered_legacy", "normals", "atmosphere", "atmosphere_legacy",
-                              "map_normal_patterns", "map_function"})
+                              "map_normal_patterns", "map_function", "transparency"})
         compareWithPovray(scene, RenderMethod::Single, "", "-A");
 }
 

@@ -101,6 +101,7 @@ struct AreaLightScratch {
     std::vector<std::uint8_t> hits[2];  // per item: the node's central ray hits the object
     std::vector<AreaBeamNode> nodes[2];
     std::vector<LightSample> samples;       // the answer
+    std::vector<LightSample> filtered;      // the answer through transparent occluders
     LightSample merged;                     // the answer, summed (mergeDiffuse)
     WeightedDiffuseSum diffuseSum;          // ASOS beams: the answer, summed as it is made
     std::vector<LightSample> gridSamples;   // grid: per lattice point, its sample

@@ -81,6 +81,10 @@ public:
                             [&](const Ray& mirror, int d, double w) {
                                 ++counters.reflectedRays;
                                 return radiance(mirror, d, w, counters, context.reflected(d));
+                            },
+                            [&](const Ray& through, int d, double w) {
+                                ++counters.reflectedRays;  // counted with the mirror rays
+                                return radiance(through, d, w, counters, context.reflected(d));
                             });
     }
 
@@ -94,6 +98,11 @@ public:
     // `lightPosition` is blocked by an object that casts shadows.
     bool shadowRayBlocked(const Vec3& point, const Vec3& lightPosition,
                           RenderCounters& counters) const;
+    // What reaches `point` of the point light at `lightPosition` along a
+    // plain shadow ray, per channel: 0 where an opaque object that casts
+    // shadows blocks it, else what the transparent ones between let through
+    // (transparentShadowFilter; POV-Ray's ComputeShadowColour).
+    Vec3 shadowRayFilter(const Vec3& point, const Vec3& lightPosition, RenderCounters& counters) const;
 
     // The sample of point light `light` at a shading point, through a plain
     // shadow ray: none when the light is behind the surface (it would light

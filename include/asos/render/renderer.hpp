@@ -90,6 +90,7 @@ bool effectivePatternFilter(const RenderSettings& settings);
 // there was an error.
 bool checkRenderable(const SceneDescription& description, Diagnostics& diagnostics);
 
+
 // Renders a built scene. Throws std::invalid_argument for settings that
 // checkRenderSettings rejects. stats.times.buildSeconds is left 0.
 RenderOutput render(const Scene& scene, const RenderSettings& settings);

@@ -196,11 +196,13 @@ struct ShadedLayer {
     Vec3 pigment{0.0};  // the pigment's colour x its opacity
     Vec3 through{1.0};  // what the layers above let through (POV-Ray's filCol)
     double weight = 1.0;  // the ray's weight left for it (POV-Ray's trans)
+    Vec3 after{1.0};    // what this layer and those above let through
 };
 
 // The texture's layers that the ray sees, top first: POV-Ray's loop in
 // ComputeLightedTexture, which stops where the layers above let less than
-// adc_bailout through. The bottom layer is opaque, so the ray ends there.
+// adc_bailout through. What the bottom layer's `after` lets through shows
+// what is behind the surface (shadeSurface).
 // `bottomPigment`: the pigment's colour of a texture of one layer, when the
 // caller has it (ShadeRequest::pigment). `normal`: the surface's, unit and
 // turned toward the ray, which POV-Ray tilts (ComputeTextureColour turns it
@@ -224,8 +226,10 @@ std::span<const ShadedLayer> shadedLayers(const Texture& texture, const Vec3& po
         const TextureLayer& layer = i == 0 ? static_cast<const TextureLayer&>(texture) : texture.above[i - 1];
         const Color c = (count == 1 && bottomPigment) ? *bottomPigment : evaluatePigment(layer.pigment, point);
         const Vec3 tilted = layer.normal ? perturbedNormal(*layer.normal, point, normal) : normal;
-        out[n++] = {&layer.finish, tilted, c.rgb * layerOpacity(c, settings.legacyLayerOpacity), through, weight};
+        const Vec3 before = through;
         through *= layerTransmittance(c);
+        out[n++] = {&layer.finish, tilted, c.rgb * layerOpacity(c, settings.legacyLayerOpacity), before, weight,
+                    through};
         weight = std::min(1.0, std::fabs(povGreyscale(through)));
     }
     return {out, n};
@@ -245,6 +249,16 @@ std::span<const ShadedLayer> shadedLayers(const Texture& texture, const Vec3& po
 //   finish reflects, depth <= max_trace_level and weight >= adc_bailout, as
 //   POV-Ray's TraceRay decides; otherwise the reflection is black.
 //
+// traceTransmitted(const Ray& ray, int depth, double weight) -> Vec3
+//   the colour behind a transparent surface: along the ray itself, from the
+//   hit on (the callee must skip the surface itself). Called, as POV-Ray's
+//   ComputeLightedTexture and TraceRay decide, when the layers let more than
+//   adc_bailout through (the greyscale of their product), depth <=
+//   max_trace_level and the weight (times the product's largest channel) is
+//   at least adc_bailout; the colour is filtered by the product. Without an
+//   interior's ior the ray goes on unbent (POV-Ray's ComputeRefraction with
+//   ior 1).
+//
 // A layered texture: each layer adds its ambient, diffuse and highlights, the
 // pigment's terms times its opacity, all times what the layers above let
 // through; each adds its reflection, traced with the weight the layers above
@@ -253,10 +267,10 @@ std::span<const ShadedLayer> shadedLayers(const Texture& texture, const Vec3& po
 // are asked with the surface's (ShadingPoint::normal), so a light below the
 // surface's horizon lights no tilted normal (POV-Ray's would, on a surface
 // that does not shadow itself there, as a plane).
-template <class LightFn, class ReflectFn>
+template <class LightFn, class ReflectFn, class TransmitFn>
 Vec3 shadeSurface(const ShadeRequest& req, std::span<const Light> lights,
                   const ShadingSettings& settings, LightFn&& lightArriving,
-                  ReflectFn&& traceReflected) {
+                  ReflectFn&& traceReflected, TransmitFn&& traceTransmitted) {
     const Vec3 rayDir = glm::normalize(req.ray.dir);
     const Vec3 normal = facingNormal(req.hit.normal, rayDir);
     // Every term that uses the pigment (ambient, diffuse) is linear in it, so
@@ -298,7 +312,34 @@ Vec3 shadeSurface(const ShadeRequest& req, std::span<const Light> lights,
             color += reflection * Vec3(traceReflected(mirror, req.depth + 1, weight));
         }
     }
+    // Transmission (POV-Ray's ComputeLightedTexture after its layer loop):
+    // only where every layer was seen, the bottom one included.
+    if (layers.size() == req.texture.above.size() + 1) {
+        const Vec3& filter = layers.back().after;
+        const double trans = std::min(1.0, std::fabs(povGreyscale(filter)));
+        const double weight =
+            req.weight * std::max(std::fabs(filter.x), std::max(std::fabs(filter.y), std::fabs(filter.z)));
+        if (trans > settings.adcBailout && req.depth < settings.maxTraceLevel && weight >= settings.adcBailout)
+            color += filter * Vec3(traceTransmitted(Ray{req.hit.position, rayDir}, req.depth + 1, weight));
+    }
     return color;
+}
+
+// The same for a caller that traces reflected and transmitted rays alike.
+template <class LightFn, class ReflectFn>
+Vec3 shadeSurface(const ShadeRequest& req, std::span<const Light> lights,
+                  const ShadingSettings& settings, LightFn&& lightArriving,
+                  ReflectFn&& traceSecondary) {
+    return shadeSurface(req, lights, settings, lightArriving, traceSecondary, traceSecondary);
+}
+
+// What a surface with this texture lets through toward a light at a world
+// point, per channel (POV-Ray's ComputeShadowTexture without an interior):
+// the product of its layers' filter x colour + transmit; 0 for an opaque one.
+inline Vec3 shadowTransmittance(const Texture& texture, const Vec3& point) {
+    Vec3 through = layerTransmittance(evaluatePigment(texture.pigment, point));
+    for (const TextureLayer& layer : texture.above) through *= layerTransmittance(evaluatePigment(layer.pigment, point));
+    return through;
 }
 
 }  // namespace asos

@@ -261,10 +261,26 @@ struct TextureLayer {
 // POV-Ray's layered texture (`texture { A } texture { B }`: B over A), lowest
 // first: each layer is lit with its own finish, and what it lets through
 // (its colour's filter and transmit) shows the layers under it
-// (docs/rendering.md, "Layered textures"). The bottom layer is opaque.
+// (docs/rendering.md, "Layered textures"). Where the bottom layer lets
+// light through, the object is transparent (mayBeTransparent).
 struct Texture : TextureLayer {
     std::vector<TextureLayer> above;
 };
+
+// Whether a colour lets light through (its filter or transmit is not zero).
+inline bool seeThrough(const Color& c) { return c.filter != 0.0 || c.transmit != 0.0; }
+
+// Whether a surface with this texture may let light through somewhere: a
+// colour of its bottom layer's pigment filters or transmits (the layers
+// above only show the ones under them). Such an object is transparent: rays
+// go on through it and it filters the shadows it casts.
+inline bool mayBeTransparent(const Texture& t) {
+    const Pigment& p = t.pigment;
+    if (seeThrough(p.color1) || seeThrough(p.color2)) return true;
+    for (const ColourMapEntry& e : p.colourMap)
+        if (seeThrough(e.color)) return true;
+    return false;
+}
 
 // POV-Ray's default texture (black pigment, default finish), shared.
 inline const std::shared_ptr<const Texture>& defaultTexture() {

@@ -26,6 +26,11 @@ public:
     const Primitive& primitive(std::uint32_t object) const { return primitives_[slotOf_[object]]; }
     const Object& object(std::uint32_t object) const { return description_.objects[object]; }
     const Bvh& bvh() const { return bvh_; }
+    // Whether the object may let light through (mayBeTransparent of its
+    // texture): rays go on through it, and it filters the shadows it casts
+    // rather than blocking them.
+    bool transparent(std::uint32_t object) const { return transparent_[object] != 0; }
+    bool anyTransparent() const { return anyTransparent_; }
 
     // The nearest hit in [tMin, tMax], with objectIndex set. Of hits at the
     // same distance, the one of the object stored last wins (an order of the
@@ -36,7 +41,8 @@ public:
     // of a pinhole camera, share the BVH traversal (Bvh::traversePacket).
     void intersect(std::span<const Ray> rays, double tMin, double tMax,
                    std::span<std::optional<SurfaceHit>> hits) const;
-    // Whether an object that casts shadows (not `no_shadow`) is hit in [tMin, tMax].
+    // Whether an opaque object that casts shadows (not `no_shadow`, not
+    // transparent) is hit in [tMin, tMax].
     bool occluded(const Ray& ray, double tMin, double tMax) const;
     // Calls visit(object) for every object whose bounds the cone may touch,
     // unbounded ones included: a superset of the objects the cone meets.
@@ -60,6 +66,8 @@ private:
     // neighbouring memory (a Primitive is a few hundred bytes).
     std::vector<Primitive> primitives_;        // by slot
     std::vector<std::uint8_t> castsShadow_;    // by slot
+    std::vector<std::uint8_t> transparent_;    // by object
+    bool anyTransparent_ = false;
     std::vector<std::uint32_t> objectOf_;      // slot -> object
     std::vector<std::uint32_t> slotOf_;        // object -> slot
     std::vector<std::uint32_t> bounded_;       // BVH item -> object

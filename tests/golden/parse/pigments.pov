@@ -1,7 +1,6 @@
 // pigment: colours in every POV-Ray form, checker with given and default
 // colours, declared pigments, pattern transforms. Filter and transmit are
-// zero: anything else would be transparent, which asos refuses
-// (tests/golden/diag/semantic_transparent_colour.pov).
+// zero: anything else makes the surface transparent (tests/unit/transparency_test.cpp).
 #declare Orange = color rgb <1, 0.5, 0>;
 #declare Stripes = pigment { checker color rgb 1, color rgb 0 scale <1, 10, 1> }
 sphere { 0, 1 pigment { color rgb <1, 0, 0> } }
