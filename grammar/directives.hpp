@@ -19,6 +19,8 @@ struct pigment_block;
 struct finish_block;
 struct normal_block;
 struct texture_block;
+struct interior_block;
+struct material_block;
 struct colour_map_block;
 struct block_open;
 struct unsupported_item;
@@ -102,7 +104,8 @@ struct declare_semicolon : semicolon {};
 struct texture_layers_open : success {};
 struct layered_texture : seq<at<TAO_PEGTL_KEYWORD("texture")>, texture_layers_open, plus<texture_block>> {};
 struct declarable_block : sor<object_statement, light_source_block, camera_block, pigment_block,
-                              normal_block, finish_block, texture_block, colour_map_block, function_value> {};
+                              normal_block, finish_block, texture_block, interior_block, material_block,
+                              colour_map_block, function_value> {};
 // POV-Ray wants the ';' after a float, vector or colour, not after a string,
 // a block, an array or a macro's value (which may be a block). A string is told
 // by how it starts: a literal or a function whose value is a string.

@@ -39,6 +39,8 @@ ASOS_BODY_CONTEXT(camera_entry, Camera, "expected a camera item, as the macro is
 ASOS_BODY_CONTEXT(pigment_entry, Pigment, "expected a colour, a pattern, a transform or a pattern modifier, as the macro is called in a pigment")
 ASOS_BODY_CONTEXT(normal_entry, Normal, "expected a normal pattern, a transform or a pattern modifier, as the macro is called in a normal")
 ASOS_BODY_CONTEXT(finish_entry, Finish, "expected a finish item, as the macro is called in a finish")
+ASOS_BODY_CONTEXT(interior_entry, Interior, "expected an interior item, as the macro is called in an interior")
+ASOS_BODY_CONTEXT(material_entry, Material, "expected texture, interior or a transform, as the macro is called in a material")
 ASOS_BODY_CONTEXT(texture_entry, Texture, "expected pigment, normal, finish or a transform, as the macro is called in a texture")
 ASOS_BODY_CONTEXT(sky_sphere_entry, SkySphere, "expected pigment, emission or a transform, as the macro is called in a sky_sphere")
 ASOS_BODY_CONTEXT(fog_entry, Fog, "expected a fog item, as the macro is called in a fog")
@@ -159,6 +161,8 @@ template <> inline constexpr auto error_message<map_entry_close> = "expected ']'
 template <> inline constexpr auto error_message<colour_map_end> = "expected an entry '[value colour]' or '}' in the colour map";
 template <> inline constexpr auto error_message<reflection_value> = "expected a colour or a float after reflection";
 template <> inline constexpr auto error_message<normal_end> = "expected a normal pattern (bumps, dents, wrinkles, ripples, waves, or gradient, radial, onion, marble, wood, leopard, bozo, spotted, granite, agate), bump_size, accuracy, a transform, a pattern modifier or '}' in the normal";
+template <> inline constexpr auto error_message<interior_end> = "expected an interior item (ior, caustics, fade_distance, fade_power, fade_color) or '}'";
+template <> inline constexpr auto error_message<material_end> = "expected texture, interior, a transform or '}'";
 template <> inline constexpr auto error_message<finish_end> = "expected a finish item (ambient, diffuse, brilliance, phong, phong_size, specular, roughness, crand, reflection) or '}'";
 template <> inline constexpr auto error_message<texture_end> = "expected pigment, normal, finish, a transform or '}' in the texture";
 // objects

@@ -161,6 +161,24 @@ struct texture_entry
 struct texture_end : rbrace {};
 struct texture_block : if_must<kw_texture, block_open, entries<texture_entry>, texture_end> {};
 
+// --- interior { Name  ior F  caustics F  fade_distance F  fade_power F  fade_color C } ---
+struct ior_item : if_must<kw_ior, float_value> {};
+struct caustics_item : if_must<kw_caustics, float_value> {};
+struct interior_fade_distance_item : if_must<kw_fade_distance, float_value> {};
+struct interior_fade_power_item : if_must<kw_fade_power, float_value> {};
+struct fade_colour_item : if_must<sor<kw_fade_color, kw_fade_colour>, colour_value> {};
+struct interior_name : indexed_name {};  // a declared interior
+struct interior_entry : sor<ior_item, caustics_item, interior_fade_distance_item, interior_fade_power_item,
+                            fade_colour_item, interior_name, unsupported_item> {};
+struct interior_end : rbrace {};
+struct interior_block : if_must<kw_interior, block_open, entries<interior_entry>, interior_end> {};
+
+// --- material { Name  texture {…}  interior {…}  transforms } ---------------------
+struct material_name : indexed_name {};  // a declared material
+struct material_entry : sor<texture_block, interior_block, transform_item, material_name, unsupported_item> {};
+struct material_end : rbrace {};
+struct material_block : if_must<kw_material, block_open, entries<material_entry>, material_end> {};
+
 // --- what an object accepts ------------------------------------------------------
 struct open_item : kw_open {};  // cones and cylinders only; the interpreter checks
 struct no_shadow_item : kw_no_shadow {};
@@ -171,7 +189,8 @@ struct hollow_value : seq<at<sor<constant, ascii::digit, one<'(', '!'>>>, expres
 struct hollow_item : seq<kw_hollow, hollow_start, opt<hollow_value>> {};
 struct inverse_item : kw_inverse {};
 struct sturm_item : kw_sturm {};  // a torus only; the interpreter checks
-struct object_modifier : sor<pigment_block, normal_block, finish_block, texture_block, transform_item, no_shadow_item,
-                             open_item, hollow_item, inverse_item, sturm_item, asos_block, unsupported_item> {};
+struct object_modifier : sor<pigment_block, normal_block, finish_block, texture_block, interior_block, material_block,
+                             transform_item, no_shadow_item, open_item, hollow_item, inverse_item, sturm_item,
+                             asos_block, unsupported_item> {};
 
 }  // namespace asos::grammar

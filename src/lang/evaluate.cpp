@@ -94,6 +94,8 @@ std::string describe(const Value& v) {
         std::string operator()(const Poison&) const { return "an erroneous value"; }
         std::string operator()(const Unset&) const { return "an element without a value"; }
         std::string operator()(const std::shared_ptr<const FunctionValue>&) const { return "a function"; }
+        std::string operator()(const std::shared_ptr<const Interior>&) const { return "an interior"; }
+        std::string operator()(const std::shared_ptr<const MaterialValue>&) const { return "a material"; }
     };
     return std::visit(Visitor{}, v);
 }

@@ -64,6 +64,7 @@ struct ObjectTree {
     Transform worldFromObject;
     std::shared_ptr<const Light> light;      // Kind::Light (shared: changed by copying)
     std::shared_ptr<const Texture> texture;  // its own; null: inherited or the default
+    std::shared_ptr<const Interior> interior;  // its own; null: inherited or the default
     bool noShadow = false;
     bool modified = false;  // a union has had a modifier: no more children
     std::size_t leaves = 1;  // the shapes and lights it holds (a union's, all its children's)
@@ -99,6 +100,12 @@ struct FunctionValue {
     std::shared_ptr<const FunctionProgram> program;  // null: refused where used
     std::string refusal;                             // the message then
 };
+// A declared material: POV-Ray's texture and interior together.
+struct MaterialValue {
+    std::shared_ptr<const Texture> texture;    // null: none given
+    std::shared_ptr<const Interior> interior;  // null: none given
+};
+
 // A declared color_map.
 struct ColourMapValue {
     std::vector<ColourMapEntry> entries;
@@ -109,7 +116,8 @@ using Value = std::variant<Num, std::string, std::shared_ptr<const ObjectTree>,
                            std::shared_ptr<const Texture>, std::shared_ptr<const CameraValue>,
                            std::shared_ptr<ArrayValue>, std::shared_ptr<const MacroDef>,
                            std::shared_ptr<const ColourMapValue>, std::shared_ptr<const Normal>, Poison, Unset,
-                           std::shared_ptr<const FunctionValue>>;
+                           std::shared_ptr<const FunctionValue>, std::shared_ptr<const Interior>,
+                           std::shared_ptr<const MaterialValue>>;
 
 // A declared array: up to 5 dimensions, its elements all of one kind (the first
 // one given sets it, as in POV-Ray). Arrays are values: names share one until
@@ -274,6 +282,8 @@ public:
     ObjectTree evalObject(const Node& block);
     std::shared_ptr<const Pigment> evalPigment(const Node& block, const Pigment& start);
     std::shared_ptr<const Finish> evalFinish(const Node& block, const Finish& start);
+    std::shared_ptr<const Interior> evalInterior(const Node& block, const Interior& start);
+    std::shared_ptr<const MaterialValue> evalMaterial(const Node& block);
     std::shared_ptr<const ColourMapValue> evalColourMap(const Node& block);
     void applyMapModifier(const Node& n, Pigment& p);
     void setMapModifier(const Node& n, Pigment& p);
@@ -350,9 +360,10 @@ private:
     void checkMemory(const Node& at, std::size_t bytes, const char* what);
     // A CSG object (or an inverted union) as one Object per leaf.
     void placeCsg(ObjectTree& node, const std::shared_ptr<const Texture>& inherited, bool inheritedNoShadow,
-                  const AsosOptions& inheritedAsos);
+                  const AsosOptions& inheritedAsos, const std::shared_ptr<const Interior>& inheritedInterior);
     void flatten(ObjectTree& node, const std::shared_ptr<const Texture>& inherited,
-                 bool inheritedNoShadow, const AsosOptions& inheritedAsos);
+                 bool inheritedNoShadow, const AsosOptions& inheritedAsos,
+                 const std::shared_ptr<const Interior>& inheritedInterior);
     void applyObjectModifier(ObjectTree& tree, const Node& n, bool isShape);
 
     // meshes.cpp

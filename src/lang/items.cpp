@@ -146,6 +146,8 @@ Value Interpreter::evalDeclarable(const Node& n) {
     case Word::Finish: return evalFinish(n, defaultTexture_->finish);
     case Word::Normal: return evalNormal(n, defaultTexture_->normal);
     case Word::Texture: return evalTexture(n);
+    case Word::Interior: return evalInterior(n, Interior{});
+    case Word::Material: return evalMaterial(n);
     case Word::ColorMap: return evalColourMap(n);
     default: return std::make_shared<const ObjectTree>(evalObject(n));
     }
@@ -177,7 +179,7 @@ std::shared_ptr<const Texture> Interpreter::withTopLayerItem(const Texture& base
 void Interpreter::placeObject(ObjectTree&& tree, const Node& at) {
     checkObjects(at, objects_.size() + scene_.lights.size() + tree.leaves, "the scene");
     checkMemory(at, tree.leaves * sizeof(Object), "the scene's objects");
-    flatten(tree, nullptr, false, AsosOptions{});
+    flatten(tree, nullptr, false, AsosOptions{}, nullptr);
 }
 
 // Past a limit the run stops: going on would repeat the work that passed it
@@ -203,8 +205,10 @@ void Interpreter::checkMemory(const Node& at, std::size_t bytes, const char* wha
 
 // Consumes `node` (moves its parts into the scene).
 void Interpreter::flatten(ObjectTree& node, const std::shared_ptr<const Texture>& inherited,
-                          bool inheritedNoShadow, const AsosOptions& inheritedAsos) {
+                          bool inheritedNoShadow, const AsosOptions& inheritedAsos,
+                          const std::shared_ptr<const Interior>& inheritedInterior) {
     const std::shared_ptr<const Texture>& texture = node.texture ? node.texture : inherited;
+    const std::shared_ptr<const Interior>& interior = node.interior ? node.interior : inheritedInterior;
     const bool noShadow = inheritedNoShadow || node.noShadow;
     const AsosOptions asos = inherit(node.asos, inheritedAsos);
     switch (node.kind) {
@@ -215,6 +219,7 @@ void Interpreter::flatten(ObjectTree& node, const std::shared_ptr<const Texture>
             o.shape = std::move(shape);
             o.worldFromObject = node.worldFromObject;
             o.texture = interned;
+            o.interior = interior;
             o.noShadow = noShadow;
             o.asos = asos;
             o.loc = node.loc;
@@ -237,24 +242,26 @@ void Interpreter::flatten(ObjectTree& node, const std::shared_ptr<const Texture>
         // An inverted union is POV-Ray's intersection of its inverted
         // members: a CSG, as the others.
         if (node.op != CsgTree::Op::Union || node.inverse) {
-            placeCsg(node, texture, noShadow, asos);
+            placeCsg(node, texture, noShadow, asos, interior);
             return;
         }
-        for (ObjectTree& child : node.children) flatten(child, texture, noShadow, asos);
+        for (ObjectTree& child : node.children) flatten(child, texture, noShadow, asos, interior);
         return;
     }
 }
 
 void Interpreter::placeCsg(ObjectTree& root, const std::shared_ptr<const Texture>& inherited,
-                           bool inheritedNoShadow, const AsosOptions& inheritedAsos) {
+                           bool inheritedNoShadow, const AsosOptions& inheritedAsos,
+                           const std::shared_ptr<const Interior>& inheritedInterior) {
     // Filled in below, through this pointer, while the leaves' Objects
     // already share it.
     auto tree = std::make_shared<CsgTree>();
     // Adds `node` (and its members) to the tree; its leaves become Objects
     // in leaf order, its lights go to the scene.
     auto add = [&](auto& self, ObjectTree& node, const std::shared_ptr<const Texture>& outer, bool outerNoShadow,
-                   const AsosOptions& outerAsos) -> std::uint32_t {
+                   const AsosOptions& outerAsos, const std::shared_ptr<const Interior>& outerInterior) -> std::uint32_t {
         const std::shared_ptr<const Texture>& texture = node.texture ? node.texture : outer;
+        const std::shared_ptr<const Interior>& interior = node.interior ? node.interior : outerInterior;
         const bool noShadow = outerNoShadow || node.noShadow;
         const AsosOptions asos = inherit(node.asos, outerAsos);
         const auto index = static_cast<std::uint32_t>(tree->nodes.size());
@@ -267,6 +274,7 @@ void Interpreter::placeCsg(ObjectTree& root, const std::shared_ptr<const Texture
             Object& o = objects_.add();
             o.shape = CsgShape{tree, leaf};
             o.texture = texture ? textures_.intern(texture) : defaultTexture_;
+            o.interior = interior;
             o.noShadow = noShadow;
             o.asos = asos;
             o.loc = node.loc;
@@ -290,15 +298,15 @@ void Interpreter::placeCsg(ObjectTree& root, const std::shared_ptr<const Texture
         tree->nodes[index].op = node.op;
         for (ObjectTree& child : node.children) {
             if (child.kind == ObjectTree::Kind::Light) {
-                flatten(child, texture, noShadow, asos);
+                flatten(child, texture, noShadow, asos, interior);
                 continue;
             }
-            const std::uint32_t c = self(self, child, texture, noShadow, asos);
+            const std::uint32_t c = self(self, child, texture, noShadow, asos, interior);
             tree->nodes[index].children.push_back(c);
         }
         return index;
     };
-    add(add, root, inherited, inheritedNoShadow, inheritedAsos);
+    add(add, root, inherited, inheritedNoShadow, inheritedAsos, inheritedInterior);
 }
 
 // --- objects ----------------------------------------------------------------------------------
@@ -530,6 +538,28 @@ void Interpreter::applyObjectModifier(ObjectTree& tree, const Node& n, bool isSh
         // pigment {}, normal {} and finish {} change the texture the object
         // has (as POV-Ray's Parse_Object_Mods), or a copy of the default one.
         tree.texture = withTopLayerItem(tree.texture ? *tree.texture : *defaultTexture_, n);
+        return;
+    }
+    case Word::Interior:
+        if (isLight) fail(n, "a light_source has no interior");
+        tree.interior = evalInterior(n, tree.interior ? *tree.interior : Interior{});
+        return;
+    case Word::Material: {
+        // POV-Ray's: the material's texture and interior, each replacing the
+        // object's (a texture given on an object that has one goes over it,
+        // as a texture {} there does).
+        if (isLight) fail(n, "a light_source has no material");
+        const std::shared_ptr<const MaterialValue> material = evalMaterial(n);
+        if (material->texture) {
+            if (tree.texture) {
+                auto layered = std::make_shared<Texture>(*tree.texture);
+                layerOver(*layered, *material->texture);
+                tree.texture = std::move(layered);
+            } else {
+                tree.texture = material->texture;
+            }
+        }
+        if (material->interior) tree.interior = material->interior;
         return;
     }
     case Word::NoShadow:
@@ -865,6 +895,73 @@ std::shared_ptr<const Finish> Interpreter::evalFinish(const Node& block, const F
     };
     runEntries(block.children(), EntryHandler(entry));
     return f;
+}
+
+std::shared_ptr<const Interior> Interpreter::evalInterior(const Node& block, const Interior& start) {
+    auto in = std::make_shared<Interior>(start);
+    const auto finite = [&](const Node& n, const char* what) {
+        const double v = evalFloat(n);
+        if (!std::isfinite(v)) fail(n, std::string(what) + " must be a finite number, not " + formatNumber(v));
+        return v;
+    };
+    auto entry = [&](const Node& n) {
+        if (isReference(n)) {
+            const Value v = eval(n);
+            const auto* declared = std::get_if<std::shared_ptr<const Interior>>(&v);
+            if (!declared) fail(n, referenceText(n) + " is " + describe(v) + ", not an interior");
+            *in = **declared;
+            return;
+        }
+        switch (n.word) {
+        case Word::Ior: {
+            const double ior = evalFloat(n[0]);
+            if (!(ior > 0.0) || !std::isfinite(ior)) fail(n[0], "ior must be positive, not " + formatNumber(ior));
+            in->ior = ior;
+            break;
+        }
+        case Word::Caustics: in->caustics = finite(n[0], "caustics"); break;
+        case Word::FadeDistance: in->fadeDistance = finite(n[0], "fade_distance"); break;
+        case Word::FadePower: in->fadePower = finite(n[0], "fade_power"); break;
+        case Word::FadeColor: in->fadeColor = evalRgb(n[0], "fade_color"); break;
+        default: fail(n, "this is not an interior item");
+        }
+    };
+    runEntries(block.children(), EntryHandler(entry));
+    return in;
+}
+
+std::shared_ptr<const MaterialValue> Interpreter::evalMaterial(const Node& block) {
+    auto m = std::make_shared<MaterialValue>();
+    auto entry = [&](const Node& n) {
+        if (isReference(n)) {
+            const Value v = eval(n);
+            const auto* declared = std::get_if<std::shared_ptr<const MaterialValue>>(&v);
+            if (!declared) fail(n, referenceText(n) + " is " + describe(v) + ", not a material");
+            *m = **declared;
+        } else if (isTransform(n)) {
+            // POV-Ray's Parse_Material: the transform moves the texture (an
+            // interior has nothing to move).
+            if (m->texture) {
+                auto moved = std::make_shared<Texture>(*m->texture);
+                moveLayers(n, *moved, evalTransformItem(n));
+                m->texture = std::move(moved);
+            }
+        } else if (n.word == Word::Texture) {
+            std::shared_ptr<const Texture> texture = evalTexture(n);
+            if (m->texture) {
+                auto layered = std::make_shared<Texture>(*m->texture);
+                layerOver(*layered, *texture);
+                texture = std::move(layered);
+            }
+            m->texture = std::move(texture);
+        } else if (n.word == Word::Interior) {
+            m->interior = evalInterior(n, m->interior ? *m->interior : Interior{});
+        } else {
+            fail(n, "this is not a material item");
+        }
+    };
+    runEntries(block.children(), EntryHandler(entry));
+    return m;
 }
 
 std::shared_ptr<const Texture> Interpreter::evalTexture(const Node& block) {

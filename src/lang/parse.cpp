@@ -631,6 +631,8 @@ template <> struct action<g::pigment_block> : CloseBlock<Word::Pigment> {};
 template <> struct action<g::normal_block> : CloseBlock<Word::Normal> {};
 template <> struct action<g::finish_block> : CloseBlock<Word::Finish> {};
 template <> struct action<g::texture_block> : CloseBlock<Word::Texture> {};
+template <> struct action<g::interior_block> : CloseBlock<Word::Interior> {};
+template <> struct action<g::material_block> : CloseBlock<Word::Material> {};
 template <> struct action<g::asos_block> : CloseBlock<Word::Asos> {};
 template <> struct action<g::colour_map_block> : CloseBlock<Word::ColorMap> {};
 
@@ -675,6 +677,11 @@ template <> struct action<g::phong_size_item> : ItemAction<Word::PhongSize, 1> {
 template <> struct action<g::specular_item> : ItemAction<Word::Specular, 1> {};
 template <> struct action<g::roughness_item> : ItemAction<Word::Roughness, 1> {};
 template <> struct action<g::reflection_item> : ItemAction<Word::Reflection, 1> {};
+template <> struct action<g::ior_item> : ItemAction<Word::Ior, 1> {};
+template <> struct action<g::caustics_item> : ItemAction<Word::Caustics, 1> {};
+template <> struct action<g::interior_fade_distance_item> : ItemAction<Word::FadeDistance, 1> {};
+template <> struct action<g::interior_fade_power_item> : ItemAction<Word::FadePower, 1> {};
+template <> struct action<g::fade_colour_item> : ItemAction<Word::FadeColor, 1> {};
 template <> struct action<g::crand_item> : ItemAction<Word::Crand, 1> {};
 template <> struct action<g::emission_item> : ItemAction<Word::Emission, 1> {};
 template <> struct action<g::fog_type_item> : ItemAction<Word::FogType, 1> {};
@@ -1064,6 +1071,8 @@ std::optional<Ast> parseMacroBody(std::string_view fileText, TextSpan body, std:
     case BodyContext::Pigment: return parse(static_cast<g::pigment_entry*>(nullptr));
     case BodyContext::Normal: return parse(static_cast<g::normal_entry*>(nullptr));
     case BodyContext::Finish: return parse(static_cast<g::finish_entry*>(nullptr));
+    case BodyContext::Interior: return parse(static_cast<g::interior_entry*>(nullptr));
+    case BodyContext::Material: return parse(static_cast<g::material_entry*>(nullptr));
     case BodyContext::Texture: return parse(static_cast<g::texture_entry*>(nullptr));
     case BodyContext::GlobalSettings: return parse(static_cast<g::global_entry*>(nullptr));
     case BodyContext::Asos: return parse(static_cast<g::asos_entry*>(nullptr));

@@ -45,7 +45,8 @@ std::span<const LightSample> areaLightSamples(const Scene& scene, const SceneLig
     if (scene.anyTransparent() && !model.shadowless) {
         scratch.filtered.assign(samples.begin(), samples.end());
         for (LightSample& s : scratch.filtered)
-            s.color *= transparentShadowFilter(scene, query.point, query.point + s.direction * s.distance, counters);
+            s.color *= transparentShadowFilter(scene, query.point, query.point + s.direction * s.distance, counters,
+                                               query.inside ? *query.inside : InteriorList{});
         seen = scratch.filtered;
     }
     if (!query.diffuseOnly || seen.size() < 2) return seen;

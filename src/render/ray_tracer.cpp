@@ -18,6 +18,33 @@ Vec3 RayTracer::radiance(const std::optional<SurfaceHit>& hit, const Ray& ray, i
     return atmosphere_.fogged(shade(*hit, ray, depth, weight, counters, context), ray, hit->t);
 }
 
+Transmitted RayTracer::transmitted(const SurfaceHit& hit, const Ray& ray, int depth, const Vec3& topNormal,
+                                   double weight, RenderCounters& counters, const LightContext& context) const {
+    const Object& object = scene_.object(static_cast<std::uint32_t>(hit.objectIndex));
+    const Vec3 d = glm::normalize(ray.dir);
+    const Crossing crossing = cross(context.inside, object);
+    LightContext beyond = context.reflected(depth);
+    beyond.inside = crossing.beyond;
+    ++counters.reflectedRays;
+    Transmitted out;
+    if (std::fabs(crossing.iorRatio - 1.0) < 1e-10) {
+        // The same ior on both sides: the ray goes on, at the same level
+        // (POV-Ray's continued ray).
+        out.colour = radiance(Ray{hit.position, d}, depth, weight, counters, beyond);
+    } else if (const std::optional<Vec3> refracted = refractedDirection(d, topNormal, crossing.iorRatio)) {
+        out.colour = radiance(Ray{hit.position, *refracted}, depth + 1, weight, counters, beyond);
+    } else {
+        // Total internal reflection: the mirror ray stays inside.
+        const Vec3 mirror = mirrorDirection(d, topNormal, facingNormal(hit.normal, d));
+        out.colour = radiance(Ray{hit.position, mirror}, depth + 1, weight, counters, context.reflected(depth));
+        out.totalReflection = true;
+    }
+    // The fade of the inside the ray came through to this hit.
+    if (context.inside.contains(interiorKey(object)))
+        out.colour *= fadeThrough(interiorOf(object), hit.t * glm::length(ray.dir), true);
+    return out;
+}
+
 Vec3 RayTracer::shade(const SurfaceHit& hit, const Ray& ray, int depth, double weight,
                       RenderCounters& counters, const LightContext& context) const {
     // Without the caller's buffers, area lights use some of their own here
@@ -29,7 +56,7 @@ Vec3 RayTracer::shade(const SurfaceHit& hit, const Ray& ray, int depth, double w
         hit, ray, depth, weight,
         [&](const ShadingPoint& p) -> std::span<const LightSample> {
             if (!lights_[static_cast<std::size_t>(p.lightIndex)].isArea())
-                return plainLightSample(p, storage, counters);
+                return plainLightSample(p, storage, counters, local.inside);
             if (!local.scratch) local.scratch = &own.emplace();
             return areaLightSamples(p, local, counters);
         },
@@ -52,6 +79,7 @@ std::span<const LightSample> RayTracer::areaLightSamples(const ShadingPoint& poi
     q.rng = context.rng;
     q.key = context.key;
     q.footprint = context.footprint;
+    q.inside = &context.inside;
     // Diffuse only: every layer's finish (their samples are shared).
     const Texture& texture = textureOf(scene_.object(q.shadedObject));
     auto diffuseOnly = [](const Finish& f) {
@@ -73,17 +101,19 @@ bool RayTracer::shadowRayBlocked(const Vec3& point, const Vec3& lightPosition,
 }
 
 Vec3 RayTracer::shadowRayFilter(const Vec3& point, const Vec3& lightPosition,
-                                RenderCounters& counters) const {
+                                RenderCounters& counters, const InteriorList& inside) const {
     if (shadowRayBlocked(point, lightPosition, counters)) return Vec3(0.0);
-    return transparentShadowFilter(scene_, point, lightPosition, counters);
+    return transparentShadowFilter(scene_, point, lightPosition, counters, inside);
 }
 
 std::span<const LightSample> RayTracer::plainLightSample(const ShadingPoint& point,
                                                          LightSample& storage,
-                                                         RenderCounters& counters) const {
+                                                         RenderCounters& counters,
+                                                         const InteriorList& inside) const {
     const Light& light = *point.light;
     if (!facesLight(point.position, point.normal, light.position)) return {};
-    const Vec3 through = light.shadowless ? Vec3(1.0) : shadowRayFilter(point.position, light.position, counters);
+    const Vec3 through =
+        light.shadowless ? Vec3(1.0) : shadowRayFilter(point.position, light.position, counters, inside);
     if (through == Vec3(0.0)) return {};
     storage = pointLightSample(light.position, light.color * through, point.position);
     return {&storage, 1};

@@ -227,6 +227,9 @@ void warnTransparency(const SceneDescription& d, Diagnostics& diagnostics) {
         if (!csg) break;
     }
     if (!first) return;
+    if (!d.fogs.empty())
+        diagnostics.warning(first->loc, "asos applies fog along rays inside transparent objects too; POV-Ray "
+                                        "applies it only inside hollow ones");
     for (const Light& l : d.lights)
         if (l.area && !l.shadowless) {
             diagnostics.warning(first->loc,

@@ -187,6 +187,16 @@ void writeObject(Writer& w, const Shape& shape, const Transform& worldFromObject
         w.matrix(worldFromObject) << '\n';
     }
     writeTexture(w, o.texture ? *o.texture : Texture{});
+    if (o.interior && !(*o.interior == Interior{})) {
+        const Interior& in = *o.interior;
+        w << "  interior {\n    ior ";
+        w.num(in.ior) << '\n';
+        if (in.caustics != 0.0) (w << "    caustics ").num(in.caustics) << '\n';
+        if (in.fadeDistance != 0.0) (w << "    fade_distance ").num(in.fadeDistance) << '\n';
+        if (in.fadePower != 0.0) (w << "    fade_power ").num(in.fadePower) << '\n';
+        if (in.fadeColor != Vec3(0.0)) (w << "    fade_color ").rgb(in.fadeColor) << '\n';
+        w << "  }\n";
+    }
     if (o.noShadow) w << "  no_shadow\n";
     w.asos(o.asos, "  ");
     if (inverse) w << "  inverse\n";

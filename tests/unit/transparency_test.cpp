@@ -4,6 +4,7 @@
 
 #include "asos/lang/interpreter.hpp"
 #include "asos/render/renderer.hpp"
+#include "asos/render/interiors.hpp"
 #include "asos/render/shading.hpp"
 #include "render_scenes.hpp"
 
@@ -31,57 +32,51 @@ SurfaceHit paneHit() {
 }
 
 // What a pane shades to when `behind` is seen through it; `rays` counts the
-// transmitted rays, `seen` their direction.
-Vec3 shadePane(const Color& c, const Vec3& behind, int& rays, Vec3& seen, int depth = 1,
-               const ShadingSettings& s = {}) {
+// times what is behind is asked for.
+Vec3 shadePane(const Color& c, const Vec3& behind, int& rays, int depth = 1, const ShadingSettings& s = {}) {
     const Texture t = pane(c);
     const Ray ray{{0, 0, -1}, {0, 0, 1}};
     return shadeSurface(
         {paneHit(), t, ray, depth}, {}, s, [](const ShadingPoint&) { return std::span<const LightSample>(); },
         [](const Ray&, int, double) { return Vec3(0.0); },
-        [&](const Ray& r, int, double) {
+        [&](const Vec3&, double) {
             ++rays;
-            seen = r.dir;
-            return behind;
+            return Transmitted{behind, false};
         });
 }
 }  // namespace
 
 TEST_CASE("A pane of filter 1 in front of white shows its own colour", "[transparency]") {
     int rays = 0;
-    Vec3 dir(0.0);
     // rgbf <0.2, 0.5, 0.9, 1>: opacity 0, so no ambient of its own; white
     // behind, filtered by the colour.
-    const Vec3 c = shadePane({{0.2, 0.5, 0.9}, 1.0, 0.0}, Vec3(1.0), rays, dir);
+    const Vec3 c = shadePane({{0.2, 0.5, 0.9}, 1.0, 0.0}, Vec3(1.0), rays);
     CHECK(near(c, {0.2, 0.5, 0.9}));
     CHECK(rays == 1);
-    CHECK(near(dir, {0, 0, 1}));  // no interior: the ray goes on unbent
 }
 
 TEST_CASE("transmit t gives t x behind + (1 - t) x the surface's shading", "[transparency]") {
     int rays = 0;
-    Vec3 dir(0.0);
     const Vec3 surface{0.8, 0.4, 0.2};
     const Vec3 behind{0.1, 0.6, 1.0};
-    const Vec3 c = shadePane({surface, 0.0, 0.3}, behind, rays, dir);
+    const Vec3 c = shadePane({surface, 0.0, 0.3}, behind, rays);
     CHECK(near(c, 0.3 * behind + 0.7 * surface));
     // filter and transmit together: opacity 1 - f - t; behind x (f x colour + t).
-    const Vec3 both = shadePane({surface, 0.25, 0.5}, behind, rays, dir);
+    const Vec3 both = shadePane({surface, 0.25, 0.5}, behind, rays);
     CHECK(near(both, 0.25 * surface + behind * (0.25 * surface + Vec3(0.5))));
 }
 
 TEST_CASE("An opaque pane traces nothing behind it, and max_trace_level stops the ray", "[transparency]") {
     int rays = 0;
-    Vec3 dir(0.0);
-    CHECK(near(shadePane({Vec3(0.5), 0.0, 0.0}, Vec3(1.0), rays, dir), Vec3(0.5)));
+    CHECK(near(shadePane({Vec3(0.5), 0.0, 0.0}, Vec3(1.0), rays), Vec3(0.5)));
     CHECK(rays == 0);
     // At the last trace level, nothing behind (POV-Ray's TraceRay).
     ShadingSettings s;
     s.maxTraceLevel = 3;
-    CHECK(near(shadePane({Vec3(0.5), 0.0, 1.0}, Vec3(1.0), rays, dir, 3, s), Vec3(0.0)));
+    CHECK(near(shadePane({Vec3(0.5), 0.0, 1.0}, Vec3(1.0), rays, 3, s), Vec3(0.0)));
     CHECK(rays == 0);
     // Below adc_bailout: nothing traced.
-    CHECK(near(shadePane({Vec3(0.5), 0.0, 0.001}, Vec3(1.0), rays, dir), Vec3(0.999 * 0.5)));
+    CHECK(near(shadePane({Vec3(0.5), 0.0, 0.001}, Vec3(1.0), rays), Vec3(0.999 * 0.5)));
     CHECK(rays == 0);
 }
 
@@ -224,4 +219,59 @@ TEST_CASE("A merge of transparent objects renders as a union, with a warning", "
     CHECK(diagnostics.all()[0].severity == Severity::Warning);
     CHECK_THAT(diagnostics.all()[0].message, Catch::Contains("inner surfaces"));
     CHECK(diagnostics.all()[0].loc.line == 3);
+}
+
+TEST_CASE("Refraction follows Snell's law, with total internal reflection", "[transparency][refraction]") {
+    // Into glass (ratio 1/1.5) at 30 degrees from the normal.
+    const Vec3 n{0, 0, -1};
+    const double a = 30.0 * kPi / 180.0;
+    const Vec3 d{std::sin(a), 0, std::cos(a)};
+    const std::optional<Vec3> r = refractedDirection(d, n, 1.0 / 1.5);
+    REQUIRE(r);
+    CHECK(glm::length(*r) == Approx(1.0).epsilon(1e-12));
+    CHECK(r->x == Approx(std::sin(a) / 1.5).epsilon(1e-12));  // sin(t) = sin(i) / 1.5
+    CHECK(r->z > 0.0);
+    // At normal incidence nothing bends.
+    CHECK(near(*refractedDirection({0, 0, 1}, n, 1.0 / 1.5), {0, 0, 1}));
+    // Out of glass past the critical angle asin(1/1.5) = 41.8 degrees: none.
+    const double b = 45.0 * kPi / 180.0;
+    CHECK_FALSE(refractedDirection({std::sin(b), 0, std::cos(b)}, n, 1.5));
+    CHECK(refractedDirection({std::sin(0.7), 0, std::cos(0.7)}, n, 1.5));  // 40.1 degrees: out
+}
+
+TEST_CASE("The insides a ray is in, as POV-Ray keeps them", "[transparency][refraction]") {
+    Object glass, water, plain;
+    glass.interior = std::make_shared<const Interior>(Interior{1.5});
+    water.interior = std::make_shared<const Interior>(Interior{1.33});
+    Crossing c = cross({}, glass);  // entering glass from the air
+    CHECK(c.iorRatio == Approx(1.0 / 1.5));
+    const InteriorList inGlass = c.beyond;
+    c = cross(inGlass, water);  // entering water inside glass
+    CHECK(c.iorRatio == Approx(1.5 / 1.33));
+    c = cross(c.beyond, water);  // leaving the water, back into glass
+    CHECK(c.iorRatio == Approx(1.33 / 1.5));
+    c = cross(c.beyond, glass);  // leaving the glass into the air
+    CHECK(c.iorRatio == Approx(1.5));
+    CHECK(c.beyond.empty());
+    // Overlapping: (A (B A) B): leaving A while in B is a ratio of 1.
+    c = cross(cross(inGlass, water).beyond, glass);
+    CHECK(c.iorRatio == 1.0);
+    // An object without an interior: ior 1 both ways.
+    CHECK(cross({}, plain).iorRatio == 1.0);
+}
+
+TEST_CASE("An interior's fade at a known depth", "[transparency][refraction]") {
+    Interior in;
+    in.fadeDistance = 2.0;
+    in.fadePower = 2.0;
+    in.fadeColor = Vec3(0.5, 0.2, 0.0);
+    // 1 + (4 / 2)^2 = 5: colour + (1 - colour) / 5.
+    CHECK(near(fadeThrough(in, 4.0, true), Vec3(0.5 + 0.5 / 5, 0.2 + 0.8 / 5, 0.2), 1e-12));
+    in.fadePower = 1000.0;  // exponential
+    CHECK(near(fadeThrough(in, 4.0, true), Vec3(std::exp(-1.0), std::exp(-1.6), std::exp(-2.0)), 1e-12));
+    // Power 0: eye rays still fade (POV-Ray's ComputeLightedTexture), shadows do not.
+    in.fadePower = 0.0;
+    CHECK(near(fadeThrough(in, 4.0, true), Vec3(0.75, 0.6, 0.5), 1e-12));
+    CHECK(near(fadeThrough(in, 4.0, false), Vec3(1.0), 1e-12));
+    CHECK(near(fadeThrough(Interior{}, 4.0, true), Vec3(1.0), 1e-12));
 }

@@ -41,6 +41,8 @@ enum class BodyContext : std::uint8_t {
     Mesh2List,
     SkySphere,
     Fog,
+    Interior,
+    Material,
 };
 
 // Parses a scene file and hands each top-level entry (an item or a directive,

@@ -34,6 +34,8 @@ namespace asos::lang {
     /* object modifiers, pigments, finishes */                                                  \
     WORD(Open, "open") WORD(Pigment, "pigment") WORD(Finish, "finish") WORD(Texture, "texture")             \
     WORD(Translate, "translate") WORD(Rotate, "rotate") WORD(Scale, "scale") WORD(Matrix, "matrix")         \
+    WORD(Interior, "interior") WORD(Ior, "ior") WORD(Caustics, "caustics") WORD(FadeColor, "fade_color")    \
+    WORD(FadeColour, "fade_colour") WORD(Material, "material")                                     \
     WORD(NoShadow, "no_shadow") WORD(Asos, "asos") WORD(Eps, "eps") WORD(Highlights, "highlights")     \
     WORD(Emitter, "emitter") WORD(Povray, "povray") WORD(Panel, "panel") WORD(Checker, "checker")    \
     WORD(Brick, "brick") WORD(BrickSize, "brick_size") WORD(Mortar, "mortar")                          \

@@ -20,6 +20,7 @@
 #include <span>
 #include <vector>
 
+#include "asos/render/interiors.hpp"
 #include "asos/geometry/cone.hpp"
 #include "asos/lights/light_piece.hpp"
 #include "asos/render/cone_candidates.hpp"
@@ -129,6 +130,10 @@ struct LightContext {
     // The eye pyray's footprint on the surface (ASOS eye method), for
     // ShadowApex::Behind; null elsewhere (classic methods, reflections).
     const Footprint* footprint = nullptr;
+    // The interiors the ray is inside (render/interiors.hpp): none for an
+    // eye ray; a reflected ray keeps its parent's, a ray through a surface
+    // gets them as it crosses.
+    InteriorList inside;
 
     // The context of a ray reflected at trace level `depth`.
     LightContext reflected(int depth) const {
@@ -156,6 +161,9 @@ struct AreaLightQuery {
     // specular) and the light does not fade: then the samples may be summed
     // into one (mergeDiffuse), which lights the point exactly alike.
     bool diffuseOnly = false;
+    // The insides of the ray that found the point (LightContext::inside),
+    // where transparent objects' shadows start (transparentShadowFilter).
+    const InteriorList* inside = nullptr;
 };
 
 // The samples of an area light at a shaded point, by the lights' method

@@ -82,11 +82,17 @@ public:
                                 ++counters.reflectedRays;
                                 return radiance(mirror, d, w, counters, context.reflected(d));
                             },
-                            [&](const Ray& through, int d, double w) {
-                                ++counters.reflectedRays;  // counted with the mirror rays
-                                return radiance(through, d, w, counters, context.reflected(d));
+                            [&](const Vec3& topNormal, double w) {
+                                return transmitted(hit, ray, depth, topNormal, w, counters, context);
                             });
     }
+
+    // What shows through the transparent surface of `hit` (shadeSurface's
+    // traceTransmitted): the ray crosses the object's interior, goes on
+    // unbent, refracted or totally reflected, and is faded by the interior
+    // it came through (render/interiors.hpp). Counted with the reflected rays.
+    Transmitted transmitted(const SurfaceHit& hit, const Ray& ray, int depth, const Vec3& topNormal,
+                            double weight, RenderCounters& counters, const LightContext& context) const;
 
     // The samples of area light `point.lightIndex` at a shading point, by
     // the lights' method; they live in context.scratch (which must be set)
@@ -102,13 +108,15 @@ public:
     // plain shadow ray, per channel: 0 where an opaque object that casts
     // shadows blocks it, else what the transparent ones between let through
     // (transparentShadowFilter; POV-Ray's ComputeShadowColour).
-    Vec3 shadowRayFilter(const Vec3& point, const Vec3& lightPosition, RenderCounters& counters) const;
+    Vec3 shadowRayFilter(const Vec3& point, const Vec3& lightPosition, RenderCounters& counters,
+                         const InteriorList& inside = {}) const;
 
     // The sample of point light `light` at a shading point, through a plain
     // shadow ray: none when the light is behind the surface (it would light
-    // nothing) or blocked. `storage` holds the sample the span refers to.
+    // nothing) or blocked. `storage` holds the sample the span refers to;
+    // `inside`: the insides of the ray that found the point.
     std::span<const LightSample> plainLightSample(const ShadingPoint& point, LightSample& storage,
-                                                  RenderCounters& counters) const;
+                                                  RenderCounters& counters, const InteriorList& inside = {}) const;
 
 private:
     const Scene& scene_;

@@ -249,15 +249,18 @@ std::span<const ShadedLayer> shadedLayers(const Texture& texture, const Vec3& po
 //   finish reflects, depth <= max_trace_level and weight >= adc_bailout, as
 //   POV-Ray's TraceRay decides; otherwise the reflection is black.
 //
-// traceTransmitted(const Ray& ray, int depth, double weight) -> Vec3
-//   the colour behind a transparent surface: along the ray itself, from the
-//   hit on (the callee must skip the surface itself). Called, as POV-Ray's
-//   ComputeLightedTexture and TraceRay decide, when the layers let more than
-//   adc_bailout through (the greyscale of their product), depth <=
-//   max_trace_level and the weight (times the product's largest channel) is
-//   at least adc_bailout; the colour is filtered by the product. Without an
-//   interior's ior the ray goes on unbent (POV-Ray's ComputeRefraction with
-//   ior 1).
+// traceTransmitted(const Vec3& topNormal, double weight) -> Transmitted
+//   what shows through a transparent surface: called, as POV-Ray's
+//   ComputeLightedTexture and TraceRay decide, when every layer was seen and
+//   what they let through together, F, has a greyscale above adc_bailout,
+//   depth < max_trace_level and the weight (times F's largest channel) is at
+//   least adc_bailout. The callee crosses the object's interior at the hit
+//   (render/interiors.hpp): the ray goes on unbent at the same trace level,
+//   is refracted, or is reflected whole off `topNormal` (the top layer's,
+//   facing the ray) at the next level; the answer is faded by the interior
+//   the ray came through. It is added times F, or, after a total internal
+//   reflection, as it is, and then the layers whose normal is the top one's
+//   reflect nothing more (ComputeLightedTexture's tir_occured).
 //
 // A layered texture: each layer adds its ambient, diffuse and highlights, the
 // pigment's terms times its opacity, all times what the layers above let
@@ -267,6 +270,12 @@ std::span<const ShadedLayer> shadedLayers(const Texture& texture, const Vec3& po
 // are asked with the surface's (ShadingPoint::normal), so a light below the
 // surface's horizon lights no tilted normal (POV-Ray's would, on a surface
 // that does not shadow itself there, as a plane).
+// What shows through a transparent surface (shadeSurface's traceTransmitted).
+struct Transmitted {
+    Vec3 colour{0.0};
+    bool totalReflection = false;  // reflected whole: not filtered by the surface
+};
+
 template <class LightFn, class ReflectFn, class TransmitFn>
 Vec3 shadeSurface(const ShadeRequest& req, std::span<const Light> lights,
                   const ShadingSettings& settings, LightFn&& lightArriving,
@@ -300,11 +309,28 @@ Vec3 shadeSurface(const ShadeRequest& req, std::span<const Light> lights,
                 }
         }
     }
+    // Transmission (POV-Ray's ComputeLightedTexture after its layer loop):
+    // only where every layer was seen, the bottom one included.
+    bool totalReflection = false;
+    if (layers.size() == req.texture.above.size() + 1) {
+        const Vec3& filter = layers.back().after;
+        const double trans = std::min(1.0, std::fabs(povGreyscale(filter)));
+        const double weight =
+            req.weight * std::max(std::fabs(filter.x), std::max(std::fabs(filter.y), std::fabs(filter.z)));
+        if (trans > settings.adcBailout && req.depth < settings.maxTraceLevel && weight >= settings.adcBailout) {
+            const Transmitted t = traceTransmitted(layers.front().normal, weight);
+            totalReflection = t.totalReflection;
+            color += totalReflection ? t.colour : filter * t.colour;
+        }
+    }
     // Reflection (POV-Ray's ComputeReflectivity, ComputeReflection, and the
-    // trace-level and ADC tests at the top of TraceRay).
+    // trace-level and ADC tests at the top of TraceRay); after a total
+    // internal reflection, not where a layer's normal is the top one's.
     for (const ShadedLayer& l : layers) {
         const Vec3& reflection = l.finish->reflection;
         if (reflection == Vec3(0.0)) continue;
+        if (totalReflection && glm::all(glm::lessThanEqual(glm::abs(l.normal - layers.front().normal), Vec3(1e-10))))
+            continue;
         const double weight =
             req.weight * l.weight * std::max(reflection.x, std::max(reflection.y, reflection.z));
         if (req.depth < settings.maxTraceLevel && weight >= settings.adcBailout) {
@@ -312,25 +338,17 @@ Vec3 shadeSurface(const ShadeRequest& req, std::span<const Light> lights,
             color += reflection * Vec3(traceReflected(mirror, req.depth + 1, weight));
         }
     }
-    // Transmission (POV-Ray's ComputeLightedTexture after its layer loop):
-    // only where every layer was seen, the bottom one included.
-    if (layers.size() == req.texture.above.size() + 1) {
-        const Vec3& filter = layers.back().after;
-        const double trans = std::min(1.0, std::fabs(povGreyscale(filter)));
-        const double weight =
-            req.weight * std::max(std::fabs(filter.x), std::max(std::fabs(filter.y), std::fabs(filter.z)));
-        if (trans > settings.adcBailout && req.depth < settings.maxTraceLevel && weight >= settings.adcBailout)
-            color += filter * Vec3(traceTransmitted(Ray{req.hit.position, rayDir}, req.depth + 1, weight));
-    }
     return color;
 }
 
-// The same for a caller that traces reflected and transmitted rays alike.
+// The same for a caller with no transparent surfaces to show through (what
+// would show is black).
 template <class LightFn, class ReflectFn>
 Vec3 shadeSurface(const ShadeRequest& req, std::span<const Light> lights,
                   const ShadingSettings& settings, LightFn&& lightArriving,
-                  ReflectFn&& traceSecondary) {
-    return shadeSurface(req, lights, settings, lightArriving, traceSecondary, traceSecondary);
+                  ReflectFn&& traceReflected) {
+    return shadeSurface(req, lights, settings, lightArriving, traceReflected,
+                        [](const Vec3&, double) { return Transmitted{}; });
 }
 
 // What a surface with this texture lets through toward a light at a world

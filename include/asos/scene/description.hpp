@@ -288,6 +288,21 @@ inline const std::shared_ptr<const Texture>& defaultTexture() {
     return texture;
 }
 
+// POV-Ray's interior { ior caustics fade_distance fade_power fade_color }:
+// what the inside of a transparent object does to the rays through it
+// (docs/rendering.md, "Refraction"). Shared by the members of a CSG and the
+// copies of a declared object, as POV-Ray shares one: a ray that enters
+// through one member and leaves through another has left the same inside.
+// The defaults are POV-Ray's.
+struct Interior {
+    double ior = 1.0;           // the index of refraction (the air's is 1)
+    double caustics = 0.0;      // POV-Ray's faked caustics in the shadows it casts
+    double fadeDistance = 0.0;  // 0: no fade
+    double fadePower = 0.0;
+    Vec3 fadeColor{0.0};
+    bool operator==(const Interior&) const = default;
+};
+
 struct Object {
     Shape shape;
     Transform worldFromObject;
@@ -297,6 +312,8 @@ struct Object {
     // million spheres under 1 GiB.
     std::shared_ptr<const Texture> texture = defaultTexture();
     bool noShadow = false;
+    // Null: POV-Ray's default interior (Interior{}), the object's own.
+    std::shared_ptr<const Interior> interior;
     AsosOptions asos;
     SourceLoc loc;
 };

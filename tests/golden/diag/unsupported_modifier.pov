@@ -1,4 +1,4 @@
 sphere {
   0, 1
-  interior { ior 1.5 }
+  bounded_by { sphere { 0, 2 } }
 }
