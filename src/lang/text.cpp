@@ -73,13 +73,19 @@ void Interpreter::evalText(const Node& block, ObjectTree& t) {
     }
     std::filesystem::path found;
     std::error_code ec;
+    // As POV-Ray, a name without an extension is tried with ".ttf" too.
+    std::vector<std::filesystem::path> names{asked};
+    if (!asked.has_extension()) names.push_back(std::filesystem::path(name + ".ttf"));
     for (const auto& dir : folders) {
-        const std::filesystem::path candidate = dir.empty() ? asked : dir / asked;
-        if (std::filesystem::is_regular_file(candidate, ec)) {
-            found = std::filesystem::weakly_canonical(candidate, ec);
-            if (ec) found = candidate;
-            break;
+        for (const auto& n : names) {
+            const std::filesystem::path candidate = dir.empty() ? n : dir / n;
+            if (std::filesystem::is_regular_file(candidate, ec)) {
+                found = std::filesystem::weakly_canonical(candidate, ec);
+                if (ec) found = candidate;
+                break;
+            }
         }
+        if (!found.empty()) break;
     }
     if (found.empty()) {
         std::string where;
