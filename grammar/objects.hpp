@@ -69,6 +69,14 @@ struct torus_minor : seq<expression> {};
 struct torus_block : if_must<kw_torus, block_open, torus_major, opt_comma, torus_minor, arguments_end, object_body,
                              object_end> {};
 
+// text { ttf "font.ttf" "string" thickness, <offset> }
+struct text_font : seq<expression> {};
+struct text_string : seq<expression> {};
+struct text_thickness : seq<expression> {};
+struct text_offset : seq<expression> {};
+struct text_block : if_must<kw_text, block_open, kw_ttf, text_font, opt_comma, text_string, opt_comma,
+                            text_thickness, opt_comma, text_offset, arguments_end, object_body, object_end> {};
+
 // triangle { <a>, <b>, <c> }   smooth_triangle { <a>, <na>, <b>, <nb>, <c>, <nc> }
 struct triangle_corner : seq<expression> {};
 struct triangle_block : if_must<kw_triangle, block_open, triangle_corner, opt_comma, triangle_corner, opt_comma,
@@ -129,7 +137,7 @@ struct object_block : if_must<kw_object, block_open, object_base, arguments_end,
 
 struct object_statement : sor<sphere_block, box_block, cone_block, cylinder_block, disc_block,
                               polygon_block, plane_block, union_block, difference_block,
-                              intersection_block, merge_block, object_block, quadric_block, torus_block,
+                              intersection_block, merge_block, object_block, quadric_block, torus_block, text_block,
                               triangle_block, smooth_triangle_block, mesh_block, mesh2_block> {};
 
 // --- light_source { <position>, colour  modifiers… } --------------------------------

@@ -11,6 +11,7 @@
 #include <variant>
 #include <vector>
 
+#include "asos/scene/truetype_font.hpp"
 #include "asos/diag/format_number.hpp"
 #include "asos/lang/ast.hpp"
 #include "asos/lang/interpreter.hpp"
@@ -372,6 +373,8 @@ private:
     // A mesh or mesh2 block (its faces and modifiers) into `t`.
     void evalMesh(const Node& block, ObjectTree& t);
     void evalMesh2(const Node& block, ObjectTree& t);
+    // text { ttf … }: a union of its glyphs, each an ExtrusionShape (lang/text.cpp).
+    void evalText(const Node& block, ObjectTree& t);
     // `at`: the transform item, named when the result would not be finite.
     void applyTransform(ObjectTree& tree, const Transform& m, const Node& at);
     // compose(outer, inner), refused at `at` (the item that added `outer`)
@@ -404,6 +407,7 @@ private:
 
     std::deque<SourceFile> files_;  // every file read, kept for error lines and macros
     std::unordered_map<std::string, SourceFile*> filesByPath_;  // included files, by canonical path
+    std::unordered_map<std::string, std::shared_ptr<const TrueTypeFont>> fonts_;  // text's fonts, by path
     SourceFile* file_ = nullptr;    // the file being run
     const Ast* ast_ = nullptr;      // its tree (for string literals)
 

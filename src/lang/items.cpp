@@ -28,7 +28,7 @@ bool isObjectBlock(const Node& n) {
     case Word::Sphere: case Word::Box: case Word::Cone: case Word::Cylinder: case Word::Disc:
     case Word::Polygon: case Word::Plane: case Word::Union: case Word::Object:
     case Word::Difference: case Word::Intersection: case Word::Merge: case Word::LightSource:
-    case Word::Quadric: case Word::Torus: case Word::Triangle: case Word::SmoothTriangle: case Word::Mesh:
+    case Word::Quadric: case Word::Torus: case Word::Text: case Word::Triangle: case Word::SmoothTriangle: case Word::Mesh:
     case Word::Mesh2:
         return true;
     default:
@@ -380,6 +380,9 @@ ObjectTree Interpreter::evalObject(const Node& block) {
     case Word::Torus:
         t.shape = TorusShape{evalFloat(args[0]), evalFloat(args[1]), false};
         checkShape();
+        break;
+    case Word::Text:
+        evalText(block, t);
         break;
     case Word::Triangle: case Word::SmoothTriangle: {
         auto mesh = std::make_shared<TriangleMesh>();

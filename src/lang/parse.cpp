@@ -608,6 +608,7 @@ template <> struct action<g::polygon_block> : CloseBlock<Word::Polygon> {};
 template <> struct action<g::plane_block> : CloseBlock<Word::Plane> {};
 template <> struct action<g::quadric_block> : CloseBlock<Word::Quadric> {};
 template <> struct action<g::torus_block> : CloseBlock<Word::Torus> {};
+template <> struct action<g::text_block> : CloseBlock<Word::Text> {};
 template <> struct action<g::triangle_block> : CloseBlock<Word::Triangle> {};
 template <> struct action<g::smooth_triangle_block> : CloseBlock<Word::SmoothTriangle> {};
 template <> struct action<g::mesh_block> : CloseBlock<Word::Mesh> {};

@@ -156,6 +156,45 @@ void writeShape(Writer& w, const Shape& shape) {
             w.num(t.minor) << '\n';
             if (t.sturm) w << "  sturm\n";
         }
+        // As a prism of cubic pieces (a line's or a quadratic's raised to
+        // degree 3 exactly); a text's glyph is such a prism under its
+        // transform.
+        void operator()(const ExtrusionShape& e) const {
+            std::size_t count = 0;
+            for (const OutlineContour& c : *e.outline) count += 4 * c.pieces.size();
+            w << "prism {\n  bezier_spline ";
+            w.num(e.y0) << ", ";
+            w.num(e.y1) << ", " << static_cast<int>(count) << '\n';
+            for (const OutlineContour& c : *e.outline) {
+                for (const OutlinePiece& p : c.pieces) {
+                    double x[4], z[4];
+                    const auto at = [&](int i, int k) { return p.p[static_cast<std::size_t>(2 * i + k)]; };
+                    for (int k = 0; k < 2; ++k) {
+                        double* out = k == 0 ? x : z;
+                        if (p.degree == 1) {
+                            out[0] = at(0, k);
+                            out[1] = at(0, k) + (at(1, k) - at(0, k)) / 3.0;
+                            out[2] = at(1, k) + (at(0, k) - at(1, k)) / 3.0;
+                            out[3] = at(1, k);
+                        } else if (p.degree == 2) {
+                            out[0] = at(0, k);
+                            out[1] = at(0, k) + 2.0 * (at(1, k) - at(0, k)) / 3.0;
+                            out[2] = at(2, k) + 2.0 * (at(1, k) - at(2, k)) / 3.0;
+                            out[3] = at(2, k);
+                        } else {
+                            for (int i = 0; i < 4; ++i) out[i] = at(i, k);
+                        }
+                    }
+                    w << " ";
+                    for (int i = 0; i < 4; ++i) {
+                        w << " <";
+                        w.num(x[i]) << ", ";
+                        w.num(z[i]) << ">";
+                    }
+                    w << '\n';
+                }
+            }
+        }
         // A mesh's face as the triangle it is (a mesh is written face by face).
         void operator()(const TriangleShape& t) const {
             const TriangleMesh& mesh = *t.mesh;

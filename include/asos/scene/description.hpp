@@ -139,6 +139,22 @@ struct TriangleShape {
     std::uint32_t face = 0;
 };
 
+// A closed outline swept along y (POV-Ray's prism, and each glyph of its
+// text): closed contours of Bezier pieces in the plane (x, z), each piece of
+// degree 1 (a line), 2 or 3 with its degree + 1 control points, between the
+// planes y = y0 and y = y1 (y0 < y1). Its inside is the even-odd rule's
+// (shapes/extrusion.hpp). `keyword` names it ("prism", "text").
+struct OutlinePiece {
+    int degree = 1;
+    std::array<double, 8> p{};  // x0, z0, x1, z1, ... (degree + 1 points)
+};
+struct OutlineContour { std::vector<OutlinePiece> pieces; };
+struct ExtrusionShape {
+    std::shared_ptr<const std::vector<OutlineContour>> outline;
+    double y0 = 0.0, y1 = 1.0;
+    const char* keyword = "prism";
+};
+
 struct CsgTree;
 // One leaf of a CSG object (POV-Ray's difference, intersection, merge, or a
 // union inside one of those): the part of the leaf's surface that bounds the
@@ -152,7 +168,8 @@ struct CsgShape {
 };
 
 using Shape = std::variant<SphereShape, BoxShape, ConeShape, CylinderShape, DiscShape,
-                           PolygonShape, PlaneShape, QuadricShape, CsgShape, TorusShape, TriangleShape>;
+                           PolygonShape, PlaneShape, QuadricShape, CsgShape, TorusShape, TriangleShape,
+                           ExtrusionShape>;
 
 // A CSG object as written: nodes (node 0 the root), each an operation over
 // its children or a leaf shape; `inverse` as POV-Ray's (toggled by each

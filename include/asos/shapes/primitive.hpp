@@ -23,6 +23,7 @@
 #include "asos/shapes/cylinder.hpp"
 #include "asos/shapes/disc.hpp"
 #include "asos/shapes/elliptic_disc.hpp"
+#include "asos/shapes/extrusion.hpp"
 #include "asos/shapes/holding_planes.hpp"
 #include "asos/shapes/local_cone.hpp"
 #include "asos/shapes/local_frame.hpp"
@@ -167,7 +168,7 @@ private:
     // (an alternative of Shape, answering ShapeRecord) becomes one of them.
     using LocalShape =
         std::variant<Sphere, Box, TruncatedCone, Cylinder, Disc, Polygon, Plane, EllipticDisc,
-                     Quadric, Torus, SmoothTriangle>;
+                     Quadric, Torus, SmoothTriangle, Extrusion>;
     static_assert(kEveryAlternativePrimitiveShape<LocalShape>,
                   "every local shape answers PrimitiveShape (primitive_shape.hpp)");
 
