@@ -40,7 +40,7 @@ ASOS_BODY_CONTEXT(pigment_entry, Pigment, "expected a colour, a pattern, a trans
 ASOS_BODY_CONTEXT(normal_entry, Normal, "expected a normal pattern, a transform or a pattern modifier, as the macro is called in a normal")
 ASOS_BODY_CONTEXT(finish_entry, Finish, "expected a finish item, as the macro is called in a finish")
 ASOS_BODY_CONTEXT(texture_entry, Texture, "expected pigment, normal, finish or a transform, as the macro is called in a texture")
-ASOS_BODY_CONTEXT(sky_sphere_entry, SkySphere, "expected pigment, emission or a transform, as the macro is called in a sky_sphere")
+ASOS_BODY_CONTEXT(sky_sphere_entry, SkySphere, "expected a declared sky_sphere, pigment, emission or a transform, as the macro is called in a sky_sphere")
 ASOS_BODY_CONTEXT(fog_entry, Fog, "expected a fog item, as the macro is called in a fog")
 ASOS_BODY_CONTEXT(global_entry, GlobalSettings, "expected a global setting, as the macro is called in global_settings")
 ASOS_BODY_CONTEXT(asos_entry, Asos, "expected eps, max, jitter or highlights, as the macro is called in an asos block")
@@ -224,7 +224,6 @@ template <> inline constexpr auto rejection_message<cylinder_light> = "'cylinder
 template <> inline constexpr auto rejection_message<cylinder_camera> = "the 'cylinder' camera is not supported by asos";
 template <> inline constexpr auto rejection_message<camera_normal> = "'normal' in a camera is not supported by asos";
 template <> inline constexpr auto rejection_message<texture_pattern> = "texture patterns ('{}' of textures) are not supported by asos; use {} in the pigment";
-template <> inline constexpr auto rejection_message<declared_atmosphere> = "'{}' as a declared value is not supported by asos (write the {} in the scene)";
 template <> inline constexpr auto rejection_message<finish_emission> = "'{}' in a finish is not supported by asos";
 template <> inline constexpr auto rejection_message<normal_block_pattern> = "'{}' in a normal (a pattern of normals) is not supported by asos";
 template <> inline constexpr auto rejection_message<reflection_block> = "'reflection { … }' is not supported by asos; write reflection followed by a colour or a float";

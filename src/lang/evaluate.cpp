@@ -94,6 +94,8 @@ std::string describe(const Value& v) {
         std::string operator()(const Poison&) const { return "an erroneous value"; }
         std::string operator()(const Unset&) const { return "an element without a value"; }
         std::string operator()(const std::shared_ptr<const FunctionValue>&) const { return "a function"; }
+        std::string operator()(const std::shared_ptr<const SkySphere>&) const { return "a sky_sphere"; }
+        std::string operator()(const std::shared_ptr<const Fog>&) const { return "a fog"; }
     };
     return std::visit(Visitor{}, v);
 }
