@@ -22,6 +22,8 @@ struct texture_block;
 struct interior_block;
 struct material_block;
 struct colour_map_block;
+struct sky_sphere_block;
+struct fog_block;
 struct block_open;
 struct unsupported_item;
 
@@ -105,7 +107,7 @@ struct texture_layers_open : success {};
 struct layered_texture : seq<at<TAO_PEGTL_KEYWORD("texture")>, texture_layers_open, plus<texture_block>> {};
 struct declarable_block : sor<object_statement, light_source_block, camera_block, pigment_block,
                               normal_block, finish_block, texture_block, interior_block, material_block,
-                              colour_map_block, function_value> {};
+                              colour_map_block, function_value, sky_sphere_block, fog_block> {};
 // POV-Ray wants the ';' after a float, vector or colour, not after a string,
 // a block, an array or a macro's value (which may be a block). A string is told
 // by how it starts: a literal or a function whose value is a string.
@@ -119,10 +121,8 @@ struct string_start
 struct macro_value : seq<lone_macro_call, macro_call> {};
 struct lone_name : seq<at<indexed_name, not_at<sor<expression_continues, one<'('>>>>, indexed_name> {};
 struct missing_semicolon : success {};
-// A declared sky_sphere or fog: not ours (a scene's own are).
-struct declared_atmosphere : sor<kw_sky_sphere, kw_fog> {};
 struct declared_value
-    : sor<declared_atmosphere, seq<declarable_block, opt<layered_texture>, opt<semicolon>>, seq<array_value, opt<semicolon>>,
+    : sor<seq<declarable_block, opt<layered_texture>, opt<semicolon>>, seq<array_value, opt<semicolon>>,
           seq<sor<macro_value, lone_name>, sor<semicolon, missing_semicolon>>,
           seq<at<string_start>, expression, opt<semicolon>>, seq<expression, declare_semicolon>> {};
 struct declare_directive : if_must<declare_start, declared_target, declare_equals, declared_value> {};

@@ -42,7 +42,7 @@ ASOS_BODY_CONTEXT(finish_entry, Finish, "expected a finish item, as the macro is
 ASOS_BODY_CONTEXT(interior_entry, Interior, "expected an interior item, as the macro is called in an interior")
 ASOS_BODY_CONTEXT(material_entry, Material, "expected texture, interior or a transform, as the macro is called in a material")
 ASOS_BODY_CONTEXT(texture_entry, Texture, "expected pigment, normal, finish or a transform, as the macro is called in a texture")
-ASOS_BODY_CONTEXT(sky_sphere_entry, SkySphere, "expected pigment, emission or a transform, as the macro is called in a sky_sphere")
+ASOS_BODY_CONTEXT(sky_sphere_entry, SkySphere, "expected a declared sky_sphere, pigment, emission or a transform, as the macro is called in a sky_sphere")
 ASOS_BODY_CONTEXT(fog_entry, Fog, "expected a fog item, as the macro is called in a fog")
 ASOS_BODY_CONTEXT(global_entry, GlobalSettings, "expected a global setting, as the macro is called in global_settings")
 ASOS_BODY_CONTEXT(asos_entry, Asos, "expected eps, max, jitter or highlights, as the macro is called in an asos block")
@@ -233,7 +233,6 @@ template <> inline constexpr auto rejection_message<cylinder_light> = "'cylinder
 template <> inline constexpr auto rejection_message<cylinder_camera> = "the 'cylinder' camera is not supported by asos";
 template <> inline constexpr auto rejection_message<camera_normal> = "'normal' in a camera is not supported by asos";
 template <> inline constexpr auto rejection_message<texture_pattern> = "texture patterns ('{}' of textures) are not supported by asos; use {} in the pigment";
-template <> inline constexpr auto rejection_message<declared_atmosphere> = "'{}' as a declared value is not supported by asos (write the {} in the scene)";
 template <> inline constexpr auto rejection_message<finish_emission> = "'{}' in a finish is not supported by asos";
 template <> inline constexpr auto rejection_message<normal_block_pattern> = "'{}' in a normal (a pattern of normals) is not supported by asos";
 template <> inline constexpr auto rejection_message<reflection_block> = "'reflection { … }' is not supported by asos; write reflection followed by a colour or a float";

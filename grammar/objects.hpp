@@ -206,14 +206,16 @@ struct background_block
 
 // --- sky_sphere { pigment {…} … emission C transforms } --------------------------
 struct emission_item : if_must<kw_emission, colour_value> {};
-struct sky_sphere_entry : sor<pigment_block, emission_item, transform_item, unsupported_item> {};
+struct sky_sphere_name : indexed_name {};  // a declared sky_sphere, first in the block
+struct sky_sphere_entry : sor<pigment_block, emission_item, transform_item, unsupported_item, sky_sphere_name> {};
 struct sky_sphere_end : rbrace {};
 struct sky_sphere_block : if_must<kw_sky_sphere, block_open, entries<sky_sphere_entry>, sky_sphere_end> {};
 
 // --- fog { fog_type N distance D colour C fog_offset F fog_alt F up V
 //           turbulence V octaves N omega F lambda F turb_depth F transforms } ----
 // A bare colour is the fog's colour; a bare float its distance (POV-Ray
-// warns "Should use distance keyword").
+// warns "Should use distance keyword"); a declared fog, first, is the one
+// this starts from (the interpreter tells them apart by value).
 struct fog_type_item : if_must<kw_fog_type, float_value> {};
 struct distance_item : if_must<kw_distance, float_value> {};
 struct fog_offset_item : if_must<kw_fog_offset, float_value> {};

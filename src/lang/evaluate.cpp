@@ -96,6 +96,8 @@ std::string describe(const Value& v) {
         std::string operator()(const std::shared_ptr<const FunctionValue>&) const { return "a function"; }
         std::string operator()(const std::shared_ptr<const Interior>&) const { return "an interior"; }
         std::string operator()(const std::shared_ptr<const MaterialValue>&) const { return "a material"; }
+        std::string operator()(const std::shared_ptr<const SkySphere>&) const { return "a sky_sphere"; }
+        std::string operator()(const std::shared_ptr<const Fog>&) const { return "a fog"; }
     };
     return std::visit(Visitor{}, v);
 }

@@ -118,7 +118,8 @@ using Value = std::variant<Num, std::string, std::shared_ptr<const ObjectTree>,
                            std::shared_ptr<ArrayValue>, std::shared_ptr<const MacroDef>,
                            std::shared_ptr<const ColourMapValue>, std::shared_ptr<const Normal>, Poison, Unset,
                            std::shared_ptr<const FunctionValue>, std::shared_ptr<const Interior>,
-                           std::shared_ptr<const MaterialValue>>;
+                           std::shared_ptr<const MaterialValue>, std::shared_ptr<const SkySphere>,
+                           std::shared_ptr<const Fog>>;
 
 // A declared array: up to 5 dimensions, its elements all of one kind (the first
 // one given sets it, as in POV-Ray). Arrays are values: names share one until

@@ -149,6 +149,8 @@ Value Interpreter::evalDeclarable(const Node& n) {
     case Word::Interior: return evalInterior(n, Interior{});
     case Word::Material: return evalMaterial(n);
     case Word::ColorMap: return evalColourMap(n);
+    case Word::SkySphere: return std::make_shared<const SkySphere>(evalSkySphere(n));
+    case Word::Fog: return std::make_shared<const Fog>(evalFog(n));
     default: return std::make_shared<const ObjectTree>(evalObject(n));
     }
 }
@@ -1219,14 +1221,24 @@ void Interpreter::applyGlobalSettings(const Node& block) {
 
 // --- sky_sphere and fog ----------------------------------------------------------------------
 
-// POV-Ray's Parse_Skysphere: pigments (each in POV-Ray's default pigment),
-// emission and transforms in any order; the transforms move the sphere, not
-// the pigments written after them.
+// POV-Ray's Parse_Skysphere: a declared sky_sphere first (its pigments,
+// emission and transform the start), then pigments (each in POV-Ray's
+// default pigment, added after the declared one's), emission and transforms
+// in any order; the transforms move the sphere, not the pigments written
+// after them.
 SkySphere Interpreter::evalSkySphere(const Node& block) {
     SkySphere sky;
-    sky.loc = locOf(block);
+    bool first = true;
     auto entry = [&](const Node& n) {
-        if (isTransform(n)) {
+        const bool declaredOk = first;
+        first = false;
+        if (n.kind != NodeKind::Block && n.kind != NodeKind::Item) {
+            const Value v = eval(n);
+            const auto* declared = std::get_if<std::shared_ptr<const SkySphere>>(&v);
+            if (!declared) fail(n, referenceText(n) + " is " + describe(v) + ", not a sky_sphere");
+            if (!declaredOk) fail(n, "a declared sky_sphere must come first in the sky_sphere");
+            sky = **declared;
+        } else if (isTransform(n)) {
             sky.worldFromSky = composeAt(n, evalTransformItem(n), sky.worldFromSky);
         } else if (n.kind == NodeKind::Block && n.word == Word::Pigment) {
             sky.pigments.push_back(*evalPigment(n, defaultTexture_->pigment));
@@ -1237,17 +1249,20 @@ SkySphere Interpreter::evalSkySphere(const Node& block) {
         }
     };
     runEntries(block.children(), EntryHandler(entry));
+    sky.loc = locOf(block);
     if (sky.pigments.empty()) fail(block, "a sky_sphere needs at least one pigment (POV-Ray: empty sky_sphere statement)");
     return sky;
 }
 
-// POV-Ray's Parse_Fog: its items in any order; rotate, scale and matrix turn
-// its up vector, translate is ignored with POV-Ray's warning; up is made
-// unit at the end.
+// POV-Ray's Parse_Fog: a declared fog first (the start), then its items in
+// any order; rotate, scale and matrix turn its up vector, translate is
+// ignored with POV-Ray's warning; up is made unit at the end.
 Fog Interpreter::evalFog(const Node& block) {
     Fog fog;
-    fog.loc = locOf(block);
+    bool first = true;
     auto entry = [&](const Node& n) {
+        const bool declaredOk = first;
+        first = false;
         if (isTransform(n)) {
             if (n.word == Word::Translate) {
                 evalVector(n[0]);
@@ -1258,13 +1273,22 @@ Fog Interpreter::evalFog(const Node& block) {
             return;
         }
         if (n.kind != NodeKind::Item) {
-            // A bare colour is the fog's colour, a bare float its distance.
-            const Num v = evalNum(n);
+            // A declared fog, or a bare colour (the fog's colour) or float
+            // (its distance).
+            const Value value = eval(n);
+            if (const auto* declared = std::get_if<std::shared_ptr<const Fog>>(&value)) {
+                if (!declaredOk) fail(n, "a declared fog must come first in the fog");
+                fog = **declared;
+                return;
+            }
+            const auto* num = std::get_if<Num>(&value);
+            if (!num) fail(n, "expected a colour, a float or a declared fog, found " + describe(value));
+            const Num& v = *num;
             if (v.dim == 1) {
                 report(Severity::Warning, n, "should use the distance keyword (as POV-Ray warns)");
                 fog.distance = v.v[0];
             } else {
-                fog.color = evalColour(n);
+                fog.color = toColour(v, n);
             }
             return;
         }
@@ -1300,6 +1324,7 @@ Fog Interpreter::evalFog(const Node& block) {
         }
     };
     runEntries(block.children(), EntryHandler(entry));
+    fog.loc = locOf(block);
     const double length = glm::length(fog.up);
     if (!(length > 0.0)) fail(block, "the fog's up vector is <0, 0, 0>");
     fog.up /= length;

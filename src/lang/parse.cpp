@@ -306,7 +306,6 @@ template <> struct action<g::texture_pattern> : Reject<g::texture_pattern> {};
 template <> struct action<g::reflection_block> : Reject<g::reflection_block> {};
 template <> struct action<g::normal_block_pattern> : Reject<g::normal_block_pattern> {};
 template <> struct action<g::finish_emission> : Reject<g::finish_emission> {};
-template <> struct action<g::declared_atmosphere> : Reject<g::declared_atmosphere> {};
 template <>
 struct action<g::texture_layers_open> {
     static void apply0(Builder& b) { b.openAroundLast(); }

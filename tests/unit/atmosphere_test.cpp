@@ -196,10 +196,51 @@ TEST_CASE("The language reads sky_sphere and fog as POV-Ray does", "[atmosphere]
     CHECK_THAT(test::run("fog { 3 }").errors(), StartsWith("1:7: should use the distance keyword (as POV-Ray warns)\n0:0:"));
     CHECK(test::run("sphere { 0, 1 finish { emission 1 } }").errors() ==
           "1:24: 'emission' in a finish is not supported by asos\n");
-    CHECK(test::run("#declare S = sky_sphere { pigment { rgb 1 } }").errors() ==
-          "1:14: 'sky_sphere' as a declared value is not supported by asos (write the sky_sphere in the scene)\n");
-    CHECK(test::run("#declare F = fog { distance 3 }").errors() ==
-          "1:14: 'fog' as a declared value is not supported by asos (write the fog in the scene)\n");
     CHECK(test::run("rainbow { angle 42 }").errors() == "1:1: 'rainbow' is not supported by asos\n");
     CHECK(test::run("fog { distance 3 media { } }").errors() == "1:18: 'media' is not supported by asos\n");
+}
+
+TEST_CASE("A declared sky_sphere or fog starts the one that names it, as POV-Ray", "[atmosphere][lang]") {
+    // POV-Ray's Parse_Skysphere: the declared one's pigments, emission and
+    // transform, then the block's pigments added after them and its
+    // transforms composed onto the declared one's.
+    const auto sky = test::run(R"(
+        #declare S = sky_sphere { pigment { rgb 1 } emission rgb 0.5 rotate 90 * z }
+        sky_sphere { S pigment { gradient y } scale 2 })");
+    const SceneDescription& s = test::ok(sky);
+    REQUIRE(s.skySphere);
+    REQUIRE(s.skySphere->pigments.size() == 2);
+    CHECK(s.skySphere->pigments[0].kind == Pigment::Kind::Solid);
+    CHECK(s.skySphere->pigments[1].kind == Pigment::Kind::Gradient);
+    CHECK(s.skySphere->emission == Vec3(0.5));
+    requireNear(s.skySphere->worldFromSky.point(Vec3(1.0, 0.0, 0.0)), Vec3(0.0, 2.0, 0.0), 1e-12);
+    CHECK(s.skySphere->loc.line == 3);
+
+    // Alone, the declared sky_sphere is the scene's as written.
+    const auto alone = test::run("#declare S = sky_sphere { pigment { rgb <1, 0, 0> } }\nsky_sphere { S }");
+    REQUIRE(test::ok(alone).skySphere->pigments.size() == 1);
+    CHECK(test::ok(alone).skySphere->pigments[0].color1.rgb == Vec3(1.0, 0.0, 0.0));
+
+    // A declared fog: its items, then the block's over them.
+    const auto fog = test::run(R"(
+        #local F = fog { fog_type 2 distance 3 fog_alt 0.5 rgb <0.2, 0.3, 0.4> }
+        fog { F fog_offset 1 distance 5 })");
+    const SceneDescription& f = test::ok(fog);
+    REQUIRE(f.fogs.size() == 1);
+    CHECK(f.fogs[0].type == 2);
+    CHECK(f.fogs[0].distance == 5.0);
+    CHECK(f.fogs[0].alt == 0.5);
+    CHECK(f.fogs[0].offset == 1.0);
+    CHECK(f.fogs[0].color.rgb == Vec3(0.2, 0.3, 0.4));
+
+    CHECK(test::run("#declare S = sky_sphere { pigment { rgb 1 } }\nsky_sphere { pigment { rgb 0 } S }").errors() ==
+          "2:32: a declared sky_sphere must come first in the sky_sphere\n");
+    CHECK(test::run("#declare P = pigment { rgb 1 }\nsky_sphere { P pigment { rgb 0 } }").errors() ==
+          "2:14: 'P' is a pigment, not a sky_sphere\n");
+    CHECK(test::run("#declare F = fog { distance 3 }\nfog { distance 2 F }").errors() ==
+          "2:18: a declared fog must come first in the fog\n");
+    CHECK(test::run("#declare S = sky_sphere { pigment { rgb 1 } }\nfog { S }").errors() ==
+          "2:7: expected a colour, a float or a declared fog, found a sky_sphere\n");
+    CHECK(test::run("#declare S = sky_sphere { pigment { rgb 1 } }\nsphere { 0, 1 pigment { S } }").errors() ==
+          "2:25: expected a colour or a pigment, found a sky_sphere\n");
 }
