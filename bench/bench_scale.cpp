@@ -52,6 +52,7 @@ struct ScaleArgs {
     int width = 160, height = 120;
     bool quick = false;
     bool gnuplot = true;
+    std::string ladder;  // only this ladder (objects, mesh, pixels); empty: all
 };
 
 // One method's settings: the defaults of each, one thread.
@@ -296,13 +297,14 @@ int runScale(const ScaleArgs& args) {
                      r.ok ? (number(r.renderSeconds, "%.3f") + " s, " + number(r.peakMiB, "%.0f") + " MiB").c_str()
                           : "failed");
     };
+    const auto wanted = [&](const std::string& ladder) { return args.ladder.empty() || args.ladder == ladder; };
     for (const char* ladder : {"objects", "mesh"})
-        for (std::size_t n : sizes)
+        for (std::size_t n : wanted(ladder) ? sizes : std::vector<std::size_t>{})
             for (const Method& m : ms) {
                 runs.push_back(runChild(ladder, n, args.width, args.height, m));
                 report(runs.back());
             }
-    for (auto [w, h] : resolutions)
+    for (auto [w, h] : wanted("pixels") ? resolutions : std::vector<std::pair<int, int>>{})
         for (const Method& m : ms) {
             runs.push_back(runChild("pixels", 10000, w, h, m));
             report(runs.back());
@@ -377,6 +379,8 @@ void addScaleBenchmark(CLI::App& app, CommandResult& result) {
     cmd->add_option("-W,--width", args->width, "Image width of the object ladders (default 160)");
     cmd->add_option("-H,--height", args->height, "Image height of the object ladders (default 120)");
     cmd->add_flag("--quick", args->quick, "Two sizes, two methods, two resolutions: to check the command (CI)");
+    cmd->add_option("--ladder", args->ladder, "Only this ladder: objects, mesh or pixels")
+        ->check(CLI::IsMember({"objects", "mesh", "pixels"}));
     cmd->add_flag("!--no-gnuplot", args->gnuplot, "Write the gnuplot script but do not run gnuplot");
     cmd->callback([args, &result] { result.exitCode = runScale(*args); });
 }

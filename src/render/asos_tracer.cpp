@@ -129,6 +129,32 @@ AsosTracer::AsosTracer(const RayTracer& tracer, const CameraModel& camera,
         // cone's spread is relative to the depth, so this costs nothing.
         eyeTMax_ = 2.0 * std::max(farthest, 0.0) + 1.0;
     }
+
+    // A mesh's faces join sheets where only the normal's jumps at creases
+    // change the colour: opaque, one plain layer with no normal pattern, no
+    // reflection, no highlights, brilliance 1 (docs/algorithm.md, "Meshes").
+    if (!camera_.orthographic()) {
+        std::vector<std::uint8_t> coverable(d.objects.size(), 0);
+        double diffuse = 0.0;
+        bool anyFace = false;
+        for (std::uint32_t i = 0; i < scene_.objectCount(); ++i) {
+            const Object& o = d.objects[i];
+            const Texture& t = textureOf(o);
+            if (!std::holds_alternative<TriangleShape>(o.shape) || scene_.transparent(i) || highlighted_[i] ||
+                !t.above.empty() || t.normal || t.finish.reflection != Vec3(0.0) || t.finish.brilliance != 1.0)
+                continue;
+            coverable[i] = 1;
+            anyFace = true;
+            diffuse = std::max(diffuse, t.finish.diffuse);
+        }
+        if (anyFace) {
+            double lights = 0.0;
+            for (const Light& l : d.lights) lights += std::max({l.color.x, l.color.y, l.color.z, 0.0});
+            meshJumpScale_ = lights * diffuse;
+            meshCover_.emplace(d, std::move(coverable));
+            if (!meshCover_->any()) meshCover_.reset();
+        }
+    }
 }
 
 // One pixel's trace, in the paper's phases: detect() forms the pixel's list
@@ -166,6 +192,8 @@ private:
     std::optional<Vec3> detect(const EyePyray& pixel, LevelBuffers to);
     std::optional<Vec3> settle(const EyePyray& pyray, const PreparedCone& cone, int level,
                                std::uint32_t ix, std::uint32_t iy, LevelBuffers to, std::uint32_t first);
+    bool settleOnSheet(const EyePyray& pyray, const PreparedCone& cone, int level, std::uint32_t ix,
+                       std::uint32_t iy, LevelBuffers to, std::uint32_t first, std::optional<Vec3>& leaf);
     LevelDecision decide(int level, LevelBuffers from);
     void subdivide(int level, double weight, LevelBuffers from, LevelBuffers to);
     void shadeStopped(int level, double weight, const AsosSettings& settings, LevelBuffers from);
@@ -283,6 +311,9 @@ std::optional<Vec3> AsosTracer::PixelTrace::detect(const EyePyray& pixel, LevelB
 std::optional<Vec3> AsosTracer::PixelTrace::settle(const EyePyray& pyray, const PreparedCone& cone,
                                                    int level, std::uint32_t ix, std::uint32_t iy,
                                                    LevelBuffers to, std::uint32_t first) {
+    if (std::optional<Vec3> leaf; asos_.meshCover_ && to.items.size() - first >= 2 &&
+                                  settleOnSheet(pyray, cone, level, ix, iy, to, first, leaf))
+        return leaf;
     const std::uint32_t count = sortOut(scene_, cone, to.items, first, s_.hidden);
     to.hits.resize(to.items.size(), 0);
     if (count == 0) {
@@ -315,6 +346,47 @@ std::optional<Vec3> AsosTracer::PixelTrace::settle(const EyePyray& pyray, const 
     return std::nullopt;
 }
 
+// A pyray covered by a sheet of one mesh's faces, everything else behind it
+// (render/mesh_cover.hpp): its items cut to the sheet's faces, then a leaf
+// where no crease of the sheet can change the colour by more than EPS and
+// no pattern edge crosses it, otherwise a node marginal on those alone.
+// False (nothing changed) where no sheet covers it.
+bool AsosTracer::PixelTrace::settleOnSheet(const EyePyray& pyray, const PreparedCone& cone, int level,
+                                           std::uint32_t ix, std::uint32_t iy, LevelBuffers to,
+                                           std::uint32_t first, std::optional<Vec3>& leaf) {
+    std::vector<MeshCandidate>& candidates = s_.meshCandidates;
+    candidates.clear();
+    for (std::size_t i = first; i < to.items.size(); ++i)
+        candidates.push_back({to.items[i].object, to.items[i].cls.tNear, to.items[i].cls.tFar});
+    std::optional<MeshSheet> sheet = asos_.meshCover_->cover(scene_.description(), cone, candidates);
+    if (!sheet) return false;
+    // The sheet's faces are met conservatively: it covers the cone only if
+    // the central ray hits one of them.
+    ++c_.eyeRays;
+    std::optional<SurfaceHit> hit = tracer_.nearestHit(pyray.centralRay());
+    if (!hit) return false;
+    std::size_t hitItem = candidates.size();
+    for (std::size_t i = 0; i < candidates.size(); ++i)
+        if (sheet->member[i] && candidates[i].object == static_cast<std::uint32_t>(hit->objectIndex)) hitItem = i;
+    if (hitItem == candidates.size()) return false;
+    std::size_t kept = first;
+    for (std::size_t i = 0; i < candidates.size(); ++i)
+        if (sheet->member[i]) to.items[kept++] = to.items[first + i];
+    to.items.resize(kept);
+    to.hits.resize(kept, 0);
+    const auto count = static_cast<std::uint32_t>(kept - first);
+    Item front{static_cast<std::uint32_t>(hit->objectIndex), {}, false};
+    const PatternChange pattern = patternEdge(pyray, front, hit);
+    const double shading = asos_.meshJumpScale_ * sheet->normalJump;
+    if (!pattern.mayChange && !(shading > asos_.objectSettings_[front.object].eps)) {
+        ++leaves_;
+        leaf = shadeLeaf(pyray.square(), level, ix, iy, pyray.centralRay(), hit);
+        return true;
+    }
+    to.nodes.push_back({pyray, ix, iy, first, count, std::move(hit), pattern, shading, true});
+    return true;
+}
+
 // "Subdivision Phase", the decision: the tally of each marginal K-pyray
 // against each object it is marginal on (in: its K-ray hits it), of the Full
 // objects crossed by another (in: its K-ray sees them) and of the parts
@@ -326,7 +398,18 @@ std::optional<Vec3> AsosTracer::PixelTrace::settle(const EyePyray& pyray, const 
 AsosTracer::PixelTrace::LevelDecision AsosTracer::PixelTrace::decide(int level, LevelBuffers from) {
     s_.tally.clear();
     AsosSettings settings = AsosSettings::coarsest();
-    for (const Node& n : from.nodes)
+    for (const Node& n : from.nodes) {
+        if (n.meshSheet) {
+            // Marginal on its pattern or its creases only.
+            const auto object = static_cast<std::uint32_t>(n.hit->objectIndex);
+            if (n.pattern.mayChange)
+                s_.tally.add(object, pigmentIndex(textureOf(scene_.object(object)).pigment, n.hit->position) == 1,
+                             n.pattern.singleEdge);
+            else
+                s_.tally.addShading(object, n.shading);
+            settings = settings.finest(asos_.objectSettings_[object]);
+            continue;
+        }
         for (std::uint32_t i = n.first; i < n.first + n.count; ++i) {
             const std::uint32_t object = from.items[i].object;
             const ConeClass& k = from.items[i].cls;
@@ -355,6 +438,7 @@ AsosTracer::PixelTrace::LevelDecision AsosTracer::PixelTrace::decide(int level, 
             }
             settings = settings.finest(asos_.objectSettings_[object]);
         }
+    }
     const double bound = s_.tally.changeBound(level);
     if (report_) {
         AsosLevelReport r;

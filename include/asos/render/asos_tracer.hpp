@@ -18,6 +18,7 @@
 #include "asos/scene/asos_settings.hpp"
 #include "asos/render/camera.hpp"
 #include "asos/render/cone_candidates.hpp"
+#include "asos/render/mesh_cover.hpp"
 #include "asos/render/pattern_edges.hpp"
 #include "asos/render/point_light_shadow.hpp"
 #include "asos/render/ray_tracer.hpp"
@@ -49,6 +50,10 @@ struct AsosScratch {
         // stray from the K-ray's by this much inside the pyray
         // (render/highlight_bound.hpp); 0 otherwise.
         double shading = 0.0;
+        // Covered by a sheet of one mesh's faces (render/mesh_cover.hpp),
+        // its items those faces: only its creases (shading) or its pattern
+        // can change inside it.
+        bool meshSheet = false;
     };
     std::vector<Item> items[2];
     std::vector<std::uint8_t> hits[2];  // per item: the node's K-ray hits the object
@@ -58,6 +63,7 @@ struct AsosScratch {
     ShadowScratch shadow;
     AreaLightScratch area;
     ConeCandidateCache eyeCandidates;
+    std::vector<MeshCandidate> meshCandidates;
 };
 
 // One level of a pixel's subdivision, as the paper's Tables 1 and 2 show it.
@@ -119,6 +125,12 @@ private:
     std::vector<std::uint8_t> highlighted_;
     std::vector<Light> highlightLights_;  // the lights whose highlights count
     double eyeTMax_ = kInfinity;  // where eye pyrays end: beyond every object, or never
+    // The sheets of mesh faces that cover pyrays (perspective cameras
+    // only), and how much a jump of 1 in the shading normal may change a
+    // colour: the sum of the lights' brightest channels times the faces'
+    // diffuse, at most.
+    std::optional<MeshCover> meshCover_;
+    double meshJumpScale_ = 0.0;
 };
 
 }  // namespace asos
