@@ -44,6 +44,30 @@ std::string echoSource(const std::string& line, int column) {
     out += "^\n";
     return out;
 }
+
+// A message quotes words of the scene ("'…' is not declared"); a word longer
+// than kEchoWidth keeps its first and last kEchoWidth / 2 bytes around "…",
+// so a 50 MB identifier is not echoed in the message either.
+std::string clipMessage(const std::string& message) {
+    std::string out;
+    std::size_t i = 0;
+    while (i < message.size()) {
+        const std::size_t wordEnd = std::min(message.find_first_of(" \n\t", i), message.size());
+        if (wordEnd - i <= kEchoWidth) {
+            out.append(message, i, wordEnd - i);
+        } else {
+            std::size_t headEnd = i + kEchoWidth / 2, tailStart = wordEnd - kEchoWidth / 2;
+            while (headEnd > i && isContinuationByte(message[headEnd])) --headEnd;
+            while (tailStart < wordEnd && isContinuationByte(message[tailStart])) ++tailStart;
+            out.append(message, i, headEnd - i);
+            out += "\u2026";
+            out.append(message, tailStart, wordEnd - tailStart);
+        }
+        if (wordEnd < message.size()) out += message[wordEnd];
+        i = wordEnd + 1;
+    }
+    return out;
+}
 }  // namespace
 
 std::string formatLocation(const SourceLoc& loc) {
@@ -60,7 +84,7 @@ std::string formatDiagnostic(const Diagnostic& d) {
     if (d.loc.file) out += formatLocation(d.loc) + ": ";
     out += severityName(d.severity);
     out += ": ";
-    out += d.message;
+    out += d.message.size() > kEchoWidth ? clipMessage(d.message) : d.message;
     out += '\n';
     if (!d.sourceLine.empty()) out += echoSource(d.sourceLine, d.loc.column);
     for (const DiagnosticContext& c : d.context) {

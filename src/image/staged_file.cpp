@@ -195,7 +195,13 @@ std::string checkWritable(const fs::path& target) {
     if (!S_ISDIR(st.st_mode)) return cannotWrite(target, quoted(folder) + " is not a folder");
     if (::access(folder.c_str(), W_OK | X_OK) != 0)
         return cannotWrite(target, "folder " + quoted(folder) + ": " + osReason(errno));
-    if (::stat(target.c_str(), &st) == 0 && S_ISDIR(st.st_mode)) return cannotWrite(target, "it is a folder");
+    if (::stat(target.c_str(), &st) == 0) {
+        if (S_ISDIR(st.st_mode)) return cannotWrite(target, "it is a folder");
+        // A device or a FIFO would be replaced by the file renamed over it
+        // (as root, /dev/full by a plain file): refused, as a folder is.
+        if (!S_ISREG(st.st_mode))
+            return cannotWrite(target, "it is not a regular file (a device, a FIFO or a socket)");
+    }
     return {};
 }
 

@@ -97,6 +97,18 @@ TEST_CASE("asos parse echoes at most 200 bytes of a long source line", "[cli]") 
     CHECK_THAT(r.err, Catch::Contains("\n\u2026" + window + "\u2026\n" + std::string(101, ' ') + "^\n"));
 }
 
+TEST_CASE("asos parse clips a long word quoted in a message", "[cli]") {
+    // A 1 MB undeclared identifier: the message quotes its first and last
+    // 100 bytes around "…", not the whole word (issue 25).
+    const std::string word = "b" + std::string(1000000, 'a') + "c";
+    scene("long_word.pov", "#declare X = " + word + ";\n");
+    const Result r = runAsos({"parse", "long_word.pov"});
+    CHECK(r.exitCode == 1);
+    CHECK(r.err.size() < 1000);
+    CHECK_THAT(r.err, Catch::Contains("error: 'b" + std::string(98, 'a') + "\u2026" + std::string(98, 'a') +
+                                      "c' is not declared\n"));
+}
+
 TEST_CASE("asos parse sets clock_on with --clock and finds POV-Ray's includes by itself", "[cli]") {
     scene("clock_on.pov", "sphere { 0, 1 + clock_on }\n");
     const Result off = runAsos({"parse", "clock_on.pov", "--no-locations"});

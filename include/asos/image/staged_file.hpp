@@ -64,7 +64,8 @@ struct StagedResult {
 };
 
 // Whether `target` can be written: its folder exists, is a folder and takes
-// new files, and `target` itself is not a folder (a missing target is fine).
+// new files, and `target` itself is not a folder, a device, a FIFO or a socket
+// (a missing target is fine: a symbolic link counts as what it names).
 // Returns why not, empty when it can. Checked before work that would be lost.
 std::string checkWritable(const std::filesystem::path& target);
 
