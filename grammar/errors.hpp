@@ -160,6 +160,8 @@ template <> inline constexpr auto error_message<map_entry_colour> = "expected th
 template <> inline constexpr auto error_message<map_entry_close> = "expected ']' to close the colour map entry";
 template <> inline constexpr auto error_message<colour_map_end> = "expected an entry '[value colour]' or '}' in the colour map";
 template <> inline constexpr auto error_message<reflection_value> = "expected a colour or a float after reflection";
+template <> inline constexpr auto error_message<reflection_colours> = "expected a colour or a float in reflection { … }";
+template <> inline constexpr auto error_message<reflection_block_end> = "expected fresnel, falloff, exponent, metallic or '}' in reflection { … }";
 template <> inline constexpr auto error_message<normal_end> = "expected a normal pattern (bumps, dents, wrinkles, ripples, waves, or gradient, radial, onion, marble, wood, leopard, bozo, spotted, granite, agate), bump_size, accuracy, a transform, a pattern modifier or '}' in the normal";
 template <> inline constexpr auto error_message<interior_end> = "expected an interior item (ior, caustics, fade_distance, fade_power, fade_color) or '}'";
 template <> inline constexpr auto error_message<material_end> = "expected texture, interior, a transform or '}'";
@@ -235,7 +237,6 @@ template <> inline constexpr auto rejection_message<camera_normal> = "'normal' i
 template <> inline constexpr auto rejection_message<texture_pattern> = "texture patterns ('{}' of textures) are not supported by asos; use {} in the pigment";
 template <> inline constexpr auto rejection_message<finish_emission> = "'{}' in a finish is not supported by asos";
 template <> inline constexpr auto rejection_message<normal_block_pattern> = "'{}' in a normal (a pattern of normals) is not supported by asos";
-template <> inline constexpr auto rejection_message<reflection_block> = "'reflection { … }' is not supported by asos; write reflection followed by a colour or a float";
 template <> inline constexpr auto rejection_message<pattern_of_blocks<kw_checker>> = "'checker' of pigments or textures is not supported by asos; give checker two colours";
 template <> inline constexpr auto rejection_message<pattern_of_blocks<kw_brick>> = "'brick' of pigments or textures is not supported by asos; give brick two colours";
 // clang-format on

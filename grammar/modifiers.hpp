@@ -131,9 +131,29 @@ struct normal_end : rbrace {};
 struct normal_block : if_must<kw_normal, block_open, entries<normal_entry>, normal_end> {};
 
 // --- finish { Name  ambient C  diffuse F  … } ---------------------------------------
-// `reflection { … }` (POV-Ray's block form) is not ours; `reflection C` is.
-struct reflection_block : at<one<'{'>> {};
-struct reflection_value : sor<reflection_block, seq<expression>> {};
+// An optional number after a keyword (`metallic`, `fresnel`): taken only
+// where one plainly follows (a constant, a declared name, a number, a sign
+// or a parenthesis), as POV-Ray reads an optional float there.
+struct arguments_end;  // grammar/objects.hpp
+struct optional_number : seq<at<sor<constant, name, ascii::digit, one<'(', '!', '-', '+', '.'>>>, expression> {};
+// reflection C, or reflection { [C_min,] C_max  fresnel [B]  falloff F
+// exponent F  metallic [F] }
+struct reflection_option_word : sor<kw_fresnel, kw_falloff, kw_exponent, kw_metallic> {};
+struct fresnel_start : success {};
+struct fresnel_item : seq<kw_fresnel, fresnel_start, opt<optional_number>> {};
+struct falloff_item : if_must<kw_falloff, float_value> {};
+struct exponent_item : if_must<kw_exponent, float_value> {};
+struct metallic_start : success {};
+struct metallic_item : seq<kw_metallic, metallic_start, opt<optional_number>> {};
+struct reflection_option : sor<fresnel_item, falloff_item, exponent_item, metallic_item> {};
+struct reflection_colours
+    : seq<colour_value, opt<comma>, opt<not_at<sor<reflection_option_word, rbrace>>, colour_value>> {};
+struct reflection_block_end : rbrace {};
+struct reflection_open : lbrace {};
+struct reflection_block
+    : if_must<reflection_open, reflection_colours, arguments_end, star<reflection_option>, reflection_block_end> {};
+struct reflection_simple : seq<expression> {};
+struct reflection_value : sor<reflection_block, reflection_simple> {};
 struct ambient_item : if_must<kw_ambient, colour_value> {};
 struct diffuse_item : if_must<kw_diffuse, float_value> {};
 struct brilliance_item : if_must<kw_brilliance, float_value> {};
@@ -143,11 +163,20 @@ struct specular_item : if_must<kw_specular, float_value> {};
 struct roughness_item : if_must<kw_roughness, float_value> {};
 struct crand_item : if_must<kw_crand, float_value> {};
 struct reflection_item : if_must<kw_reflection, reflection_value> {};
+struct reflection_exponent_item : if_must<kw_reflection_exponent, float_value> {};
+struct conserve_energy_item : kw_conserve_energy {};
+// POV-Ray 3.0's ior, caustics and refraction in a finish: read, and refused
+// where a finish holding one is made (a scene keeps them in #if (version <
+// 3.1) branches that are never taken).
+struct legacy_ior_item : if_must<kw_ior, float_value> {};
+struct legacy_caustics_item : if_must<kw_caustics, float_value> {};
+struct legacy_refraction_item : if_must<kw_refraction, float_value> {};
 struct finish_name : indexed_name {};  // a declared finish
 struct finish_emission : kw_emission {};  // a finish's emission: not ours
 struct finish_entry
     : sor<finish_emission, ambient_item, diffuse_item, brilliance_item, phong_item, phong_size_item, specular_item,
-          roughness_item, crand_item, reflection_item, finish_name, unsupported_item> {};
+          roughness_item, crand_item, reflection_item, reflection_exponent_item, metallic_item, conserve_energy_item,
+          legacy_ior_item, legacy_caustics_item, legacy_refraction_item, finish_name, unsupported_item> {};
 struct finish_end : rbrace {};
 struct finish_block : if_must<kw_finish, block_open, entries<finish_entry>, finish_end> {};
 

@@ -264,6 +264,8 @@ public:
     Color toColour(const Num& value, const Node& at, ColourChannels channels = ColourChannels::Rgbft);
     Num evalColourNode(const Node& n, ColourChannels channels);
     Vec3 evalRgb(const Node& n, std::string_view usedAs);
+    void evalReflection(const Node& block, Finish& f);
+    double positiveExponent(const Node& n);
     std::shared_ptr<const Texture> withTopLayerItem(const Texture& base, const Node& n);
     std::string evalString(const Node& n);
     const Value* lookup(std::uint32_t id) const;

@@ -893,13 +893,62 @@ std::shared_ptr<const Finish> Interpreter::evalFinish(const Node& block, const F
             f->roughness = r;
             break;
         }
-        case Word::Reflection: f->reflection = evalRgb(n[0], "reflection"); break;
+        case Word::Reflection:
+            if (n.kind == NodeKind::Block) {
+                evalReflection(n, *f);
+            } else {
+                // POV-Ray's older form: one reflectivity at every angle.
+                f->reflection = evalRgb(n[0], "reflection");
+                f->reflectionMin.reset();
+                f->reflectionFalloff = 1.0;
+                f->fresnel = false;
+            }
+            break;
+        case Word::ReflectionExponent: f->reflectionExponent = 1.0 / positiveExponent(n[0]); break;
+        case Word::Metallic: f->metallic = n.count > 0 ? evalFloat(n[0]) : 1.0; break;
+        case Word::ConserveEnergy: f->conserveEnergy = true; break;
         case Word::Crand: f->crand = evalFloat(n[0]); break;
+        case Word::Ior:
+        case Word::Caustics:
+        case Word::Refraction:
+            fail(n, "'" + std::string(wordText(n.word)) +
+                        "' in a finish is POV-Ray 3.0's syntax, which asos does not read; write it in interior { … }");
         default: fail(n, "this is not a finish item");
         }
     };
     runEntries(block.children(), EntryHandler(entry));
     return f;
+}
+
+// reflection { [C_min,] C_max  fresnel [B]  falloff F  exponent F  metallic [F] }
+// as POV-Ray's Parse_Finish reads it: one colour is both; fresnel without a
+// second colour starts from black.
+void Interpreter::evalReflection(const Node& block, Finish& f) {
+    const std::size_t colours = block.flags;
+    const Vec3 first = evalRgb(block[0], "reflection");
+    f.reflection = colours > 1 ? evalRgb(block[1], "reflection") : first;
+    f.reflectionMin = first;
+    for (std::size_t i = colours; i < block.count; ++i) {
+        const Node& n = block[i];
+        switch (n.word) {
+        case Word::Fresnel: {
+            f.fresnel = n.count > 0 ? evalBool(n[0]) : true;
+            if (f.fresnel && colours < 2) f.reflectionMin = Vec3(0.0);
+            break;
+        }
+        case Word::Falloff: f.reflectionFalloff = evalFloat(n[0]); break;
+        case Word::Exponent: f.reflectionExponent = 1.0 / positiveExponent(n[0]); break;
+        case Word::Metallic: f.reflectionMetallic = n.count > 0 ? evalFloat(n[0]) : 1.0; break;
+        default: fail(n, "this is not an item of reflection { … }");
+        }
+    }
+}
+
+// A reflection exponent (POV-Ray stores its reciprocal).
+double Interpreter::positiveExponent(const Node& n) {
+    const double e = evalFloat(n);
+    if (!(e > 0.0) || !std::isfinite(e)) fail(n, "a reflection exponent must be positive, not " + formatNumber(e));
+    return e;
 }
 
 std::shared_ptr<const Interior> Interpreter::evalInterior(const Node& block, const Interior& start) {

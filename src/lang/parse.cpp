@@ -303,7 +303,6 @@ template <> struct action<g::cylinder_light> : Reject<g::cylinder_light> {};
 template <> struct action<g::cylinder_camera> : Reject<g::cylinder_camera> {};
 template <> struct action<g::camera_normal> : Reject<g::camera_normal> {};
 template <> struct action<g::texture_pattern> : Reject<g::texture_pattern> {};
-template <> struct action<g::reflection_block> : Reject<g::reflection_block> {};
 template <> struct action<g::normal_block_pattern> : Reject<g::normal_block_pattern> {};
 template <> struct action<g::finish_emission> : Reject<g::finish_emission> {};
 template <>
@@ -587,6 +586,10 @@ struct action<g::block_open> {
     static void apply0(Builder& b) { b.open(); }
 };
 template <>
+struct action<g::reflection_open> {
+    static void apply0(Builder& b) { b.open(); }
+};
+template <>
 struct action<g::arguments_end> {
     static void apply0(Builder& b) { b.frame().positional = static_cast<int>(b.frameSize()); }
 };
@@ -676,7 +679,15 @@ template <> struct action<g::phong_item> : ItemAction<Word::Phong, 1> {};
 template <> struct action<g::phong_size_item> : ItemAction<Word::PhongSize, 1> {};
 template <> struct action<g::specular_item> : ItemAction<Word::Specular, 1> {};
 template <> struct action<g::roughness_item> : ItemAction<Word::Roughness, 1> {};
-template <> struct action<g::reflection_item> : ItemAction<Word::Reflection, 1> {};
+template <> struct action<g::reflection_simple> : ItemAction<Word::Reflection, 1> {};
+template <> struct action<g::reflection_block> : CloseBlock<Word::Reflection> {};
+template <> struct action<g::falloff_item> : ItemAction<Word::Falloff, 1> {};
+template <> struct action<g::exponent_item> : ItemAction<Word::Exponent, 1> {};
+template <> struct action<g::reflection_exponent_item> : ItemAction<Word::ReflectionExponent, 1> {};
+template <> struct action<g::conserve_energy_item> : ItemAction<Word::ConserveEnergy, 0> {};
+template <> struct action<g::legacy_ior_item> : ItemAction<Word::Ior, 1> {};
+template <> struct action<g::legacy_caustics_item> : ItemAction<Word::Caustics, 1> {};
+template <> struct action<g::legacy_refraction_item> : ItemAction<Word::Refraction, 1> {};
 template <> struct action<g::ior_item> : ItemAction<Word::Ior, 1> {};
 template <> struct action<g::caustics_item> : ItemAction<Word::Caustics, 1> {};
 template <> struct action<g::interior_fade_distance_item> : ItemAction<Word::FadeDistance, 1> {};
@@ -782,6 +793,16 @@ struct action<g::hollow_start> {
     static void apply0(Builder& b) { b.open(); }
 };
 template <> struct action<g::hollow_item> : ClosePattern<Word::Hollow> {};
+template <>
+struct action<g::fresnel_start> {
+    static void apply0(Builder& b) { b.open(); }
+};
+template <> struct action<g::fresnel_item> : ClosePattern<Word::Fresnel> {};
+template <>
+struct action<g::metallic_start> {
+    static void apply0(Builder& b) { b.open(); }
+};
+template <> struct action<g::metallic_item> : ClosePattern<Word::Metallic> {};
 template <> struct action<g::brick_item> : ClosePattern<Word::Brick> {};
 template <>
 struct action<g::matrix_item> {

@@ -90,6 +90,8 @@ std::uint64_t hashOf(const Texture& t) {
     mix(h, f.phong);
     mix(h, f.specular);
     mix(h, f.reflection);
+    mix(h, f.reflectionMin.value_or(f.reflection));
+    mix(h, f.metallic);
     mix(h, t.normal ? static_cast<double>(t.normal->kind) : -1.0);
     mix(h, static_cast<double>(t.above.size()));
     return h;

@@ -141,7 +141,7 @@ AsosTracer::AsosTracer(const RayTracer& tracer, const CameraModel& camera,
             const Object& o = d.objects[i];
             const Texture& t = textureOf(o);
             if (!std::holds_alternative<TriangleShape>(o.shape) || scene_.transparent(i) || highlighted_[i] ||
-                !t.above.empty() || t.normal || t.finish.reflection != Vec3(0.0) || t.finish.brilliance != 1.0)
+                !t.above.empty() || t.normal || reflects(t.finish) || t.finish.brilliance != 1.0)
                 continue;
             coverable[i] = 1;
             anyFace = true;
@@ -603,7 +603,7 @@ Vec3 AsosTracer::PixelTrace::shadeLeaf(const ImageSquare& square, int level, std
     LightSample storage;
     // Area lights: shadow beams from the shaded point (render/area_light.hpp),
     // with random numbers of this leaf's own.
-    LightContext context{&s_.area, rng_, subPosition(level, ix, iy), nullptr};
+    LightContext context{&s_.area, rng_, subPosition(level, ix, iy), nullptr, {}};
     auto lightArriving = [&](const ShadingPoint& p) -> std::span<const LightSample> {
         const Light& light = *p.light;
         if (tracer_.sceneLights()[static_cast<std::size_t>(p.lightIndex)].isArea()) {

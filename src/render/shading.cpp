@@ -38,7 +38,7 @@ Vec3 ambientTerm(const Finish& finish, const Vec3& pigment, const Vec3& ambientL
 }
 
 Vec3 directLight(const Finish& finish, const Vec3& pigment, const Vec3& normal, const Vec3& rayDir,
-                 const Light& light, const LightSample& sample, double grain) {
+                 const Light& light, const LightSample& sample, double grain, const Vec3* colour) {
     const Vec3& toLight = sample.direction;
     // Light on the far side of the surface from the viewer lights nothing
     // (POV-Ray: cos_shadow_angle < EPSILON, no double_illuminate).
@@ -59,13 +59,20 @@ Vec3 directLight(const Finish& finish, const Vec3& pigment, const Vec3& normal, 
     }
     // POV-Ray's shadowless lights (FILL_LIGHT_SOURCE) give no highlights.
     if (light.shadowless) return result;
+    // metallic: the highlights take the surface's colour, less so toward
+    // grazing light (ComputePhongColour, ComputeSpecularColour).
+    const Vec3 highlight =
+        finish.metallic > 0.0
+            ? lightColor * (Vec3(1.0) + finish.metallic * (1.0 - metallicFresnel(cosIncidence)) *
+                                            ((colour ? *colour : pigment) - Vec3(1.0)))
+            : lightColor;
     if (finish.phong > 0.0) {
         // Phong: the mirror of the eye ray against the light direction.
         const Vec3 mirror = rayDir - 2.0 * glm::dot(rayDir, normal) * normal;
         const double cosMirror = glm::dot(mirror, toLight);
         // POV-Ray skips tiny cosines for large exponents ("rgs" cut-off).
         if (cosMirror > 0.0 && (finish.phongSize < 60.0 || cosMirror > 0.0008))
-            result += finish.phong * std::pow(cosMirror, finish.phongSize) * lightColor;
+            result += finish.phong * std::pow(cosMirror, finish.phongSize) * highlight;
     }
     if (finish.specular > 0.0) {
         // Blinn: the halfway vector between the eye and the light.
@@ -77,7 +84,7 @@ Vec3 directLight(const Finish& finish, const Vec3& pigment, const Vec3& normal, 
                 // POV-Ray stores 1/roughness as the exponent; a zero roughness
                 // is kept as a zero exponent (it warns "Zero roughness used").
                 const double exponent = finish.roughness != 0.0 ? 1.0 / finish.roughness : 0.0;
-                result += finish.specular * std::pow(cosHalf, exponent) * lightColor;
+                result += finish.specular * std::pow(cosHalf, exponent) * highlight;
             }
         }
     }

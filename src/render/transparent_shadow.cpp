@@ -36,8 +36,8 @@ Vec3 transparentShadowFilter(const Scene& scene, const Vec3& point, const Vec3& 
             // POV-Ray's faked caustics (ComputeShadowTexture): each layer
             // multiplies by 1 + |cos|^caustics, with the surface's normal.
             if (interior.caustics != 0.0) {
-                const double k = 1.0 + std::pow(std::fabs(glm::dot(hit->normal, ray.dir)), interior.caustics);
-                through *= std::pow(k, double(1 + object.texture->above.size()));
+                const double gain = 1.0 + std::pow(std::fabs(glm::dot(hit->normal, ray.dir)), interior.caustics);
+                through *= std::pow(gain, double(1 + object.texture->above.size()));
             }
             // Leaving an inside: its fade over the way through it.
             const void* key = interiorKey(object);

@@ -380,8 +380,37 @@ void writeLayer(Writer& w, const TextureLayer& t) {
     w.num(f.phong) << " phong_size ";
     w.num(f.phongSize) << " specular ";
     w.num(f.specular) << " roughness ";
-    w.num(f.roughness) << " reflection ";
-    w.rgb(f.reflection);
+    w.num(f.roughness);
+    const Finish plain;
+    const Vec3 head = f.reflectionMin.value_or(f.reflection);
+    if (head == f.reflection && !f.fresnel && f.reflectionFalloff == plain.reflectionFalloff &&
+        f.reflectionExponent == plain.reflectionExponent && f.reflectionMetallic == plain.reflectionMetallic) {
+        w << " reflection ";
+        w.rgb(f.reflection);
+    } else {
+        w << " reflection { ";
+        w.rgb(head) << ", ";
+        w.rgb(f.reflection);
+        if (f.fresnel) w << " fresnel";
+        if (f.reflectionFalloff != plain.reflectionFalloff) {
+            w << " falloff ";
+            w.num(f.reflectionFalloff);
+        }
+        if (f.reflectionExponent != plain.reflectionExponent) {
+            w << " exponent ";
+            w.num(1.0 / f.reflectionExponent);
+        }
+        if (f.reflectionMetallic != plain.reflectionMetallic) {
+            w << " metallic ";
+            w.num(f.reflectionMetallic);
+        }
+        w << " }";
+    }
+    if (f.metallic != 0.0) {
+        w << " metallic ";
+        w.num(f.metallic);
+    }
+    if (f.conserveEnergy) w << " conserve_energy";
     if (f.crand != 0.0) {
         w << " crand ";
         w.num(f.crand);

@@ -88,7 +88,7 @@ TEST_CASE("A cone over a mesh's boundary edge is not covered", "[mesh_cover]") {
     CHECK_FALSE(cover.cover(d, corner, candidates(d, corner)));
 }
 
-TEST_CASE("A cone over a silhouette edge is not covered; over a crease it is", "[mesh_cover]") {
+TEST_CASE("A cone over a silhouette edge is not covered, over a crease it is", "[mesh_cover]") {
     const PreparedCone cone = downCone({0.0, 0.0, 5}, 0.05);
     {
         // Folded back over the first face: seen from above, both lie on the

@@ -331,3 +331,82 @@ TEST_CASE("Layered textures: each layer lit and seen through those above", "[sha
     shadeSurface({hit, t, ray}, {}, ShadingSettings{}, noLights, reflect);
     CHECK(reflectedWeight == Approx(0.057 * 0.2));
 }
+
+TEST_CASE("Reflectivity by angle: falloff, Fresnel and metallic, as POV-Ray computes it", "[shading][reflection]") {
+    Finish f;
+    f.reflection = Vec3(0.9);
+    f.reflectionMin = Vec3(0.1);
+    // Head-on the minimum, at grazing angles the maximum, between them by
+    // (1 - cos)^falloff; the weight is the larger one's.
+    CHECK(near(reflectivity(f, 1.0, 1.0, Vec3(1.0)).colour, Vec3(0.1)));
+    CHECK(near(reflectivity(f, 0.0, 1.0, Vec3(1.0)).colour, Vec3(0.9)));
+    CHECK(near(reflectivity(f, 0.5, 1.0, Vec3(1.0)).colour, Vec3(0.1 + 0.8 * 0.5)));
+    f.reflectionFalloff = 2.0;
+    CHECK(near(reflectivity(f, 0.5, 1.0, Vec3(1.0)).colour, Vec3(0.1 + 0.8 * 0.25)));
+    CHECK(reflectivity(f, 0.5, 1.0, Vec3(1.0)).weight == Approx(0.9));
+    // Fresnel: head-on ((n - 1) / (n + 1))^2 of the way for glass, 4 %; the
+    // whole maximum past the critical angle from inside; nothing at ior 1.
+    Finish g;
+    g.reflection = Vec3(1.0);
+    g.reflectionMin = Vec3(0.0);
+    g.fresnel = true;
+    CHECK(reflectivity(g, 1.0, 1.5, Vec3(1.0)).colour.x == Approx(0.04));
+    CHECK(reflectivity(g, 1.0, 1.5, Vec3(1.0)).weight == Approx(0.04));
+    CHECK(reflectivity(g, 0.3, 1.0 / 1.5, Vec3(1.0)).colour.x == Approx(1.0));
+    CHECK(reflectivity(g, 0.7, 1.0, Vec3(1.0)).colour.x == Approx(0.0).margin(1e-12));
+    // At 60 degrees, s and p polarisations averaged: 0.0892 for ior 1.5.
+    const double c = 0.5, n = 1.5, t = std::sqrt(1.0 - (1.0 - c * c) / (n * n));
+    const double rs = std::pow((c - n * t) / (c + n * t), 2.0), rp = std::pow((t - n * c) / (t + n * c), 2.0);
+    CHECK(reflectivity(g, c, n, Vec3(1.0)).colour.x == Approx(0.5 * (rs + rp)));
+    // reflection's metallic tints head-on by the pigment, not at grazing.
+    Finish m;
+    m.reflection = Vec3(0.5);
+    m.reflectionMetallic = 1.0;
+    CHECK(near(reflectivity(m, 1.0, 1.0, {0.8, 0.6, 0.2}).colour, Vec3(0.5) * Vec3(0.8, 0.6, 0.2), 1e-6));
+    CHECK(near(reflectivity(m, 0.0, 1.0, {0.8, 0.6, 0.2}).colour, Vec3(0.5), 1e-6));
+    CHECK(metallicFresnel(1.0) == Approx(0.0).margin(1e-6));
+    CHECK(metallicFresnel(0.0) == Approx(1.0).margin(1e-6));
+}
+
+TEST_CASE("A reflection exponent, metallic highlights and conserve_energy", "[shading][reflection]") {
+    Texture t;
+    t.pigment.color1 = Color{{0.8, 0.6, 0.2}, 0.0, 0.0};
+    t.finish.diffuse = 0.0;
+    t.finish.ambient = Vec3(0.0);
+    t.finish.reflection = Vec3(0.5);
+    const SurfaceHit hit = planeHit();
+    const Ray ray{{0, 1, 0}, {0, -1, 0}};
+    auto noLights = [](const ShadingPoint&) { return std::span<const LightSample>(); };
+    auto grey = [](const Ray&, int, double) { return Vec3(0.25); };
+    CHECK(near(shadeSurface({hit, t, ray}, {}, ShadingSettings{}, noLights, grey), Vec3(0.125)));
+    // exponent 2 (POV-Ray keeps 1/2): 0.5 x 0.25^(1/2).
+    t.finish.reflectionExponent = 0.5;
+    CHECK(near(shadeSurface({hit, t, ray}, {}, ShadingSettings{}, noLights, grey), Vec3(0.25)));
+    // metallic 1: a highlight head-on takes the pigment's colour.
+    Finish f;
+    f.diffuse = 0.0;
+    f.phong = 1.0;
+    f.metallic = 1.0;
+    const Light light{};
+    const LightSample s{{0, 1, 0}, 5.0, {1, 1, 1}};
+    const Vec3 colour(0.8, 0.6, 0.2);
+    CHECK(near(directLight(f, colour, {0, 1, 0}, {0, -1, 0}, light, s, 0.0, &colour), colour, 1e-6));
+    f.metallic = 0.0;
+    CHECK(near(directLight(f, colour, {0, 1, 0}, {0, -1, 0}, light, s, 0.0, &colour), Vec3(1.0), 1e-6));
+    // conserve_energy: a transparent layer that reflects 0.5 lets through
+    // half as much.
+    Texture glass;
+    glass.pigment.color1 = Color{{1, 1, 1}, 0.0, 1.0};
+    glass.finish.reflection = Vec3(0.5);
+    glass.finish.conserveEnergy = true;
+    double through = 0.0;
+    auto transmit = [&](const Vec3&, double w) {
+        through = w;
+        return Transmitted{Vec3(1.0), false};
+    };
+    auto none = [](const Ray&, int, double) { return Vec3(0.0); };
+    CHECK(near(shadeSurface({hit, glass, ray}, {}, ShadingSettings{}, noLights, none, transmit), Vec3(0.5)));
+    CHECK(through == Approx(0.5));
+    glass.finish.conserveEnergy = false;
+    CHECK(near(shadeSurface({hit, glass, ray}, {}, ShadingSettings{}, noLights, none, transmit), Vec3(1.0)));
+}

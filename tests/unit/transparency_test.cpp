@@ -178,7 +178,7 @@ TEST_CASE("Shadows through a filtering pane under every light method", "[transpa
             d.camera.right = {8, 0, 0};
             d.camera.up = {0, 0, 6};
             Light light = pointLight({0, 20, 0});
-            if (area) light.area = AreaLight{{0.2, 0, 0}, {0, 0, 0.2}, 3, 3};
+            if (area) light.area = AreaLight{{0.2, 0, 0}, {0, 0, 0.2}, 3, 3, std::nullopt, false, false, false};
             d.lights.push_back(light);
             d.objects.push_back(makeObject(PlaneShape{{0, 1, 0}, 0}, litTexture(Vec3(1.0), 0.0, 1.0)));
             Texture glass = pane({{1.0, 0.5, 0.0}, 0.8, 0.0});

@@ -50,7 +50,9 @@ namespace asos::lang {
     WORD(Ambient, "ambient") WORD(Diffuse, "diffuse") WORD(Brilliance, "brilliance") WORD(Phong, "phong")   \
     WORD(PhongSize, "phong_size") WORD(Specular, "specular") WORD(Roughness, "roughness")                \
     WORD(Reflection, "reflection") WORD(AssumedGamma, "assumed_gamma")                                \
-    WORD(Crand, "crand")                                                                           \
+    WORD(Crand, "crand") WORD(Metallic, "metallic") WORD(Fresnel, "fresnel") WORD(Falloff, "falloff")     \
+    WORD(Exponent, "exponent") WORD(ReflectionExponent, "reflection_exponent")                        \
+    WORD(ConserveEnergy, "conserve_energy") WORD(Refraction, "refraction")                           \
     WORD(Normal, "normal") WORD(Bumps, "bumps") WORD(Dents, "dents") WORD(Wrinkles, "wrinkles")        \
     WORD(Ripples, "ripples") WORD(Waves, "waves") WORD(BumpSize, "bump_size") WORD(Accuracy, "accuracy") \
     WORD(MaxTraceLevel, "max_trace_level") WORD(AmbientLight, "ambient_light")                        \

@@ -93,6 +93,17 @@ inline Crossing cross(const InteriorList& inside, const Object& o) {
     return c;
 }
 
+// The ior ratio a Fresnel reflection off the surface of `o` uses (POV-Ray's
+// ComputeRelativeIOR): the object's over the air's or the ray's innermost
+// interior's when the ray comes from outside it; from inside, the air's (or
+// the innermost one's) over the object's.
+inline double reflectionIor(const InteriorList& inside, const Object& o) {
+    const double ior = interiorOf(o).ior;
+    if (inside.empty()) return ior;
+    if (inside.contains(interiorKey(o))) return (inside.size() == 1 ? 1.0 : inside.back().ior) / ior;
+    return ior / inside.back().ior;
+}
+
 // The refracted direction of unit direction `d` at a surface of unit normal
 // `normal` (either side) for the ior ratio `ior` (POV-Ray's
 // TraceRefractionRay, Heckbert's method); none on total internal reflection.

@@ -75,8 +75,10 @@ public:
                    LightFn&& lightArriving, RenderCounters& counters,
                    const LightContext& context = {},
                    const std::optional<Color>& pigment = std::nullopt) const {
-        const Texture& texture = textureOf(scene_.object(static_cast<std::uint32_t>(hit.objectIndex)));
-        return shadeSurface({hit, texture, ray, depth, weight, pigment, {context.rng, context.key}}, lights(),
+        const Object& object = scene_.object(static_cast<std::uint32_t>(hit.objectIndex));
+        return shadeSurface({hit, textureOf(object), ray, depth, weight, pigment, {context.rng, context.key},
+                             reflectionIor(context.inside, object)},
+                            lights(),
                             shading_, lightArriving,
                             [&](const Ray& mirror, int d, double w) {
                                 ++counters.reflectedRays;

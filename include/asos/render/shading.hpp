@@ -104,6 +104,9 @@ struct ShadeRequest {
     double weight = 1.0;
     std::optional<Color> pigment = std::nullopt;
     GrainSource grain{};
+    // The ratio of the iors across the surface that a Fresnel reflection
+    // uses (POV-Ray's ComputeRelativeIOR; reflectionIor in interiors.hpp).
+    double reflectionIor = 1.0;
 };
 
 // The pigment's colour at a world point: CheckerPattern and BrickPattern in
@@ -152,6 +155,16 @@ inline Vec3 mirrorDirection(const Vec3& d, const Vec3& tilted, const Vec3& surfa
     return glm::normalize(r);
 }
 
+// POV-Ray's empirical Fresnel curve for metallic surfaces (its
+// ComputeSpecularColour and ComputeLightedTexture): 0 head-on (the full
+// tint), 1 at grazing angles, for the cosine `cosAngle` of the angle to the
+// normal.
+inline double metallicFresnel(double cosAngle) {
+    const double x = std::fabs(std::acos(std::clamp(cosAngle, -1.0, 1.0))) / (0.5 * 3.14159265358979323846);
+    const double F = 0.014567225 / ((x - 1.12) * (x - 1.12)) - 0.011612903;
+    return std::clamp(F, 0.0, 1.0);
+}
+
 // ambient x pigment x ambient_light.
 Vec3 ambientTerm(const Finish& finish, const Vec3& pigment, const Vec3& ambientLight);
 
@@ -161,8 +174,11 @@ Vec3 ambientTerm(const Finish& finish, const Vec3& pigment, const Vec3& ambientL
 // from behind the surface gives nothing; shadowless lights give no highlights.
 // `grain`: the number in [0, 1) crand takes off the diffuse intensity,
 // times crand.
+// `colour`: the layer's pigment colour before its opacity, which metallic
+// highlights take (the pigment when null).
 Vec3 directLight(const Finish& finish, const Vec3& pigment, const Vec3& normal, const Vec3& rayDir,
-                 const Light& light, const LightSample& sample, double grain = 0.0);
+                 const Light& light, const LightSample& sample, double grain = 0.0,
+                 const Vec3* colour = nullptr);
 
 // Whether the finish reacts to lights at all (otherwise no light is queried).
 inline bool usesLights(const Finish& f) {
@@ -197,7 +213,57 @@ struct ShadedLayer {
     Vec3 through{1.0};  // what the layers above let through (POV-Ray's filCol)
     double weight = 1.0;  // the ray's weight left for it (POV-Ray's trans)
     Vec3 after{1.0};    // what this layer and those above let through
+    Vec3 colour{0.0};   // the pigment's colour (metallic tints with it)
+    Vec3 reflectivity{0.0};  // what it reflects at this angle (reflectivity())
+    double reflectionWeight = 0.0;  // the reflected ray's weight, before the ray's own
 };
+
+// What a finish reflects of a ray meeting its layer at `cosAngle` (the
+// cosine between the reversed ray and the layer's normal), and the factor
+// the reflected ray's weight takes (POV-Ray's ComputeReflectivity): between
+// reflectionMin head-on and reflection at grazing angles by
+// (1 - cos)^falloff, or by the Fresnel equation for unpolarised light at the
+// ior ratio `ior` (ComputeRelativeIOR's); then tinted by `colour` for
+// reflection's metallic (ComputeLightedTexture).
+struct Reflectivity {
+    Vec3 colour{0.0};
+    double weight = 0.0;
+};
+inline Reflectivity reflectivity(const Finish& f, double cosAngle, double ior, const Vec3& colour) {
+    Reflectivity r;
+    const Vec3& hi = f.reflection;
+    const Vec3& lo = f.reflectionMin ? *f.reflectionMin : hi;
+    const auto max3 = [](const Vec3& v) { return std::max(v.x, std::max(v.y, v.z)); };
+    if (f.fresnel) {
+        const double sqx = ior * ior + cosAngle * cosAngle - 1.0;
+        if (sqx > 0.0) {
+            const double g = std::sqrt(sqx);
+            const double a = (g - cosAngle) / (g + cosAngle);
+            const double b = (cosAngle * (g + cosAngle) - 1.0) / (cosAngle * (g - cosAngle) + 1.0);
+            const double F = std::clamp(0.5 * a * a * (1.0 + b * b), 0.0, 1.0);
+            r.colour = F * hi + (1.0 - F) * lo;
+        } else {
+            r.colour = hi;
+        }
+        r.weight = max3(r.colour);
+    } else {
+        r.weight = std::max(max3(hi), max3(lo));
+        const double frac = std::fabs(f.reflectionFalloff - 1.0) > kPovEpsilon
+                                ? std::pow(1.0 - cosAngle, f.reflectionFalloff)
+                                : 1.0 - cosAngle;
+        if (std::fabs(frac) < kPovEpsilon)
+            r.colour = lo;
+        else if (std::fabs(frac - 1.0) < kPovEpsilon)
+            r.colour = hi;
+        else
+            r.colour = frac * hi + (1.0 - frac) * lo;
+    }
+    if (f.reflectionMetallic != 0.0) {
+        const double F = metallicFresnel(cosAngle);
+        r.colour *= Vec3(1.0) + f.reflectionMetallic * (1.0 - F) * (colour - Vec3(1.0));
+    }
+    return r;
+}
 
 // The texture's layers that the ray sees, top first: POV-Ray's loop in
 // ComputeLightedTexture, which stops where the layers above let less than
@@ -207,12 +273,16 @@ struct ShadedLayer {
 // caller has it (ShadeRequest::pigment). `normal`: the surface's, unit and
 // turned toward the ray, which POV-Ray tilts (ComputeTextureColour turns it
 // first).
+// `rayDir` (unit) and `ior` (ShadeRequest::reflectionIor) give each layer
+// its reflectivity; with conserve_energy a layer lets through less by what it
+// reflects.
 template <std::size_t N>
 std::span<const ShadedLayer> shadedLayers(const Texture& texture, const Vec3& point, const Vec3& normal,
                                           const std::optional<Color>& bottomPigment,
                                           const ShadingSettings& settings,
                                           std::array<ShadedLayer, N>& storage,
-                                          std::vector<ShadedLayer>& overflow) {
+                                          std::vector<ShadedLayer>& overflow, const Vec3& rayDir = Vec3(0.0),
+                                          double ior = 1.0) {
     const std::size_t count = texture.above.size() + 1;
     ShadedLayer* out = storage.data();
     if (count > N) {
@@ -228,8 +298,14 @@ std::span<const ShadedLayer> shadedLayers(const Texture& texture, const Vec3& po
         const Vec3 tilted = layer.normal ? perturbedNormal(*layer.normal, point, normal) : normal;
         const Vec3 before = through;
         through *= layerTransmittance(c);
+        Reflectivity r;
+        if (reflects(layer.finish)) {
+            r = reflectivity(layer.finish, -glm::dot(rayDir, tilted), ior, c.rgb);
+            if (layer.finish.conserveEnergy)
+                through *= glm::min(Vec3(1.0), Vec3(1.0) - r.colour);
+        }
         out[n++] = {&layer.finish, tilted, c.rgb * layerOpacity(c, settings.legacyLayerOpacity), before, weight,
-                    through};
+                    through, c.rgb, r.colour, weight * r.weight};
         weight = std::min(1.0, std::fabs(povGreyscale(through)));
     }
     return {out, n};
@@ -287,7 +363,8 @@ Vec3 shadeSurface(const ShadeRequest& req, std::span<const Light> lights,
     std::array<ShadedLayer, 4> storage;
     std::vector<ShadedLayer> overflow;
     const std::span<const ShadedLayer> layers =
-        shadedLayers(req.texture, req.hit.position, normal, req.pigment, settings, storage, overflow);
+        shadedLayers(req.texture, req.hit.position, normal, req.pigment, settings, storage, overflow, rayDir,
+                     req.reflectionIor);
 
     Vec3 color(0.0);
     bool lit = false;
@@ -305,7 +382,8 @@ Vec3 shadeSurface(const ShadeRequest& req, std::span<const Light> lights,
                     const ShadedLayer& l = layers[j];
                     if (!usesLights(*l.finish)) continue;
                     const double grain = l.finish->crand > 0.0 ? l.finish->crand * req.grain.draw(i, k, j) : 0.0;
-                    color += l.through * directLight(*l.finish, l.pigment, l.normal, rayDir, lights[i], samples[k], grain);
+                    color += l.through * directLight(*l.finish, l.pigment, l.normal, rayDir, lights[i], samples[k],
+                                                     grain, &l.colour);
                 }
         }
     }
@@ -326,16 +404,19 @@ Vec3 shadeSurface(const ShadeRequest& req, std::span<const Light> lights,
     // Reflection (POV-Ray's ComputeReflectivity, ComputeReflection, and the
     // trace-level and ADC tests at the top of TraceRay); after a total
     // internal reflection, not where a layer's normal is the top one's.
+    // Each layer reflects by its reflectivity at the ray's angle; a
+    // reflection exponent raises what is reflected to its power.
     for (const ShadedLayer& l : layers) {
-        const Vec3& reflection = l.finish->reflection;
+        const Vec3& reflection = l.reflectivity;
         if (reflection == Vec3(0.0)) continue;
         if (totalReflection && glm::all(glm::lessThanEqual(glm::abs(l.normal - layers.front().normal), Vec3(1e-10))))
             continue;
-        const double weight =
-            req.weight * l.weight * std::max(reflection.x, std::max(reflection.y, reflection.z));
+        const double weight = req.weight * l.reflectionWeight;
         if (req.depth < settings.maxTraceLevel && weight >= settings.adcBailout) {
             const Ray mirror{req.hit.position, mirrorDirection(rayDir, l.normal, normal)};
-            color += reflection * Vec3(traceReflected(mirror, req.depth + 1, weight));
+            const Vec3 seen = traceReflected(mirror, req.depth + 1, weight);
+            const double e = l.finish->reflectionExponent;
+            color += reflection * (e != 1.0 ? glm::pow(glm::max(seen, Vec3(0.0)), Vec3(e)) : seen);
         }
     }
     return color;

@@ -259,12 +259,32 @@ struct Finish {
     double phongSize = 40.0;
     double specular = 0.0;
     double roughness = 0.05;
+    // POV-Ray's reflection: `reflection` at grazing angles (Reflection_Max),
+    // `reflectionMin` seen head-on (the same when not set). Between them
+    // by (1 - cos)^falloff, or by the Fresnel equation for the object's
+    // ior; `reflectionExponent` is POV-Ray's Reflect_Exp (1 / exponent);
+    // `reflectionMetallic` tints the reflection with the pigment
+    // (docs/rendering.md, "Reflection").
     Vec3 reflection{0.0};
+    std::optional<Vec3> reflectionMin;
+    double reflectionFalloff = 1.0;
+    bool fresnel = false;
+    double reflectionExponent = 1.0;
+    double reflectionMetallic = 0.0;
+    // metallic: highlights take the pigment's colour; conserve_energy: what
+    // a layer reflects is taken off what it lets through.
+    double metallic = 0.0;
+    bool conserveEnergy = false;
     // POV-Ray's graininess: each light's diffuse intensity less crand times
     // a random number in [0, 1) (docs/rendering.md, "crand").
     double crand = 0.0;
     bool operator==(const Finish&) const = default;
 };
+
+// Whether a finish reflects at some angle.
+inline bool reflects(const Finish& f) {
+    return f.reflection != Vec3(0.0) || (f.reflectionMin && *f.reflectionMin != Vec3(0.0));
+}
 
 // One layer of a texture: its pigment, the finish it is lit with and the
 // normal pattern that tilts its surface normal, if any.
