@@ -193,11 +193,13 @@ struct texture_block : if_must<kw_texture, block_open, entries<texture_entry>, t
 // --- interior { Name  ior F  caustics F  fade_distance F  fade_power F  fade_color C } ---
 struct ior_item : if_must<kw_ior, float_value> {};
 struct caustics_item : if_must<kw_caustics, float_value> {};
+struct dispersion_item : if_must<kw_dispersion, float_value> {};
+struct dispersion_samples_item : if_must<kw_dispersion_samples, float_value> {};
 struct interior_fade_distance_item : if_must<kw_fade_distance, float_value> {};
 struct interior_fade_power_item : if_must<kw_fade_power, float_value> {};
 struct fade_colour_item : if_must<sor<kw_fade_color, kw_fade_colour>, colour_value> {};
 struct interior_name : indexed_name {};  // a declared interior
-struct interior_entry : sor<ior_item, caustics_item, interior_fade_distance_item, interior_fade_power_item,
+struct interior_entry : sor<ior_item, caustics_item, dispersion_item, dispersion_samples_item, interior_fade_distance_item, interior_fade_power_item,
                             fade_colour_item, interior_name, unsupported_item> {};
 struct interior_end : rbrace {};
 struct interior_block : if_must<kw_interior, block_open, entries<interior_entry>, interior_end> {};

@@ -974,6 +974,20 @@ std::shared_ptr<const Interior> Interpreter::evalInterior(const Node& block, con
             break;
         }
         case Word::Caustics: in->caustics = finite(n[0], "caustics"); break;
+        case Word::Dispersion: {
+            const double d = evalFloat(n[0]);
+            if (!(d > 0.0) || !std::isfinite(d)) fail(n[0], "dispersion must be positive, not " + formatNumber(d));
+            in->dispersion = d;
+            break;
+        }
+        case Word::DispersionSamples: {
+            // POV-Ray truncates it and wants at least 2.
+            const double s = evalFloat(n[0]);
+            if (!(s >= 2.0) || !(s <= 1000.0))
+                fail(n[0], "dispersion_samples must be from 2 to 1000, not " + formatNumber(s));
+            in->dispersionSamples = static_cast<int>(s);
+            break;
+        }
         case Word::FadeDistance: in->fadeDistance = finite(n[0], "fade_distance"); break;
         case Word::FadePower: in->fadePower = finite(n[0], "fade_power"); break;
         case Word::FadeColor: in->fadeColor = evalRgb(n[0], "fade_color"); break;

@@ -690,6 +690,8 @@ template <> struct action<g::legacy_caustics_item> : ItemAction<Word::Caustics, 
 template <> struct action<g::legacy_refraction_item> : ItemAction<Word::Refraction, 1> {};
 template <> struct action<g::ior_item> : ItemAction<Word::Ior, 1> {};
 template <> struct action<g::caustics_item> : ItemAction<Word::Caustics, 1> {};
+template <> struct action<g::dispersion_item> : ItemAction<Word::Dispersion, 1> {};
+template <> struct action<g::dispersion_samples_item> : ItemAction<Word::DispersionSamples, 1> {};
 template <> struct action<g::interior_fade_distance_item> : ItemAction<Word::FadeDistance, 1> {};
 template <> struct action<g::interior_fade_power_item> : ItemAction<Word::FadePower, 1> {};
 template <> struct action<g::fade_colour_item> : ItemAction<Word::FadeColor, 1> {};

@@ -603,7 +603,7 @@ Vec3 AsosTracer::PixelTrace::shadeLeaf(const ImageSquare& square, int level, std
     LightSample storage;
     // Area lights: shadow beams from the shaded point (render/area_light.hpp),
     // with random numbers of this leaf's own.
-    LightContext context{&s_.area, rng_, subPosition(level, ix, iy), nullptr, {}};
+    LightContext context{&s_.area, rng_, subPosition(level, ix, iy), nullptr, {}, {}};
     auto lightArriving = [&](const ShadingPoint& p) -> std::span<const LightSample> {
         const Light& light = *p.light;
         if (tracer_.sceneLights()[static_cast<std::size_t>(p.lightIndex)].isArea()) {

@@ -27,17 +27,41 @@ Transmitted RayTracer::transmitted(const SurfaceHit& hit, const Ray& ray, int de
     beyond.inside = crossing.beyond;
     ++counters.reflectedRays;
     Transmitted out;
-    if (std::fabs(crossing.iorRatio - 1.0) < 1e-10) {
+    // Refracted with the ior ratio `ior`, or reflected whole.
+    const auto refract = [&](double ior, const LightContext& through) {
+        Transmitted t;
+        if (const std::optional<Vec3> refracted = refractedDirection(d, topNormal, ior)) {
+            t.colour = radiance(Ray{hit.position, *refracted}, depth + 1, weight, counters, through);
+        } else {
+            // Total internal reflection: the mirror ray stays inside.
+            const Vec3 mirror = mirrorDirection(d, topNormal, facingNormal(hit.normal, d));
+            t.colour = radiance(Ray{hit.position, mirror}, depth + 1, weight, counters, context.reflected(depth));
+            t.totalReflection = true;
+        }
+        return t;
+    };
+    const bool dispersive = std::fabs(crossing.dispersionRatio - 1.0) >= 1e-10;
+    if (std::fabs(crossing.iorRatio - 1.0) < 1e-10 && !dispersive) {
         // The same ior on both sides: the ray goes on, at the same level
         // (POV-Ray's continued ray).
         out.colour = radiance(Ray{hit.position, d}, depth, weight, counters, beyond);
-    } else if (const std::optional<Vec3> refracted = refractedDirection(d, topNormal, crossing.iorRatio)) {
-        out.colour = radiance(Ray{hit.position, *refracted}, depth + 1, weight, counters, beyond);
+    } else if (!dispersive) {
+        out = refract(crossing.iorRatio, beyond);
+    } else if (context.band.wavelength != 0.0f) {
+        // A ray of one band already: refracted with that band's ior.
+        out = refract(context.band.ior(crossing.iorRatio, crossing.dispersionRatio), beyond);
     } else {
-        // Total internal reflection: the mirror ray stays inside.
-        const Vec3 mirror = mirrorDirection(d, topNormal, facingNormal(hit.normal, d));
-        out.colour = radiance(Ray{hit.position, mirror}, depth + 1, weight, counters, context.reflected(depth));
-        out.totalReflection = true;
+        // Dispersion: one refracted ray a band, each of its hue, averaged
+        // (POV-Ray's ComputeRefraction); never a total reflection as a whole.
+        const auto bands = static_cast<unsigned>(crossing.bands);
+        for (unsigned i = 0; i < bands; ++i) {
+            LightContext band = beyond;
+            band.band = SpectralBand::of(i, bands);
+            band.key = mix64(beyond.key ^ (std::uint64_t(i + 1) << 48));
+            out.colour += refract(band.band.ior(crossing.iorRatio, crossing.dispersionRatio), band).colour *
+                          band.band.hue();
+        }
+        out.colour /= static_cast<double>(bands);
     }
     // The fade of the inside the ray came through to this hit.
     if (context.inside.contains(interiorKey(object)))

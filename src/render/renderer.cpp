@@ -38,7 +38,7 @@ TileRenderOptions tileOptions(const RenderSettings& s) {
 // The light context of a primary sample: area lights draw their random
 // numbers from its pixel and index.
 LightContext sampleContext(AreaLightScratch& scratch, std::uint64_t seed, const PrimarySample& sample) {
-    return {&scratch, PixelRandom(seed, sample.pixelX, sample.pixelY), sample.index, nullptr, {}};
+    return {&scratch, PixelRandom(seed, sample.pixelX, sample.pixelY), sample.index, nullptr, {}, {}};
 }
 
 // The radiance of eye rays for the classic methods; the grid and jitter

@@ -42,7 +42,7 @@ Vec3 transparentShadowFilter(const Scene& scene, const Vec3& point, const Vec3& 
             // Leaving an inside: its fade over the way through it.
             const void* key = interiorKey(object);
             if (inside.remove(key)) through *= fadeThrough(interior, hit->t - last, false);
-            else inside.push(key, interior.ior);
+            else inside.push(key, interior);
             last = hit->t;
             if (through == Vec3(0.0)) return through;
         }

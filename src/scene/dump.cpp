@@ -231,6 +231,8 @@ void writeObject(Writer& w, const Shape& shape, const Transform& worldFromObject
         w << "  interior {\n    ior ";
         w.num(in.ior) << '\n';
         if (in.caustics != 0.0) (w << "    caustics ").num(in.caustics) << '\n';
+        if (in.dispersion != 1.0) (w << "    dispersion ").num(in.dispersion) << '\n';
+        if (in.dispersionSamples != 7) (w << "    dispersion_samples ").num(in.dispersionSamples) << '\n';
         if (in.fadeDistance != 0.0) (w << "    fade_distance ").num(in.fadeDistance) << '\n';
         if (in.fadePower != 0.0) (w << "    fade_power ").num(in.fadePower) << '\n';
         if (in.fadeColor != Vec3(0.0)) (w << "    fade_color ").rgb(in.fadeColor) << '\n';

@@ -5,6 +5,7 @@
 #include "asos/lang/interpreter.hpp"
 #include "asos/render/renderer.hpp"
 #include "asos/render/interiors.hpp"
+#include "asos/render/spectral.hpp"
 #include "asos/render/shading.hpp"
 #include "render_scenes.hpp"
 
@@ -274,4 +275,31 @@ TEST_CASE("An interior's fade at a known depth", "[transparency][refraction]") {
     CHECK(near(fadeThrough(in, 4.0, true), Vec3(0.75, 0.6, 0.5), 1e-12));
     CHECK(near(fadeThrough(in, 4.0, false), Vec3(1.0), 1e-12));
     CHECK(near(fadeThrough(Interior{}, 4.0, true), Vec3(1.0), 1e-12));
+}
+
+TEST_CASE("Dispersion's bands: their iors and hues, as POV-Ray's", "[transparency][dispersion]") {
+    // Seven bands of 50 nm from 380 nm; the middle one is at 555 nm, the
+    // centre, where the ior is the nominal one.
+    const SpectralBand middle = SpectralBand::of(3, 7);
+    CHECK(middle.wavelength == Approx(555.0));
+    CHECK(middle.bandwidth == Approx(50.0));
+    CHECK(middle.ior(1.5, 1.2) == Approx(1.5));
+    // The violet end's ior over the red end's is the dispersion.
+    const SpectralBand violet{380.0f, 1.0f}, red{730.0f, 1.0f};
+    CHECK(violet.ior(1.5, 1.2) / red.ior(1.5, 1.2) == Approx(1.2));
+    // The bands' hues average to (nearly) white, whatever their number, so
+    // that white seen through glass stays white: the hue integral from 380
+    // to 730 nm, (0.9947, 1, 1) - (0.0009, 0, 0.0038).
+    for (unsigned n : {2u, 4u, 7u, 20u}) {
+        Vec3 sum(0.0);
+        for (unsigned i = 0; i < n; ++i) sum += SpectralBand::of(i, n).hue();
+        sum /= double(n);
+        CHECK(sum.x == Approx(0.9947 - 0.0009).margin(1e-5));
+        CHECK(sum.y == Approx(1.0).margin(1e-5));
+        CHECK(sum.z == Approx(1.0 - 0.0038).margin(1e-5));
+    }
+    // Violet bands are blue, red ones red.
+    const Vec3 first = SpectralBand::of(0, 7).hue(), last = SpectralBand::of(6, 7).hue();
+    CHECK(first.z > first.x);
+    CHECK(last.x > last.z);
 }

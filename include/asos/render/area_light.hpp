@@ -21,6 +21,7 @@
 #include <vector>
 
 #include "asos/render/interiors.hpp"
+#include "asos/render/spectral.hpp"
 #include "asos/geometry/cone.hpp"
 #include "asos/lights/light_piece.hpp"
 #include "asos/render/cone_candidates.hpp"
@@ -134,6 +135,9 @@ struct LightContext {
     // eye ray; a reflected ray keeps its parent's, a ray through a surface
     // gets them as it crosses.
     InteriorList inside;
+    // The band of colour of a ray split by dispersion, which it and the rays
+    // it spawns keep (render/spectral.hpp); wavelength 0: white light.
+    SpectralBand band{};
 
     // The context of a ray reflected at trace level `depth`.
     LightContext reflected(int depth) const {

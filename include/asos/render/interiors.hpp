@@ -4,6 +4,7 @@
 // bookkeeping (trace.cpp, ComputeRefraction), its refraction by Heckbert's
 // method (TraceRefractionRay) and its fade (ComputeLightedTexture,
 // ComputeShadowTexture).
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstdint>
@@ -25,6 +26,8 @@ public:
     struct Entry {
         const void* key = nullptr;
         double ior = 1.0;
+        double dispersion = 1.0;
+        int dispersionSamples = 7;
     };
 
     bool empty() const { return count_ == 0; }
@@ -35,8 +38,8 @@ public:
             if (entries_[i].key == key) return true;
         return false;
     }
-    void push(const void* key, double ior) {
-        if (count_ < kCapacity) entries_[count_++] = {key, ior};
+    void push(const void* key, const Interior& interior) {
+        if (count_ < kCapacity) entries_[count_++] = {key, interior.ior, interior.dispersion, interior.dispersionSamples};
     }
     // Removes `key` (its innermost entry); whether it was there.
     bool remove(const void* key) {
@@ -70,25 +73,39 @@ inline const void* interiorKey(const Object& o) {
 // leaving the innermost interior (into the next one out, or the air),
 // leaving one of two overlapping ones (ratio 1), or entering a new one
 // inside another.
+// The dispersions' ratio and the number of bands a dispersive crossing
+// splits a ray into go the same way (the larger of the two interiors'
+// numbers of bands when leaving one for another).
 struct Crossing {
     InteriorList beyond;
     double iorRatio = 1.0;
+    double dispersionRatio = 1.0;
+    int bands = 7;
 };
 inline Crossing cross(const InteriorList& inside, const Object& o) {
     const Interior& interior = interiorOf(o);
     const void* key = interiorKey(o);
-    Crossing c{inside, 1.0};
+    Crossing c{inside, 1.0, 1.0, interior.dispersionSamples};
     if (inside.empty()) {
-        c.beyond.push(key, interior.ior);
+        c.beyond.push(key, interior);
         c.iorRatio = 1.0 / interior.ior;
+        c.dispersionRatio = 1.0 / interior.dispersion;
     } else if (inside.back().key == key) {
         c.beyond.remove(key);
-        c.iorRatio = interior.ior / (c.beyond.empty() ? 1.0 : c.beyond.back().ior);
+        if (c.beyond.empty()) {
+            c.iorRatio = interior.ior;
+            c.dispersionRatio = interior.dispersion;
+        } else {
+            c.iorRatio = interior.ior / c.beyond.back().ior;
+            c.dispersionRatio = interior.dispersion / c.beyond.back().dispersion;
+            c.bands = std::max(c.bands, c.beyond.back().dispersionSamples);
+        }
     } else if (c.beyond.remove(key)) {
         c.iorRatio = 1.0;
     } else {
         c.iorRatio = inside.back().ior / interior.ior;
-        c.beyond.push(key, interior.ior);
+        c.dispersionRatio = inside.back().dispersion / interior.dispersion;
+        c.beyond.push(key, interior);
     }
     return c;
 }

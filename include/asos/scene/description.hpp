@@ -334,6 +334,10 @@ inline const std::shared_ptr<const Texture>& defaultTexture() {
 struct Interior {
     double ior = 1.0;           // the index of refraction (the air's is 1)
     double caustics = 0.0;      // POV-Ray's faked caustics in the shadows it casts
+    // Dispersion: the ior at the violet end over the one at the red end; a
+    // ray refracted by it splits into dispersionSamples bands of colour.
+    double dispersion = 1.0;
+    int dispersionSamples = 7;
     double fadeDistance = 0.0;  // 0: no fade
     double fadePower = 0.0;
     Vec3 fadeColor{0.0};
