@@ -98,6 +98,11 @@ struct declare_start : seq<hash, kw_declare> {};
 struct local_start : seq<hash, kw_local> {};
 struct declared_name : name {};
 struct declared_target : seq<declared_name, star<subscript>> {};
+// #declare deprecated [once] "message" Name = value: POV-Ray warns with the
+// message where the name is used (the first time only, with once).
+struct deprecation_once : kw_once {};
+struct deprecation_message : seq<expression> {};
+struct deprecation : if_must<kw_deprecated, opt<deprecation_once>, deprecation_message> {};
 struct declare_equals : equals {};
 struct declare_semicolon : semicolon {};
 // A declared block followed by textures: POV-Ray's layered texture, each
@@ -125,8 +130,9 @@ struct declared_value
     : sor<seq<declarable_block, opt<layered_texture>, opt<semicolon>>, seq<array_value, opt<semicolon>>,
           seq<sor<macro_value, lone_name>, sor<semicolon, missing_semicolon>>,
           seq<at<string_start>, expression, opt<semicolon>>, seq<expression, declare_semicolon>> {};
-struct declare_directive : if_must<declare_start, declared_target, declare_equals, declared_value> {};
-struct local_directive : if_must<local_start, declared_target, declare_equals, declared_value> {};
+struct declare_directive
+    : if_must<declare_start, opt<deprecation>, declared_target, declare_equals, declared_value> {};
+struct local_directive : if_must<local_start, opt<deprecation>, declared_target, declare_equals, declared_value> {};
 
 // #undef Name
 struct undef_start : seq<hash, kw_undef> {};

@@ -165,7 +165,8 @@ template <> inline constexpr auto error_message<reflection_block_end> = "expecte
 template <> inline constexpr auto error_message<normal_end> = "expected a normal pattern (bumps, dents, wrinkles, ripples, waves, or gradient, radial, onion, marble, wood, leopard, bozo, spotted, granite, agate), bump_size, accuracy, a transform, a pattern modifier or '}' in the normal";
 template <> inline constexpr auto error_message<interior_end> = "expected an interior item (ior, dispersion, dispersion_samples, caustics, fade_distance, fade_power, fade_color) or '}'";
 template <> inline constexpr auto error_message<material_end> = "expected texture, interior, a transform or '}'";
-template <> inline constexpr auto error_message<finish_end> = "expected a finish item (ambient, diffuse, brilliance, phong, phong_size, specular, roughness, crand, reflection) or '}'";
+template <> inline constexpr auto error_message<deprecation_message> = "expected the message of a deprecated declaration, a string";
+template <> inline constexpr auto error_message<finish_end> = "expected a finish item (ambient, diffuse, brilliance, phong, phong_size, specular, roughness, crand, reflection, reflection_exponent, metallic, conserve_energy) or '}'";
 template <> inline constexpr auto error_message<texture_end> = "expected pigment, normal, finish, a transform or '}' in the texture";
 // objects
 template <> inline constexpr auto error_message<object_end> = "expected an object modifier or '}'";

@@ -347,6 +347,13 @@ Value Interpreter::eval(const Node& n) {
     case NodeKind::Name: {
         const Value* v = lookup(n.id);
         if (!v) fail(n, "'" + nameOf(n) + "' is not declared");
+        if (!deprecations_.empty()) {
+            const auto d = deprecations_.find(n.id);
+            if (d != deprecations_.end() && !(d->second.once && d->second.warned)) {
+                d->second.warned = true;
+                report(Severity::Warning, n, d->second.message);
+            }
+        }
         if (std::holds_alternative<Poison>(*v)) throw Abandon{};
         if (std::holds_alternative<std::shared_ptr<const MacroDef>>(*v))
             fail(n, "'" + nameOf(n) + "' is a macro: call it with its arguments, " + nameOf(n) + "(…)");

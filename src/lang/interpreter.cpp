@@ -418,22 +418,32 @@ BreakNode Interpreter::runDirective(const Node& n, EntryHandler handle) {
         return runSwitch(n, handle);
     case NodeKind::Declare:
     case NodeKind::Local: {
+        // A deprecated declaration's deprecation comes first.
+        const bool deprecated = (n.flags & 2) != 0;
+        const Node& target = n[deprecated ? 1 : 0];
+        const Node& declared = n[deprecated ? 2 : 1];
         Value value = Poison{};
         const std::uint32_t outerDeclaring = declaring_;
-        declaring_ = n[0].kind == NodeKind::Name ? n[0].id : kNoName;
+        declaring_ = target.kind == NodeKind::Name ? target.id : kNoName;
         try {
-            value = evalDeclarable(n[1]);
+            value = evalDeclarable(declared);
             declaring_ = outerDeclaring;
-            if (n.flags && std::holds_alternative<Num>(value))
-                fail(n[1], "expected ';' after the declared value: POV-Ray wants one after a float, a vector "
-                           "or a colour, and this is " + describe(value));
+            if ((n.flags & 1) && std::holds_alternative<Num>(value))
+                fail(declared, "expected ';' after the declared value: POV-Ray wants one after a float, a vector "
+                               "or a colour, and this is " + describe(value));
         } catch (const Abandon&) {
             declaring_ = outerDeclaring;
             // Declared anyway, as poison, so that its uses do not each report
             // "not declared" after the real error.
-            if (n[0].kind != NodeKind::Name) throw;
+            if (target.kind != NodeKind::Name) throw;
         }
-        declare(n[0], std::move(value), n.kind == NodeKind::Local);
+        declare(target, std::move(value), n.kind == NodeKind::Local);
+        if (target.kind == NodeKind::Name) {
+            if (deprecated)
+                deprecations_[target.id] = {evalString(n[0][0]), (n[0].flags & 1) != 0, false};
+            else if (!deprecations_.empty())
+                deprecations_.erase(target.id);
+        }
         return nullptr;
     }
     case NodeKind::Undef: {

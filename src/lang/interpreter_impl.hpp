@@ -454,6 +454,14 @@ private:
     // call it: POV-Ray's functions are not recursive); kNoName: none.
     static constexpr std::uint32_t kNoName = 0xffffffffu;
     std::uint32_t declaring_ = kNoName;
+    // Names declared deprecated: the message their uses are warned with
+    // (only the first, with once).
+    struct Deprecation {
+        std::string message;
+        bool once = false;
+        bool warned = false;
+    };
+    std::unordered_map<std::uint32_t, Deprecation> deprecations_;
     std::vector<std::uint32_t> randomStreams_;  // seed(): POV-Ray's generators, by number
 
     SceneDescription scene_;

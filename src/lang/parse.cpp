@@ -161,6 +161,10 @@ public:
 
     Word pendingWord = Word::None;
     bool missingSemicolon = false;  // for the declaration being read
+    // For each declaration being read, innermost last: whether it is
+    // deprecated (its first child is then the deprecation).
+    std::vector<bool> deprecatedDeclarations;
+    bool deprecationOnce = false;
     const EntryConsumer* consume = nullptr;  // set: hand over each top-level entry
 
     // A top-level entry is complete: give it away and forget its nodes.
@@ -930,8 +934,32 @@ template <NodeKind Kind, Word W>
 struct CloseDeclare {
     template <typename Input>
     static void apply(const Input& in, Builder& b) {
-        b.reduce(Kind, W, 2, posOf(in), b.missingSemicolon ? 1 : 0);
+        const bool deprecated = !b.deprecatedDeclarations.empty() && b.deprecatedDeclarations.back();
+        if (!b.deprecatedDeclarations.empty()) b.deprecatedDeclarations.pop_back();
+        b.reduce(Kind, W, deprecated ? 3 : 2, posOf(in),
+                 static_cast<std::uint8_t>((b.missingSemicolon ? 1 : 0) | (deprecated ? 2 : 0)));
         b.missingSemicolon = false;
+    }
+};
+template <>
+struct action<g::declare_start> {
+    static void apply0(Builder& b) { b.deprecatedDeclarations.push_back(false); }
+};
+template <>
+struct action<g::local_start> {
+    static void apply0(Builder& b) { b.deprecatedDeclarations.push_back(false); }
+};
+template <>
+struct action<g::deprecation_once> {
+    static void apply0(Builder& b) { b.deprecationOnce = true; }
+};
+template <>
+struct action<g::deprecation> {
+    template <typename Input>
+    static void apply(const Input& in, Builder& b) {
+        b.reduce(NodeKind::Item, Word::Deprecated, 1, posOf(in), b.deprecationOnce ? 1 : 0);
+        b.deprecationOnce = false;
+        if (!b.deprecatedDeclarations.empty()) b.deprecatedDeclarations.back() = true;
     }
 };
 template <> struct action<g::declare_directive> : CloseDeclare<NodeKind::Declare, Word::Declare> {};

@@ -37,7 +37,7 @@ enum class NodeKind : std::uint8_t {
     Block,     // word: sphere, pigment, camera, …; flags: leading positional children
     Item,      // word: translate, phong, open, area_light, …; children: its arguments
     Sequence,  // entries in order: a file, a directive's body
-    Declare,   // children: Name (or Index), value; flags: 1 when a lone name or macro call has no ';'
+    Declare,   // children: Name (or Index), value; flags: 1 when a lone name or macro call has no ';', 2 when deprecated (then an Item deprecated, flags 1 for once, comes first)
     Local,     // children: Name (or Index), value; flags: as Declare
     Undef,     // children: Name
     Include,   // children: file name expression

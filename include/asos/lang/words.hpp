@@ -54,6 +54,7 @@ namespace asos::lang {
     WORD(Exponent, "exponent") WORD(ReflectionExponent, "reflection_exponent")                        \
     WORD(ConserveEnergy, "conserve_energy") WORD(Refraction, "refraction")                           \
     WORD(Dispersion, "dispersion") WORD(DispersionSamples, "dispersion_samples")                      \
+    WORD(Deprecated, "deprecated") WORD(Once, "once")                                               \
     WORD(Normal, "normal") WORD(Bumps, "bumps") WORD(Dents, "dents") WORD(Wrinkles, "wrinkles")        \
     WORD(Ripples, "ripples") WORD(Waves, "waves") WORD(BumpSize, "bump_size") WORD(Accuracy, "accuracy") \
     WORD(MaxTraceLevel, "max_trace_level") WORD(AmbientLight, "ambient_light")                        \
