@@ -67,8 +67,10 @@ struct bozo_item : kw_bozo {};
 struct spotted_item : kw_spotted {};
 struct granite_item : kw_granite {};
 struct agate_item : kw_agate {};
+struct crackle_item : kw_crackle {};
 struct map_pattern_item : sor<gradient_item, radial_item, onion_item, marble_item, wood_item, leopard_item,
-                              bozo_item, spotted_item, granite_item, agate_item, function_pattern_item> {};
+                              bozo_item, spotted_item, granite_item, agate_item, crackle_item,
+                              function_pattern_item> {};
 // Their modifiers; the interpreter checks that the pattern takes them.
 struct turbulence_item : if_must<kw_turbulence, vector_value> {};  // a float for all three axes
 struct octaves_item : if_must<kw_octaves, float_value> {};
@@ -78,6 +80,12 @@ struct frequency_item : if_must<kw_frequency, float_value> {};
 struct phase_item : if_must<kw_phase, float_value> {};
 struct agate_turb_item : if_must<kw_agate_turb, float_value> {};
 struct noise_generator_item : if_must<kw_noise_generator, float_value> {};
+// crackle's own: form <f1, f2, f3>, metric M (a vector, as POV-Ray reads it;
+// its x counts), offset F, solid.
+struct form_item : if_must<kw_form, vector_value> {};
+struct metric_item : if_must<kw_metric, vector_value> {};
+struct offset_item : if_must<kw_offset, float_value> {};
+struct solid_item : kw_solid {};
 struct ramp_wave_item : kw_ramp_wave {};
 struct triangle_wave_item : kw_triangle_wave {};
 struct sine_wave_item : kw_sine_wave {};
@@ -97,7 +105,8 @@ struct colour_map_block
     : if_must<kw_colour_map, block_open, opt<map_name>, star<map_entry>, colour_map_end> {};
 struct map_modifier
     : sor<turbulence_item, octaves_item, omega_item, lambda_item, frequency_item, phase_item, agate_turb_item,
-          noise_generator_item, ramp_wave_item, triangle_wave_item, sine_wave_item, colour_map_block> {};
+          noise_generator_item, ramp_wave_item, triangle_wave_item, sine_wave_item, form_item, metric_item,
+          offset_item, solid_item, colour_map_block> {};
 struct pigment_colour : seq<colour_in_place> {};  // a colour, or a declared pigment
 // The normal patterns, in a pigment as map patterns of their own values.
 struct bumps_item : kw_bumps {};
@@ -183,7 +192,7 @@ struct finish_block : if_must<kw_finish, block_open, entries<finish_entry>, fini
 // --- texture { Name  pigment {…}  finish {…}  transforms } ------------------------
 // A pattern of textures (`texture { checker texture {…} … }`) is not ours.
 struct texture_pattern : sor<kw_checker, kw_brick, kw_gradient, kw_radial, kw_onion, kw_marble, kw_wood, kw_leopard,
-                             kw_bozo, kw_spotted, kw_granite, kw_agate> {};
+                             kw_bozo, kw_spotted, kw_granite, kw_agate, kw_crackle> {};
 struct texture_name : indexed_name {};  // a declared texture
 struct texture_entry
     : sor<pigment_block, normal_block, finish_block, transform_item, texture_pattern, texture_name, unsupported_item> {};

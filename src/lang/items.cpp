@@ -68,7 +68,7 @@ bool isMapPattern(Word w) {
     switch (w) {
     case Word::Gradient: case Word::Radial: case Word::Onion: case Word::Marble: case Word::Wood:
     case Word::Leopard: case Word::Bozo: case Word::Spotted: case Word::Granite: case Word::Agate:
-    case Word::Function:
+    case Word::Crackle: case Word::Function:
     case Word::Bumps: case Word::Dents: case Word::Wrinkles: case Word::Ripples: case Word::Waves:
         return true;
     default: return false;
@@ -86,6 +86,7 @@ Pigment::Kind mapKind(Word w) {
     case Word::Bozo: return Pigment::Kind::Bozo;
     case Word::Spotted: return Pigment::Kind::Spotted;
     case Word::Granite: return Pigment::Kind::Granite;
+    case Word::Crackle: return Pigment::Kind::Crackle;
     case Word::Function: return Pigment::Kind::Function;
     case Word::Bumps: return Pigment::Kind::Bumps;
     case Word::Dents: return Pigment::Kind::Dents;
@@ -100,10 +101,15 @@ bool isMapModifier(Word w) {
     switch (w) {
     case Word::Turbulence: case Word::Octaves: case Word::Omega: case Word::Lambda: case Word::Frequency:
     case Word::Phase: case Word::RampWave: case Word::TriangleWave: case Word::SineWave: case Word::AgateTurb:
-    case Word::NoiseGenerator:
+    case Word::NoiseGenerator: case Word::Form: case Word::Metric: case Word::Offset: case Word::Solid:
         return true;
     default: return false;
     }
+}
+
+// crackle's own modifiers, which POV-Ray refuses on any other pattern.
+bool isCrackleModifier(Word w) {
+    return w == Word::Form || w == Word::Metric || w == Word::Offset || w == Word::Solid;
 }
 
 bool isMapPigment(Pigment::Kind k) {
@@ -702,6 +708,10 @@ std::shared_ptr<const Pigment> Interpreter::evalPigment(const Node& block, const
 // The modifiers of the map patterns, in any order after the pattern, as
 // POV-Ray reads them with the transforms.
 void Interpreter::applyMapModifier(const Node& n, Pigment& p) {
+    if (isCrackleModifier(n.word)) {
+        setMapModifier(n, p);
+        return;
+    }
     if (p.kind == Pigment::Kind::Checker || p.kind == Pigment::Kind::Brick)
         fail(n, "'" + std::string(wordText(n.word)) + "' on " +
                     (p.kind == Pigment::Kind::Checker ? "checker" : "brick") + " is not supported by asos");
@@ -718,6 +728,13 @@ void Interpreter::applyMapModifier(const Node& n, Pigment& p) {
 // but the modifiers read before it (turbulence, a colour map) stay.
 void Interpreter::startMapPattern(const Node& n, Pigment& p) {
     p.kind = mapKind(n.word);
+    if (n.word == Word::Crackle) {
+        const Pigment fresh;
+        p.crackleForm = fresh.crackleForm;
+        p.crackleMetric = fresh.crackleMetric;
+        p.crackleOffset = fresh.crackleOffset;
+        p.crackleSolid = fresh.crackleSolid;
+    }
     p.function = n.word == Word::Function ? compileFunctionOfPoint(n[0]) : nullptr;
     p.wave = (n.word == Word::Marble || n.word == Word::Wood) ? Pigment::Wave::Triangle : Pigment::Wave::Ramp;
     if (n.word == Word::Gradient) {
@@ -759,6 +776,14 @@ void Interpreter::setMapModifier(const Node& n, Pigment& p) {
         p.agateTurb = evalFloat(n[0]);
         break;
     case Word::NoiseGenerator: p.noiseGenerator = evalNoiseGenerator(n[0]); break;
+    case Word::Form: case Word::Metric: case Word::Offset: case Word::Solid:
+        if (p.kind != Pigment::Kind::Crackle)
+            fail(n, "'" + std::string(wordText(n.word)) + "' applies only to the crackle pattern");
+        if (n.word == Word::Form) p.crackleForm = evalVector(n[0]);
+        if (n.word == Word::Metric) p.crackleMetric = evalVector(n[0]).x;  // POV-Ray reads a vector, uses x
+        if (n.word == Word::Offset) p.crackleOffset = evalFloat(n[0]);
+        if (n.word == Word::Solid) p.crackleSolid = true;
+        break;
     default: fail(n, "this is not a pattern modifier");
     }
 }

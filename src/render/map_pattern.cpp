@@ -4,6 +4,7 @@
 #include <cmath>
 #include <numbers>
 
+#include "asos/render/crackle_pattern.hpp"
 #include "asos/render/normal_pattern.hpp"
 #include "asos/render/pov_noise.hpp"
 
@@ -119,6 +120,7 @@ double rawValue(const Pigment& p, const Vec3& q) {
             const double v = 0.5 * (PovNoise::cycloidal(1.3 * turb + 1.1 * q.z) + 1.0);
             return v < 0.0 ? 0.0 : std::pow(std::min(1.0, v), 0.77);
         }
+        case Pigment::Kind::Crackle: return CracklePattern::tables().value(p, q, generatorOf(p));
         case Pigment::Kind::Function: {
             // POV-Ray's FunctionPattern: the function of the point, above 1
             // wrapped as gradient's; NaN (sqrt(-1) …) reads as 0 here.

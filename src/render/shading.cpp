@@ -23,7 +23,7 @@ Color evaluatePigment(const Pigment& pigment, const Vec3& worldPoint) {
         case Pigment::Kind::Gradient: case Pigment::Kind::Radial: case Pigment::Kind::Onion:
         case Pigment::Kind::Marble: case Pigment::Kind::Wood: case Pigment::Kind::Leopard:
         case Pigment::Kind::Bozo: case Pigment::Kind::Spotted: case Pigment::Kind::Granite:
-        case Pigment::Kind::Agate: case Pigment::Kind::Bumps: case Pigment::Kind::Dents:
+        case Pigment::Kind::Agate: case Pigment::Kind::Crackle: case Pigment::Kind::Bumps: case Pigment::Kind::Dents:
         case Pigment::Kind::Wrinkles: case Pigment::Kind::Ripples: case Pigment::Kind::Waves:
         case Pigment::Kind::Function: {
             const Vec3 p(pigment.worldFromPattern.inverseMatrix() * Vec4(worldPoint, 1.0));

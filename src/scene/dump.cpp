@@ -260,7 +260,8 @@ void writeCsg(Writer& w, const CsgTree& tree, std::uint32_t index, const Object*
     w << "}\n";
 }
 
-// A map pattern's name (and gradient's vector, agate's agate_turb).
+// A map pattern's name (and gradient's vector, agate's agate_turb,
+// crackle's form, metric, offset and solid).
 void writeMapPatternName(Writer& w, const Pigment& p) {
     switch (p.kind) {
         case Pigment::Kind::Solid: case Pigment::Kind::Checker: case Pigment::Kind::Brick: break;
@@ -284,6 +285,13 @@ void writeMapPatternName(Writer& w, const Pigment& p) {
         case Pigment::Kind::Agate:
             w << "agate agate_turb ";
             w.num(p.agateTurb);
+            break;
+        case Pigment::Kind::Crackle:
+            w << "crackle form ";
+            w.vec(p.crackleForm) << " metric ";
+            w.num(p.crackleMetric) << " offset ";
+            w.num(p.crackleOffset);
+            if (p.crackleSolid) w << " solid";
             break;
         case Pigment::Kind::Function: {
             const std::string xyz[] = {"x", "y", "z"};

@@ -524,6 +524,49 @@ TEST_CASE("normal { } belongs to a texture layer, as POV-Ray reads it", "[lang][
           std::string::npos);
 }
 
+TEST_CASE("crackle's form, metric, offset and solid, as POV-Ray reads them", "[lang][interpreter]") {
+    Run r = run(R"(
+        #declare Cells = pigment { crackle solid metric 3 }
+        sphere { 0, 1 pigment { crackle } }
+        sphere { 0, 1 pigment { crackle form <1, 0, 0> metric <1, 5, 5> offset 0.2 } }
+        sphere { 0, 1 pigment { Cells offset 0.1 } }
+        sphere { 0, 1 pigment { Cells crackle } }
+        sphere { 0, 1 normal { crackle 0.3 metric 1.5 } }
+    )");
+    const auto& scene = ok(r);
+    REQUIRE(scene.objects.size() == 5);
+    const Pigment& plain = scene.objects[0].texture->pigment;
+    CHECK(plain.kind == Pigment::Kind::Crackle);
+    CHECK(plain.crackleForm == Vec3(-1, 1, 0));
+    CHECK(plain.crackleMetric == 2.0);
+    CHECK(plain.crackleOffset == 0.0);
+    CHECK(!plain.crackleSolid);
+    const Pigment& given = scene.objects[1].texture->pigment;
+    CHECK(given.crackleForm == Vec3(1, 0, 0));
+    CHECK(given.crackleMetric == 1.0);  // a vector's x
+    CHECK(given.crackleOffset == 0.2);
+    // A declared crackle keeps its modifiers; crackle again starts afresh.
+    const Pigment& declared = scene.objects[2].texture->pigment;
+    CHECK(declared.crackleSolid);
+    CHECK(declared.crackleMetric == 3.0);
+    CHECK(declared.crackleOffset == 0.1);
+    CHECK(!scene.objects[3].texture->pigment.crackleSolid);
+    CHECK(scene.objects[3].texture->pigment.crackleMetric == 2.0);
+    const Normal& normal = *scene.objects[4].texture->normal;
+    CHECK(normal.kind == Normal::Kind::Pattern);
+    CHECK(normal.pattern.kind == Pigment::Kind::Crackle);
+    CHECK(normal.amount == 0.3);
+    CHECK(normal.pattern.crackleMetric == 1.5);
+
+    // As POV-Ray: crackle's modifiers on any other pattern are refused.
+    CHECK(run("sphere { 0, 1 pigment { granite form <1, 0, 0> } }").errors().find(
+              "'form' applies only to the crackle pattern") != std::string::npos);
+    CHECK(run("sphere { 0, 1 pigment { rgb 1 solid } }").errors().find(
+              "'solid' applies only to the crackle pattern") != std::string::npos);
+    CHECK(run("sphere { 0, 1 normal { bumps offset 0.1 } }").errors().find(
+              "'offset' applies only to the crackle pattern") != std::string::npos);
+}
+
 TEST_CASE("equal textures are shared", "[lang][interpreter]") {
     Run run4 = run("#declare C = rgb <1, 0, 0>;\n"
                                "sphere { 0, 1 pigment { C } }\nsphere { x, 1 pigment { C } }\n"

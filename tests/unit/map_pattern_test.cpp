@@ -10,6 +10,7 @@
 #include <cmath>
 #include <numbers>
 
+#include "asos/render/crackle_pattern.hpp"
 #include "asos/render/map_pattern.hpp"
 #include "asos/render/pattern_edges.hpp"
 #include "asos/render/pov_noise.hpp"
@@ -152,4 +153,62 @@ TEST_CASE("bumps, dents, wrinkles, ripples and waves as pigments give POV-Ray's 
             CHECK(mapPatternValue(p, points[i]) == Approx(c.values[i]).margin(1e-6));
         }
     }
+}
+
+// crackle against POV-Ray's values, printed by povray 3.7.0 through
+// `function { pigment { crackle … color_map { [0 rgb 0] [1 rgb 1] } } }`
+// (its red channel, a float: hence the tolerance) at five points.
+TEST_CASE("crackle gives POV-Ray's values", "[pattern]") {
+    const Vec3 points[] = {{0.3, 0.7, 0.1}, {-2.25, 3.5, 11.75}, {1.1, -0.4, 2.6}, {100.1, -50.2, 7.3}, {0, 0, 0}};
+    struct Case {
+        const char* name;
+        Vec3 form;
+        double metric, offset;
+        bool solid;
+        double values[5];
+    };
+    const Case cases[] = {
+        {"default", {-1, 1, 0}, 2.0, 0.0, false,
+         {0.157559543848, 0.073333889246, 0.270912557840, 0.165171772242, 0.109558716416}},
+        {"metric 1", {-1, 1, 0}, 1.0, 0.0, false,
+         {0.243861094117, 0.152977645397, 0.492088884115, 0.215919449925, 0.184853881598}},
+        {"metric 3 offset 0.2", {-1, 1, 0}, 3.0, 0.2, false,
+         {0.135726124048, 0.048524614424, 0.200528547168, 0.139489054680, 0.096732050180}},
+        {"form <1, 0, 0>", {1, 0, 0}, 2.0, 0.0, false,
+         {0.551982760429, 0.441605359316, 0.298547774553, 0.341674745083, 0.635122716427}},
+        {"form <0.5, 0.3, -0.2> offset 0.1", {0.5, 0.3, -0.2}, 2.0, 0.1, false,
+         {0.315670460463, 0.175477623940, 0.190046370029, 0.146420478821, 0.368169873953}},
+        {"solid", {-1, 1, 0}, 2.0, 0.0, true,
+         {0.432515680790, 0.312351942062, 0.451300561428, 0.589416325092, 0.457736402750}},
+        // Above 1, clipped.
+        {"metric 1 offset 0.3 form <0.2, 0.3, 0.4>", {0.2, 0.3, 0.4}, 1.0, 0.3, false, {1, 1, 1, 1, 1}},
+    };
+    for (const Case& c : cases) {
+        Pigment p;
+        p.kind = Pigment::Kind::Crackle;
+        p.crackleForm = c.form;
+        p.crackleMetric = c.metric;
+        p.crackleOffset = c.offset;
+        p.crackleSolid = c.solid;
+        for (int i = 0; i < 5; ++i) {
+            INFO(c.name << ", point " << i);
+            CHECK(mapPatternValue(p, points[i]) == Approx(c.values[i]).margin(1e-6));
+        }
+    }
+}
+
+// POV-Ray's points, one per unit cube: in their cube, and the same each time.
+TEST_CASE("crackle's points lie in their cubes", "[pattern]") {
+    const CracklePattern& crackle = CracklePattern::tables();
+    for (int x = -3; x <= 3; ++x)
+        for (int y = -3; y <= 3; ++y) {
+            const Vec3 point = crackle.pointInCube(x, y, 4097);
+            CHECK(point.x >= x);
+            CHECK(point.x < x + 1);
+            CHECK(point.y >= y);
+            CHECK(point.y < y + 1);
+            CHECK(point.z >= 4097);
+            CHECK(point.z < 4098);
+            CHECK(crackle.pointInCube(x, y, 4097) == point);
+        }
 }

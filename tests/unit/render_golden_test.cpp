@@ -78,7 +78,8 @@ void compareWithPovray(const std::string& scene, RenderMethod method, const std:
 // recursion of reflection (reflection), the six primitives (primitives), the
 // brick pattern (brick), the working gamma: none (gamma_off, a scene
 // without #version or assumed_gamma) and 2.2 (assumed_gamma), the map
-// patterns with POV-Ray's noise and turbulence and the function pattern (map_*), CSG (csg),
+// patterns with POV-Ray's noise and turbulence, the function pattern and
+// crackle (map_*), CSG (csg),
 // layered textures (layered, and layered_legacy for a scene older than 3.7),
 // the normal patterns (normals) and their values as pigment patterns
 // (map_normal_patterns), sky_sphere with fog (atmosphere, and
@@ -90,7 +91,8 @@ TEST_CASE("The renderer matches POV-Ray with one ray per pixel", "[golden][povra
     for (const char* scene : {"flat_perspective", "flat_orthographic", "lighting", "reflection", "primitives",
                               "brick", "gamma_off", "assumed_gamma", "map_plain", "map_noise", "map_turbulence",
                               "csg", "layered", "layered_legacy", "normals", "atmosphere", "atmosphere_legacy",
-                              "map_normal_patterns", "map_function", "transparency", "refraction", "reflection_block", "dispersion"})
+                              "map_normal_patterns", "map_function", "map_crackle", "transparency", "refraction",
+                              "reflection_block", "dispersion"})
         compareWithPovray(scene, RenderMethod::Single, "", "-A");
 }
 

@@ -44,6 +44,8 @@ namespace asos::lang {
     WORD(Gradient, "gradient") WORD(Radial, "radial") WORD(Onion, "onion") WORD(Marble, "marble")          \
     WORD(Wood, "wood") WORD(Leopard, "leopard") WORD(Bozo, "bozo") WORD(Spotted, "spotted")                \
     WORD(Granite, "granite") WORD(Agate, "agate") WORD(AgateTurb, "agate_turb")                          \
+    WORD(Crackle, "crackle") WORD(Form, "form") WORD(Metric, "metric") WORD(Offset, "offset")              \
+    WORD(Solid, "solid")                                                                           \
     WORD(Turbulence, "turbulence") WORD(Octaves, "octaves") WORD(Omega, "omega") WORD(Lambda, "lambda")    \
     WORD(RampWave, "ramp_wave") WORD(TriangleWave, "triangle_wave") WORD(SineWave, "sine_wave")          \
     WORD(Frequency, "frequency") WORD(Phase, "phase") WORD(NoiseGenerator, "noise_generator")             \

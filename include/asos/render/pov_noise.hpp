@@ -32,6 +32,12 @@ public:
     // computes it; later versions look it up in a table of 1000, which
     // would move wood's rings and the sine wave by up to 4/255 here.)
     static double cycloidal(double x);
+    // POV-Ray's Hash3d: the lattice hash of an integer cell, 0..4095 (each
+    // coordinate taken modulo 4096), as crackle picks its cells' points.
+    int hash3d(int x, int y, int z) const {
+        const int xy = hash_[static_cast<std::size_t>(hash_[static_cast<std::size_t>(x & 0xFFF)] ^ (y & 0xFFF))];
+        return hash_[static_cast<std::size_t>(xy ^ (z & 0xFFF))];
+    }
 
 private:
     // A point's lattice cell: the fractions, their s-curves and the hashes

@@ -203,6 +203,7 @@ struct Pigment {
     // value over [0, 1] through a colour map (render/map_pattern.hpp).
     enum class Kind {
         Solid, Checker, Brick, Gradient, Radial, Onion, Marble, Wood, Leopard, Bozo, Spotted, Granite, Agate,
+        Crackle,
         // The normal patterns' own values as pigment patterns (POV-Ray's
         // pattern.cpp): bumps is bozo's noise, dents its cube, wrinkles ten
         // octaves of it, ripples and waves POV-Ray's ten wave sources.
@@ -226,6 +227,13 @@ struct Pigment {
     double frequency = 1.0;
     double phase = 0.0;
     double agateTurb = 1.0;
+    // crackle's form (the weights of the distances to the nearest three
+    // points), metric (the exponent of its distance), offset, and solid
+    // (each cell the noise at its point), POV-Ray's defaults.
+    Vec3 crackleForm{-1.0, 1.0, 0.0};
+    double crackleMetric = 2.0;
+    double crackleOffset = 0.0;
+    bool crackleSolid = false;
     int noiseGenerator = 0;               // 1, 2 or 3; 0: the scene's (global_settings)
     Transform worldFromPattern;           // full transform of the pattern space
     // Kind::Function: the function of x, y, z (shared; equal when the same one).

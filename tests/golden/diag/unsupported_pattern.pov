@@ -1,1 +1,1 @@
-plane { y, 0 pigment { crackle scale 2 } }
+plane { y, 0 pigment { quilted scale 2 } }
