@@ -360,6 +360,21 @@ BreakNode Interpreter::runSequence(const Node& seq, EntryHandler handle) {
     return runBody(seq.children(), handle);
 }
 
+// Where a relative file name is looked for, in order, each folder once:
+// beside the current file, beside the scene, in each -L folder, then in
+// POV-Ray's library folders.
+std::vector<std::filesystem::path> Interpreter::searchFolders() const {
+    std::vector<std::filesystem::path> folders;
+    auto add = [&](const std::filesystem::path& dir) {
+        if (std::find(folders.begin(), folders.end(), dir) == folders.end()) folders.push_back(dir);
+    };
+    add(file_->path.parent_path());
+    add(files_.front().path.parent_path());
+    for (const auto& dir : options_.includePaths) add(dir);
+    for (const auto& dir : options_.libraryPaths) add(dir);
+    return folders;
+}
+
 bool Interpreter::truth(const Node& condition) {
     return std::abs(evalFloat(condition)) > kPovEpsilon;
 }
@@ -610,17 +625,9 @@ void Interpreter::runInclude(const Node& n, EntryHandler handle) {
 
     // Beside the including file, beside the scene, in each -L folder, then in
     // POV-Ray's library folders.
-    std::vector<std::filesystem::path> folders;
     const std::filesystem::path asked(name);
-    if (!asked.is_absolute()) {
-        auto add = [&](const std::filesystem::path& dir) {
-            if (std::find(folders.begin(), folders.end(), dir) == folders.end()) folders.push_back(dir);
-        };
-        add(file_->path.parent_path());
-        add(files_.front().path.parent_path());
-        for (const auto& dir : options_.includePaths) add(dir);
-        for (const auto& dir : options_.libraryPaths) add(dir);
-    }
+    std::vector<std::filesystem::path> folders;
+    if (!asked.is_absolute()) folders = searchFolders();
     std::filesystem::path found;
     std::filesystem::path notAFile;  // the first match that is a folder or a device (/dev/zero)
     std::error_code ec;

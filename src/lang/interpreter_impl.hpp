@@ -268,6 +268,7 @@ public:
     double positiveExponent(const Node& n);
     std::shared_ptr<const Texture> withTopLayerItem(const Texture& base, const Node& n);
     std::string evalString(const Node& n);
+    std::vector<std::filesystem::path> searchFolders() const;
     const Value* lookup(std::uint32_t id) const;
     Value evalMacroValue(const Node& call);
     bool isDefined(const Node& n);

@@ -58,19 +58,9 @@ void Interpreter::evalText(const Node& block, ObjectTree& t) {
 
     // Beside the current file, beside the scene, in each -L folder, then in
     // POV-Ray's library folders, as an include file.
-    std::vector<std::filesystem::path> folders;
     const std::filesystem::path asked(name);
-    if (!asked.is_absolute()) {
-        auto add = [&](const std::filesystem::path& dir) {
-            if (std::find(folders.begin(), folders.end(), dir) == folders.end()) folders.push_back(dir);
-        };
-        add(file_->path.parent_path());
-        add(files_.front().path.parent_path());
-        for (const auto& dir : options_.includePaths) add(dir);
-        for (const auto& dir : options_.libraryPaths) add(dir);
-    } else {
-        folders.emplace_back();
-    }
+    const std::vector<std::filesystem::path> folders =
+        asked.is_absolute() ? std::vector<std::filesystem::path>{std::filesystem::path()} : searchFolders();
     std::filesystem::path found;
     std::error_code ec;
     // As POV-Ray, a name without an extension is tried with ".ttf" too.
