@@ -584,15 +584,13 @@ struct action<g::colour_tail> {
     static void apply0(Builder& b) { b.close(NodeKind::Colour, Word::None, b.frameStart(), 1); }
 };
 
-// Blocks: '{' opens the children; the block's rule closes them.
-template <>
-struct action<g::block_open> {
+// Blocks: '{' opens the children; the block's rule closes them. The
+// other rules that open a frame for a rule closing it later take it too.
+struct OpenFrame {
     static void apply0(Builder& b) { b.open(); }
 };
-template <>
-struct action<g::reflection_open> {
-    static void apply0(Builder& b) { b.open(); }
-};
+template <> struct action<g::block_open> : OpenFrame {};
+template <> struct action<g::reflection_open> : OpenFrame {};
 template <>
 struct action<g::arguments_end> {
     static void apply0(Builder& b) { b.frame().positional = static_cast<int>(b.frameSize()); }
@@ -794,25 +792,13 @@ struct ClosePattern {
 template <> struct action<g::checker_item> : ClosePattern<Word::Checker> {};
 // A colour map's entry: its value and one colour, or POV-Ray's older two
 // values and two colours.
-template <>
-struct action<g::map_entry_start> {
-    static void apply0(Builder& b) { b.open(); }
-};
+template <> struct action<g::map_entry_start> : OpenFrame {};
 template <> struct action<g::map_entry> : ClosePattern<Word::ColorMap> {};
-template <>
-struct action<g::hollow_start> {
-    static void apply0(Builder& b) { b.open(); }
-};
+template <> struct action<g::hollow_start> : OpenFrame {};
 template <> struct action<g::hollow_item> : ClosePattern<Word::Hollow> {};
-template <>
-struct action<g::fresnel_start> {
-    static void apply0(Builder& b) { b.open(); }
-};
+template <> struct action<g::fresnel_start> : OpenFrame {};
 template <> struct action<g::fresnel_item> : ClosePattern<Word::Fresnel> {};
-template <>
-struct action<g::metallic_start> {
-    static void apply0(Builder& b) { b.open(); }
-};
+template <> struct action<g::metallic_start> : OpenFrame {};
 template <> struct action<g::metallic_item> : ClosePattern<Word::Metallic> {};
 template <> struct action<g::brick_item> : ClosePattern<Word::Brick> {};
 template <>
