@@ -61,11 +61,9 @@ Vec3 directLight(const Finish& finish, const Vec3& pigment, const Vec3& normal, 
     if (light.shadowless) return result;
     // metallic: the highlights take the surface's colour, less so toward
     // grazing light (ComputePhongColour, ComputeSpecularColour).
-    const Vec3 highlight =
-        finish.metallic > 0.0
-            ? lightColor * (Vec3(1.0) + finish.metallic * (1.0 - metallicFresnel(cosIncidence)) *
-                                            ((colour ? *colour : pigment) - Vec3(1.0)))
-            : lightColor;
+    const Vec3 highlight = finish.metallic > 0.0
+                               ? lightColor * metallicTint(finish.metallic, cosIncidence, colour ? *colour : pigment)
+                               : lightColor;
     if (finish.phong > 0.0) {
         // Phong: the mirror of the eye ray against the light direction.
         const Vec3 mirror = rayDir - 2.0 * glm::dot(rayDir, normal) * normal;

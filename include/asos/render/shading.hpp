@@ -16,6 +16,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <numbers>
 #include <optional>
 #include <span>
 #include <vector>
@@ -160,9 +161,15 @@ inline Vec3 mirrorDirection(const Vec3& d, const Vec3& tilted, const Vec3& surfa
 // tint), 1 at grazing angles, for the cosine `cosAngle` of the angle to the
 // normal.
 inline double metallicFresnel(double cosAngle) {
-    const double x = std::fabs(std::acos(std::clamp(cosAngle, -1.0, 1.0))) / (0.5 * 3.14159265358979323846);
+    const double x = std::fabs(std::acos(std::clamp(cosAngle, -1.0, 1.0))) / (0.5 * std::numbers::pi);
     const double F = 0.014567225 / ((x - 1.12) * (x - 1.12)) - 0.011612903;
     return std::clamp(F, 0.0, 1.0);
+}
+
+// What `metallic` multiplies a highlight or a reflection by: the surface's
+// `colour` head-on, white at grazing angles (metallicFresnel), by `amount`.
+inline Vec3 metallicTint(double amount, double cosAngle, const Vec3& colour) {
+    return Vec3(1.0) + amount * (1.0 - metallicFresnel(cosAngle)) * (colour - Vec3(1.0));
 }
 
 // ambient x pigment x ambient_light.
@@ -258,10 +265,7 @@ inline Reflectivity reflectivity(const Finish& f, double cosAngle, double ior, c
         else
             r.colour = frac * hi + (1.0 - frac) * lo;
     }
-    if (f.reflectionMetallic != 0.0) {
-        const double F = metallicFresnel(cosAngle);
-        r.colour *= Vec3(1.0) + f.reflectionMetallic * (1.0 - F) * (colour - Vec3(1.0));
-    }
+    if (f.reflectionMetallic != 0.0) r.colour *= metallicTint(f.reflectionMetallic, cosAngle, colour);
     return r;
 }
 
