@@ -32,6 +32,7 @@ ASOS_BODY_CONTEXT(value_entry, Value, "expected one value (an expression, an obj
 ASOS_BODY_CONTEXT(top_entry, Top, "expected a scene item (camera, light_source, an object, global_settings, background, sky_sphere, fog) or a directive, as the macro is called at the top of the scene")
 ASOS_BODY_CONTEXT(object_modifier, ObjectModifier, "expected an object modifier, as the macro is called among an object's modifiers")
 ASOS_BODY_CONTEXT(union_entry, Union, "expected an object, a light_source or an object modifier, as the macro is called in a union")
+ASOS_BODY_CONTEXT(clip_entry, Clip, "expected an object, as the macro is called in clipped_by or bounded_by")
 ASOS_BODY_CONTEXT(mesh_entry, Mesh, "expected a triangle, a smooth_triangle or an object modifier, as the macro is called in a mesh")
 ASOS_BODY_CONTEXT(mesh2_item, Mesh2List, "expected a vector, as the macro is called in a mesh2's list")
 ASOS_BODY_CONTEXT(light_entry, Light, "expected a light_source item, as the macro is called in a light_source")
@@ -170,6 +171,9 @@ template <> inline constexpr auto error_message<finish_end> = "expected a finish
 template <> inline constexpr auto error_message<texture_end> = "expected pigment, normal, finish, a transform or '}' in the texture";
 // objects
 template <> inline constexpr auto error_message<object_end> = "expected an object modifier or '}'";
+template <> inline constexpr auto error_message<clip_body> = "expected objects or bounded_by in clipped_by";
+template <> inline constexpr auto error_message<bound_body> = "expected objects or clipped_by in bounded_by";
+template <> inline constexpr auto error_message<clip_end> = "expected an object or '}' (or one of bounded_by, clipped_by alone)";
 template <> inline constexpr auto error_message<sphere_center> = "expected the center of the sphere";
 template <> inline constexpr auto error_message<sphere_radius> = "expected the radius of the sphere";
 template <> inline constexpr auto error_message<box_corner> = "expected a corner of the box";

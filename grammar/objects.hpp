@@ -140,6 +140,18 @@ struct object_statement : sor<sphere_block, box_block, cone_block, cylinder_bloc
                               intersection_block, merge_block, object_block, quadric_block, torus_block, text_block,
                               triangle_block, smooth_triangle_block, mesh_block, mesh2_block> {};
 
+// clipped_by { objects… } | clipped_by { bounded_by }, and bounded_by { objects… } |
+// bounded_by { clipped_by }: POV-Ray's clip and bound lists, or the link that
+// makes one list serve as both.
+struct clip_entry : sor<object_statement, transform_item, unsupported_item> {};
+struct clip_link : kw_bounded_by {};   // in clipped_by: the bound's objects clip
+struct bound_link : kw_clipped_by {};  // in bounded_by: the clip's objects bound
+struct clip_end : rbrace {};
+struct clip_body : sor<clip_link, entries<clip_entry>> {};
+struct bound_body : sor<bound_link, entries<clip_entry>> {};
+struct clipped_by_block : if_must<kw_clipped_by, block_open, clip_body, clip_end> {};
+struct bounded_by_block : if_must<kw_bounded_by, block_open, bound_body, clip_end> {};
+
 // --- light_source { <position>, colour  modifiers… } --------------------------------
 struct light_position : seq<expression> {};
 struct light_colour : opt<opt_comma, colour_in_place> {};  // absent only after a light identifier

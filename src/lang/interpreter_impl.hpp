@@ -5,8 +5,10 @@
 #include <deque>
 #include <filesystem>
 #include <memory>
+#include <set>
 #include <span>
 #include <string>
+#include <tuple>
 #include <unordered_map>
 #include <variant>
 #include <vector>
@@ -53,6 +55,8 @@ struct Num {
 // intersection or difference of those (Kind::Union, its `op`). Kept as a tree
 // until it is placed in the scene, because POV-Ray resolves a union's texture
 // for its untextured children only then.
+struct ClipLists;
+
 struct ObjectTree {
     enum class Kind : std::uint8_t { Shape, Light, Union };
     Kind kind = Kind::Shape;
@@ -72,8 +76,41 @@ struct ObjectTree {
     std::size_t nodes = 1;   // ObjectTrees in it, itself included: what a copy allocates
     AsosOptions asos;
     std::vector<ObjectTree> children;
+    // clipped_by's and bounded_by's objects (ClipLists); null: none. Shared
+    // by the copies of the object, changed through ownClipping.
+    std::shared_ptr<const ClipLists> clipping;
     SourceLoc loc;
 };
+
+// An object's clip and bound lists, as POV-Ray keeps them.
+struct ClipLists {
+    // clipped_by's objects: the object keeps the part of its surface (and of
+    // its inside) that is inside every one of them. Placed as a CSG
+    // intersection whose clip members make no Objects.
+    std::vector<ObjectTree> clips;
+    // bounded_by's objects, resolved where the object is placed
+    // (object_bounds.hpp). `linked`: bounded_by { clipped_by } or clipped_by
+    // { bounded_by } made one list, kept in clips, both.
+    std::vector<ObjectTree> bounds;
+    bool linked = false;
+    SourceLoc boundsLoc;  // the bounded_by written last
+};
+
+inline const std::vector<ObjectTree>& clipsOf(const ObjectTree& t) {
+    static const std::vector<ObjectTree> none;
+    return t.clipping ? t.clipping->clips : none;
+}
+inline const std::vector<ObjectTree>& boundsOf(const ObjectTree& t) {
+    static const std::vector<ObjectTree> none;
+    return t.clipping ? t.clipping->bounds : none;
+}
+// The object's lists to change: a copy of its own, no longer shared.
+inline ClipLists& ownClipping(ObjectTree& t) {
+    auto own = t.clipping ? std::make_shared<ClipLists>(*t.clipping) : std::make_shared<ClipLists>();
+    ClipLists& lists = *own;
+    t.clipping = std::move(own);
+    return lists;
+}
 
 struct CameraValue {
     Camera camera;
@@ -366,10 +403,17 @@ private:
     // A CSG object (or an inverted union) as one Object per leaf.
     void placeCsg(ObjectTree& node, const std::shared_ptr<const Texture>& inherited, bool inheritedNoShadow,
                   const AsosOptions& inheritedAsos, const std::shared_ptr<const Interior>& inheritedInterior);
+    // `placed`: the node stands alone in the scene (POV-Ray's Link_To_Frame),
+    // not inside another object.
     void flatten(ObjectTree& node, const std::shared_ptr<const Texture>& inherited,
                  bool inheritedNoShadow, const AsosOptions& inheritedAsos,
-                 const std::shared_ptr<const Interior>& inheritedInterior);
+                 const std::shared_ptr<const Interior>& inheritedInterior, bool placed);
     void applyObjectModifier(ObjectTree& tree, const Node& n, bool isShape);
+    void applyClipOrBound(ObjectTree& tree, const Node& n);
+    // Resolves node.bounds (object_bounds.hpp): dropped, or moved into its
+    // clips, with a warning where POV-Ray's image may differ.
+    // `placed`: the object stands alone in the scene, not inside another.
+    void settleBounds(ObjectTree& node, bool placed);
 
     // meshes.cpp
     // A triangle or smooth_triangle block's face, its corners added to `mesh`.
@@ -440,6 +484,8 @@ private:
     std::size_t depth_ = 0;  // nesting, for Nested
     // The tree nodes held by the unions being built, for checkMemory.
     std::size_t unionNodes_ = 0;
+    // The bounded_by places already warned of (file, line, column).
+    std::set<std::tuple<const std::string*, int, int>> warnedBounds_;
     class HeldNodes {
     public:
         HeldNodes(Interpreter& self, const ObjectTree& tree) : self_(self), tree_(tree) {}

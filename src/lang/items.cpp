@@ -17,6 +17,7 @@
 #include "asos/scene/pov_tolerances.hpp"
 #include "asos/shapes/shape_issue.hpp"
 #include "src/lang/interpreter_impl.hpp"
+#include "src/lang/object_bounds.hpp"
 
 namespace asos::lang {
 
@@ -187,7 +188,7 @@ std::shared_ptr<const Texture> Interpreter::withTopLayerItem(const Texture& base
 void Interpreter::placeObject(ObjectTree&& tree, const Node& at) {
     checkObjects(at, objects_.size() + scene_.lights.size() + tree.leaves, "the scene");
     checkMemory(at, tree.leaves * sizeof(Object), "the scene's objects");
-    flatten(tree, nullptr, false, AsosOptions{}, nullptr);
+    flatten(tree, nullptr, false, AsosOptions{}, nullptr, true);
 }
 
 // Past a limit the run stops: going on would repeat the work that passed it
@@ -214,11 +215,16 @@ void Interpreter::checkMemory(const Node& at, std::size_t bytes, const char* wha
 // Consumes `node` (moves its parts into the scene).
 void Interpreter::flatten(ObjectTree& node, const std::shared_ptr<const Texture>& inherited,
                           bool inheritedNoShadow, const AsosOptions& inheritedAsos,
-                          const std::shared_ptr<const Interior>& inheritedInterior) {
+                          const std::shared_ptr<const Interior>& inheritedInterior, bool placed) {
     const std::shared_ptr<const Texture>& texture = node.texture ? node.texture : inherited;
     const std::shared_ptr<const Interior>& interior = node.interior ? node.interior : inheritedInterior;
     const bool noShadow = inheritedNoShadow || node.noShadow;
     const AsosOptions asos = inherit(node.asos, inheritedAsos);
+    settleBounds(node, placed);
+    if (!clipsOf(node).empty()) {
+        placeCsg(node, texture, noShadow, asos, interior);
+        return;
+    }
     switch (node.kind) {
     case ObjectTree::Kind::Shape: {
         const std::shared_ptr<const Texture> interned = texture ? textures_.intern(texture) : defaultTexture_;
@@ -253,7 +259,7 @@ void Interpreter::flatten(ObjectTree& node, const std::shared_ptr<const Texture>
             placeCsg(node, texture, noShadow, asos, interior);
             return;
         }
-        for (ObjectTree& child : node.children) flatten(child, texture, noShadow, asos, interior);
+        for (ObjectTree& child : node.children) flatten(child, texture, noShadow, asos, interior, false);
         return;
     }
 }
@@ -265,9 +271,31 @@ void Interpreter::placeCsg(ObjectTree& root, const std::shared_ptr<const Texture
     // already share it.
     auto tree = std::make_shared<CsgTree>();
     // Adds `node` (and its members) to the tree; its leaves become Objects
-    // in leaf order, its lights go to the scene.
+    // in leaf order (but those of a clip: `clip`), its lights go to the
+    // scene. A node clipped_by others is added as the intersection of it
+    // (`clipped`: its clips taken) and them.
     auto add = [&](auto& self, ObjectTree& node, const std::shared_ptr<const Texture>& outer, bool outerNoShadow,
-                   const AsosOptions& outerAsos, const std::shared_ptr<const Interior>& outerInterior) -> std::uint32_t {
+                   const AsosOptions& outerAsos, const std::shared_ptr<const Interior>& outerInterior, bool clip,
+                   bool clipped) -> std::uint32_t {
+        // An intersection takes its clips as members of its own.
+        const bool absorbsClips =
+            node.kind == ObjectTree::Kind::Union && node.op == CsgTree::Op::Intersection && !node.inverse;
+        if (!clipped) {
+            settleBounds(node, false);
+            if (!clipsOf(node).empty() && !absorbsClips) {
+                const auto index = static_cast<std::uint32_t>(tree->nodes.size());
+                tree->nodes.emplace_back();
+                tree->nodes[index].op = CsgTree::Op::Intersection;
+                tree->nodes[index].clip = clip;
+                const std::uint32_t own = self(self, node, outer, outerNoShadow, outerAsos, outerInterior, clip, true);
+                tree->nodes[index].children.push_back(own);
+                for (ObjectTree& member : ownClipping(node).clips) {
+                    const std::uint32_t c = self(self, member, nullptr, false, AsosOptions{}, nullptr, true, false);
+                    tree->nodes[index].children.push_back(c);
+                }
+                return index;
+            }
+        }
         const std::shared_ptr<const Texture>& texture = node.texture ? node.texture : outer;
         const std::shared_ptr<const Interior>& interior = node.interior ? node.interior : outerInterior;
         const bool noShadow = outerNoShadow || node.noShadow;
@@ -275,10 +303,13 @@ void Interpreter::placeCsg(ObjectTree& root, const std::shared_ptr<const Texture
         const auto index = static_cast<std::uint32_t>(tree->nodes.size());
         tree->nodes.emplace_back();
         tree->nodes[index].inverse = node.inverse;
+        tree->nodes[index].clip = clip;
         const auto leafObject = [&](Shape shape, std::uint32_t at) {
             const auto leaf = static_cast<std::uint32_t>(tree->leaves.size());
             tree->nodes[at].leaf = leaf;
+            tree->nodes[at].clip = clip;
             tree->leaves.push_back({std::move(shape), node.worldFromObject, at});
+            if (clip) return;
             Object& o = objects_.add();
             o.shape = CsgShape{tree, leaf};
             o.texture = texture ? textures_.intern(texture) : defaultTexture_;
@@ -306,15 +337,53 @@ void Interpreter::placeCsg(ObjectTree& root, const std::shared_ptr<const Texture
         tree->nodes[index].op = node.op;
         for (ObjectTree& child : node.children) {
             if (child.kind == ObjectTree::Kind::Light) {
-                flatten(child, texture, noShadow, asos, interior);
+                // A light in a clip or bound is refused where it is read.
+                flatten(child, texture, noShadow, asos, interior, false);
                 continue;
             }
-            const std::uint32_t c = self(self, child, texture, noShadow, asos, interior);
+            const std::uint32_t c = self(self, child, texture, noShadow, asos, interior, clip, false);
             tree->nodes[index].children.push_back(c);
         }
+        if (absorbsClips && !clipped && node.clipping)
+            for (ObjectTree& member : ownClipping(node).clips) {
+                const std::uint32_t c = self(self, member, nullptr, false, AsosOptions{}, nullptr, true, false);
+                tree->nodes[index].children.push_back(c);
+            }
         return index;
     };
-    add(add, root, inherited, inheritedNoShadow, inheritedAsos, inheritedInterior);
+    add(add, root, inherited, inheritedNoShadow, inheritedAsos, inheritedInterior, false, false);
+}
+
+void Interpreter::settleBounds(ObjectTree& node, bool placed) {
+    if (boundsOf(node).empty()) return;
+    const BoundsFate fate = boundsFate(node, placed);
+    ClipLists& own = ownClipping(node);
+    const SourceLoc at = own.boundsLoc;
+    if (!fate.contained && warnedBounds_.insert({at.file.get(), at.line, at.column}).second) {
+        if (fate.kind == BoundsFate::Kind::Box)
+            diagnostics_.warning(at, "asos clips this object to the box of its bounded_by: POV-Ray drops the bound "
+                                     "but takes its box, the smaller, as the object's, so it shows the object on the "
+                                     "rays that meet the box only, also where the object reaches outside it");
+        else
+            diagnostics_.warning(at, "asos clips this object to its bounded_by: POV-Ray keeps this bound and tests "
+                                     "the object on the rays that meet it, so it shows also what lies outside the "
+                                     "bound on those rays; asos could not show that the object lies within it");
+    }
+    switch (fate.kind) {
+    case BoundsFate::Kind::Dropped:
+        break;
+    case BoundsFate::Kind::Bound:
+        for (ObjectTree& bound : own.bounds) own.clips.push_back(std::move(bound));
+        break;
+    case BoundsFate::Kind::Box: {
+        ObjectTree box;
+        box.shape = BoxShape{fate.box.lo, fate.box.hi};
+        box.loc = at;
+        own.clips.push_back(std::move(box));
+        break;
+    }
+    }
+    own.bounds.clear();
 }
 
 // --- objects ----------------------------------------------------------------------------------
@@ -490,6 +559,12 @@ void Interpreter::applyTransform(ObjectTree& tree, const Transform& m, const Nod
         for (ObjectTree& child : tree.children) applyTransform(child, m, at);
         break;
     }
+    // POV-Ray's: an object's clip and bound move with it.
+    if (tree.clipping) {
+        ClipLists& own = ownClipping(tree);
+        for (ObjectTree& clip : own.clips) applyTransform(clip, m, at);
+        for (ObjectTree& bound : own.bounds) applyTransform(bound, m, at);
+    }
     if (tree.texture) {
         auto moved = std::make_shared<Texture>(*tree.texture);
         moveLayers(at, *moved, m);
@@ -582,6 +657,10 @@ void Interpreter::applyObjectModifier(ObjectTree& tree, const Node& n, bool isSh
         if (isLight) fail(n, "a light_source has no inside to invert");
         tree.inverse = !tree.inverse;
         return;
+    case Word::ClippedBy: case Word::BoundedBy:
+        if (isLight) fail(n, "a light_source has no " + std::string(wordText(n.word)));
+        applyClipOrBound(tree, n);
+        return;
     case Word::Hollow:
         // POV-Ray's hollow lets media and fog inside the object; asos has
         // neither, so it changes nothing here. Its value is still checked.
@@ -620,6 +699,61 @@ void Interpreter::applyObjectModifier(ObjectTree& tree, const Node& n, bool isSh
     default:
         fail(n, "this is not an object modifier");
     }
+}
+
+// POV-Ray's Parse_Object_Mods: clipped_by and bounded_by add objects to
+// their lists; clipped_by { bounded_by } and bounded_by { clipped_by } make
+// one list serve as both, and nothing may be added to either after that.
+void Interpreter::applyClipOrBound(ObjectTree& tree, const Node& n) {
+    const bool clip = n.word == Word::ClippedBy;
+    const std::string name(wordText(n.word));
+    const auto entries = n.children();
+    const char* other = clip ? "bounded_by" : "clipped_by";
+    ClipLists& own = ownClipping(tree);
+    if (own.linked)
+        fail(n, std::string("this object's clipped_by and bounded_by are one list (linked by ") + other +
+                    " { " + name + " }): nothing can be added to it");
+    if (entries.size() == 1 && entries[0].kind == NodeKind::Item &&
+        entries[0].word == (clip ? Word::BoundedBy : Word::ClippedBy)) {
+        std::vector<ObjectTree>& from = clip ? own.bounds : own.clips;
+        if (from.empty())
+            fail(n, name + " { " + other + " } needs a " + other + " before it");
+        if (!(clip ? own.clips : own.bounds).empty())
+            fail(n, name + " { " + other + " } cannot follow a " + name +
+                        " of objects");
+        if (clip) own.clips = std::move(own.bounds);
+        own.bounds.clear();
+        own.linked = true;
+        return;
+    }
+    std::vector<ObjectTree>& list = clip ? own.clips : own.bounds;
+    // POV-Ray's Parse_Bound_Clip: the objects, then transforms of them
+    // all; an object with a texture, a triangle or a mesh is refused.
+    const std::size_t first = list.size();
+    bool transformed = false;
+    auto entry = [&](const Node& e) {
+        if (isTransform(e)) {
+            if (list.size() == first) fail(e, "a transform in " + name + " comes after its objects");
+            const Transform m = evalTransformItem(e);
+            for (std::size_t i = first; i < list.size(); ++i) applyTransform(list[i], m, e);
+            transformed = true;
+            return;
+        }
+        if (!isObjectBlock(e)) fail(e, "expected an object in " + name);
+        if (transformed) fail(e, "the objects of " + name + " come before its transforms");
+        ObjectTree member = evalObject(e);
+        if (member.kind == ObjectTree::Kind::Light) fail(e, "a light_source cannot be in " + name);
+        if (member.texture)
+            fail(e, "an object in " + name + " cannot have a texture (POV-Ray: illegal texture in clip or bound)");
+        if (member.mesh || std::holds_alternative<TriangleShape>(member.shape))
+            fail(e, "a triangle or a mesh cannot be in " + name + " (POV-Ray: illegal patch in clip or bound)");
+        list.push_back(std::move(member));
+    };
+    const std::size_t errorsBefore = errorCount_;
+    runEntries(entries, EntryHandler(entry));
+    if (errorCount_ != errorsBefore) throw Abandon{};  // reported at the entry
+    if (list.size() == first) fail(n, name + " needs at least one object");
+    if (!clip) own.boundsLoc = locOf(n);
 }
 
 // --- pigments, finishes, textures ---------------------------------------------------------

@@ -626,6 +626,8 @@ template <> struct action<g::difference_block> : CloseBlock<Word::Difference> {}
 template <> struct action<g::intersection_block> : CloseBlock<Word::Intersection> {};
 template <> struct action<g::merge_block> : CloseBlock<Word::Merge> {};
 template <> struct action<g::object_block> : CloseBlock<Word::Object> {};
+template <> struct action<g::clipped_by_block> : CloseBlock<Word::ClippedBy> {};
+template <> struct action<g::bounded_by_block> : CloseBlock<Word::BoundedBy> {};
 template <> struct action<g::light_source_block> : CloseBlock<Word::LightSource> {};
 template <> struct action<g::camera_block> : CloseBlock<Word::Camera> {};
 template <> struct action<g::global_settings_block> : CloseBlock<Word::GlobalSettings> {};
@@ -744,6 +746,8 @@ template <> struct action<g::open_item> : ItemAction<Word::Open, 0> {};
 template <> struct action<g::sturm_item> : ItemAction<Word::Sturm, 0> {};
 template <> struct action<g::no_shadow_item> : ItemAction<Word::NoShadow, 0> {};
 template <> struct action<g::inverse_item> : ItemAction<Word::Inverse, 0> {};
+template <> struct action<g::clip_link> : ItemAction<Word::BoundedBy, 0> {};
+template <> struct action<g::bound_link> : ItemAction<Word::ClippedBy, 0> {};
 template <> struct action<g::area_light_item> : ItemAction<Word::AreaLight, 4> {};
 template <> struct action<g::adaptive_item> : ItemAction<Word::Adaptive, 1> {};
 template <> struct action<g::jitter_item> : ItemAction<Word::Jitter, 0> {};
@@ -1108,6 +1112,7 @@ std::optional<Ast> parseMacroBody(std::string_view fileText, TextSpan body, std:
     case BodyContext::Top: return parse(static_cast<g::top_entry*>(nullptr));
     case BodyContext::ObjectModifier: return parse(static_cast<g::object_modifier*>(nullptr));
     case BodyContext::Union: return parse(static_cast<g::union_entry*>(nullptr));
+    case BodyContext::Clip: return parse(static_cast<g::clip_entry*>(nullptr));
     case BodyContext::Light: return parse(static_cast<g::light_entry*>(nullptr));
     case BodyContext::Camera: return parse(static_cast<g::camera_entry*>(nullptr));
     case BodyContext::Pigment: return parse(static_cast<g::pigment_entry*>(nullptr));

@@ -218,6 +218,17 @@ void writeTexture(Writer& w, const Texture& t);
 
 // An object's statement: its shape, transform, texture and modifiers
 // (`inverse` for a CSG's member).
+// A clip's shape: it has no texture or modifiers of its own.
+void writeClipShape(Writer& w, const Shape& shape, const Transform& worldFromObject, bool inverse) {
+    writeShape(w, shape);
+    if (!worldFromObject.isIdentity()) {
+        w << "  ";
+        w.matrix(worldFromObject) << '\n';
+    }
+    if (inverse) w << "  inverse\n";
+    w << "}\n";
+}
+
 void writeObject(Writer& w, const Shape& shape, const Transform& worldFromObject, const Object& o, bool inverse) {
     w.location(o.loc);
     writeShape(w, shape);
@@ -245,17 +256,35 @@ void writeObject(Writer& w, const Shape& shape, const Transform& worldFromObject
 }
 
 // A CSG's node and its members; `leaves` are the Objects of the tree's
-// leaves, in leaf order (their textures and modifiers).
-void writeCsg(Writer& w, const CsgTree& tree, std::uint32_t index, const Object* leaves) {
+// leaves but its clips', in leaf order (their textures and modifiers), the
+// next one at `next`. A node's clip members are written as its clipped_by
+// (a clip is always a member of an intersection, which means the same).
+void writeCsg(Writer& w, const CsgTree& tree, std::uint32_t index, const Object* leaves, std::size_t& next) {
     const CsgTree::Node& node = tree.nodes[index];
     if (node.op == CsgTree::Op::Leaf) {
         const CsgTree::Leaf& leaf = tree.leaves[node.leaf];
-        writeObject(w, leaf.shape, leaf.worldFromObject, leaves[node.leaf], node.inverse);
+        if (node.clip)
+            writeClipShape(w, leaf.shape, leaf.worldFromObject, node.inverse);
+        else
+            writeObject(w, leaf.shape, leaf.worldFromObject, leaves[next++], node.inverse);
         return;
     }
     static constexpr const char* kOps[] = {"union", "merge", "intersection", "difference"};
     w << kOps[static_cast<int>(node.op)] << " {\n";
-    for (std::uint32_t child : node.children) writeCsg(w, tree, child, leaves);
+    bool clips = false;
+    for (std::uint32_t child : node.children) {
+        if (tree.nodes[child].clip && !node.clip) {
+            clips = true;
+            continue;
+        }
+        writeCsg(w, tree, child, leaves, next);
+    }
+    if (clips) {
+        w << "clipped_by {\n";
+        for (std::uint32_t child : node.children)
+            if (tree.nodes[child].clip) writeCsg(w, tree, child, leaves, next);
+        w << "}\n";
+    }
     if (node.inverse) w << "  inverse\n";
     w << "}\n";
 }
@@ -534,15 +563,18 @@ void writeDump(std::ostream& out, const SceneDescription& scene, const DumpOptio
         w << "}\n";
     }
 
+    const CsgTree* lastTree = nullptr;
     for (std::size_t i = 0; i < scene.objects.size(); ++i) {
         const Object& o = scene.objects[i];
         const auto* csg = std::get_if<CsgShape>(&o.shape);
         // A CSG's tree once, at its first leaf; the leaves' Objects follow
         // it in leaf order.
-        if (csg && csg->leaf != 0) continue;
+        if (csg && csg->tree.get() == lastTree) continue;
+        lastTree = csg ? csg->tree.get() : nullptr;
         w << '\n';
+        std::size_t next = 0;
         if (csg)
-            writeCsg(w, *csg->tree, 0, &o);
+            writeCsg(w, *csg->tree, 0, &o, next);
         else
             writeObject(w, o.shape, o.worldFromObject, o, false);
     }

@@ -43,6 +43,7 @@ enum class BodyContext : std::uint8_t {
     Fog,
     Interior,
     Material,
+    Clip,
 };
 
 // Parses a scene file and hands each top-level entry (an item or a directive,

@@ -40,7 +40,7 @@ namespace asos::lang {
     WORD(NoShadow, "no_shadow") WORD(Asos, "asos") WORD(Eps, "eps") WORD(Highlights, "highlights")     \
     WORD(Emitter, "emitter") WORD(Povray, "povray") WORD(Panel, "panel") WORD(Checker, "checker")    \
     WORD(Brick, "brick") WORD(BrickSize, "brick_size") WORD(Mortar, "mortar")                          \
-    WORD(Hollow, "hollow") WORD(Inverse, "inverse") WORD(ColorMap, "color_map") WORD(ColourMap, "colour_map")                      \
+    WORD(Hollow, "hollow") WORD(Inverse, "inverse") WORD(ClippedBy, "clipped_by") WORD(BoundedBy, "bounded_by") WORD(ColorMap, "color_map") WORD(ColourMap, "colour_map")                      \
     WORD(Gradient, "gradient") WORD(Radial, "radial") WORD(Onion, "onion") WORD(Marble, "marble")          \
     WORD(Wood, "wood") WORD(Leopard, "leopard") WORD(Bozo, "bozo") WORD(Spotted, "spotted")                \
     WORD(Granite, "granite") WORD(Agate, "agate") WORD(AgateTurb, "agate_turb")                          \

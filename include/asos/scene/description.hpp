@@ -159,9 +159,9 @@ struct CsgTree;
 // One leaf of a CSG object (POV-Ray's difference, intersection, merge, or a
 // union inside one of those): the part of the leaf's surface that bounds the
 // tree's solid, with the leaf's own texture. The interpreter makes one Object
-// per leaf, in leaf order, all sharing the tree; the leaf's shape and full
-// transform are the tree's (CsgTree::Leaf), the Object's worldFromObject is
-// the identity.
+// per leaf (but a clip's), in leaf order, all sharing the tree; the leaf's
+// shape and full transform are the tree's (CsgTree::Leaf), the Object's
+// worldFromObject is the identity.
 struct CsgShape {
     std::shared_ptr<const CsgTree> tree;
     std::uint32_t leaf = 0;
@@ -173,12 +173,16 @@ using Shape = std::variant<SphereShape, BoxShape, ConeShape, CylinderShape, Disc
 
 // A CSG object as written: nodes (node 0 the root), each an operation over
 // its children or a leaf shape; `inverse` as POV-Ray's (toggled by each
-// `inverse` written). Transforms are applied to the leaves.
+// `inverse` written). Transforms are applied to the leaves. An object
+// clipped_by others is the intersection of it and them, those members
+// marked `clip`: their leaves bound the solid but show no surface (they
+// have no Object).
 struct CsgTree {
     enum class Op : std::uint8_t { Union, Merge, Intersection, Difference, Leaf };
     struct Node {
         Op op = Op::Leaf;
         bool inverse = false;
+        bool clip = false;  // a clipped_by member: its leaves have no Object
         std::vector<std::uint32_t> children;  // node indices, in the order written
         std::uint32_t leaf = 0;               // Op::Leaf: index into leaves
     };

@@ -4,15 +4,10 @@
 // and whether a point can see its surface lie on such a plane over an area.
 #include <array>
 
+#include "asos/geometry/half_space.hpp"
 #include "asos/geometry/vec.hpp"
 
 namespace asos {
-
-// The half-space {x : normal.x <= offset}.
-struct HalfSpace {
-    Vec3 normal{0.0, 0.0, 1.0};
-    double offset = 0.0;
-};
 
 struct HoldingPlanes {
     static constexpr int kMax = 6;

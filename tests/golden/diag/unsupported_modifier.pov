@@ -1,4 +1,4 @@
 sphere {
   0, 1
-  bounded_by { sphere { 0, 2 } }
+  double_illuminate
 }
