@@ -1,6 +1,7 @@
 #pragma once
 // The interpreter's inside, shared by interpreter.cpp (files, scopes,
-// directives), evaluate.cpp (expressions) and items.cpp (scene items).
+// directives), evaluate.cpp (expressions), items.cpp (scene items) and
+// user_files.cpp (#fopen, #read, #write).
 #include <array>
 #include <deque>
 #include <filesystem>

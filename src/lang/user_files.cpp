@@ -5,14 +5,13 @@
 // (or appending) is written whole when it is closed (#fclose, or the end of a
 // parse without errors) through a StagedFile, so a parse that stops with an
 // error leaves no half-written file, and the file keeps its old contents.
-#include <cerrno>
+#include <algorithm>
+#include <cctype>
 #include <charconv>
 #include <cstdio>
-#include <cstring>
 #include <fstream>
 #include <sstream>
 
-#include "asos/lang/source_kind.hpp"
 #include "asos/util/staged_file.hpp"
 #include "src/lang/interpreter_impl.hpp"
 
