@@ -258,7 +258,34 @@ struct default_end : rbrace {};
 struct default_directive : if_must<default_start, block_open, entries<default_entry>, default_end> {};
 struct bare_default : if_must<bare_default_start, block_open, entries<default_entry>, default_end> {};
 
-// POV-Ray directives we do not run (#fopen, #read, …) are named in the error;
+// #fopen Handle "name" read|write|append   #fclose Handle
+// #read (Handle, Name, …)   #write (Handle, value, …)
+// As POV-Ray, the commas between the parts of #read and #write are optional.
+struct fopen_start : seq<hash, kw_fopen> {};
+struct opened_handle : name {};
+struct opened_file : seq<expression> {};
+struct open_mode : sor<kw_read, kw_write, kw_append> {};
+struct fopen_directive : if_must<fopen_start, opened_handle, opened_file, open_mode> {};
+struct fclose_start : seq<hash, kw_fclose> {};
+struct closed_handle : name {};
+struct fclose_directive : if_must<fclose_start, closed_handle> {};
+struct file_open : lparen {};
+struct file_handle : name {};
+struct read_start : seq<hash, kw_read> {};
+// POV-Ray 3.7 reads into names only, not array elements.
+struct read_variable : name {};
+struct read_close : rparen {};
+struct read_directive
+    : if_must<read_start, file_open, file_handle, opt<comma>, star<read_variable, opt<comma>>, read_close> {};
+struct write_start : seq<hash, kw_write> {};
+// A string is one operand (a literal or a string function), as POV-Ray reads
+// it here: `"x" -1` writes "x", then -1.
+struct written_value : sor<seq<at<string_start>, primary>, expression> {};
+struct write_close : rparen {};
+struct write_directive
+    : if_must<write_start, file_open, file_handle, opt<comma>, star<written_value, opt<comma>>, write_close> {};
+
+// POV-Ray directives we do not run (#render, #statistics) are named in the error;
 // any other word after '#' is not a directive at all. #else, #elseif, #end,
 // #case and #range end a body and are left to the directive that owns it.
 struct unsupported_directive : seq<hash, word_if<accept_unsupported_directive>> {};
@@ -275,7 +302,7 @@ struct directive
               while_directive<Entry>, for_directive<Entry>, switch_directive<Entry>, break_directive,
               declare_directive, local_directive, undef_directive, include_directive, macro_directive,
               default_directive, version_directive, debug_directive, warning_directive, error_directive,
-              unsupported_directive, empty_directive, unknown_directive>> {};
+              fopen_directive, fclose_directive, read_directive, write_directive, unsupported_directive, empty_directive, unknown_directive>> {};
 
 }  // namespace asos::grammar
 

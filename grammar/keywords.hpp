@@ -184,6 +184,11 @@ ASOS_KEYWORD(kw_case, "case")
 ASOS_KEYWORD(kw_range, "range")
 ASOS_KEYWORD(kw_break, "break")
 ASOS_KEYWORD(kw_default, "default")
+ASOS_KEYWORD(kw_fopen, "fopen")
+ASOS_KEYWORD(kw_fclose, "fclose")
+ASOS_KEYWORD(kw_read, "read")
+ASOS_KEYWORD(kw_write, "write")
+ASOS_KEYWORD(kw_append, "append")
 // values
 ASOS_KEYWORD(kw_array, "array")
 

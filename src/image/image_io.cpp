@@ -12,7 +12,7 @@
 #include <OpenImageIO/imageio.h>
 
 #include "asos/image/encoding.hpp"
-#include "asos/image/staged_file.hpp"
+#include "asos/util/staged_file.hpp"
 #include "src/image/pfm.hpp"
 
 namespace asos {

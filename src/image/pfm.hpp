@@ -2,7 +2,7 @@
 // Portable Float Map, the one format asos writes without OpenImageIO: 2.4
 // reads PFM (its pnm plugin) but has no writer for it. Private to
 // image_io.cpp, which picks it from its table of formats and wraps it in the
-// same staged file (asos/image/staged_file.hpp) as every other format; users write PFM
+// same staged file (asos/util/staged_file.hpp) as every other format; users write PFM
 // through writeImage (asos/image/image_io.hpp). No OpenImageIO here.
 #include <span>
 #include <string>

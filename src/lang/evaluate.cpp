@@ -98,6 +98,7 @@ std::string describe(const Value& v) {
         std::string operator()(const std::shared_ptr<const MaterialValue>&) const { return "a material"; }
         std::string operator()(const std::shared_ptr<const SkySphere>&) const { return "a sky_sphere"; }
         std::string operator()(const std::shared_ptr<const Fog>&) const { return "a fog"; }
+        std::string operator()(const std::shared_ptr<UserFile>&) const { return "a file handle"; }
     };
     return std::visit(Visitor{}, v);
 }
@@ -593,6 +594,7 @@ Value Interpreter::call(const Node& n) {
         const std::string s = evalString(args[0]);
         return Num::scalar(s.empty() ? 0.0 : static_cast<double>(static_cast<unsigned char>(s[0])));
     }
+    case Word::FileExists: return Num::scalar(findReadable(evalString(args[0])).empty() ? 0.0 : 1.0);
     case Word::Strlen: return Num::scalar(static_cast<double>(evalString(args[0]).size()));
     case Word::Strcmp: {
         // POV-Ray: the difference of the first characters that differ.

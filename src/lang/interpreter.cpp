@@ -247,6 +247,7 @@ void Interpreter::applyDefines() {
 }
 
 std::optional<SceneDescription> Interpreter::finish() {
+    closeUserFiles();
     if (errorCount_ > 0) return std::nullopt;
     applyVersionRules();
     scene_.objects = objects_.take();
@@ -333,7 +334,8 @@ BreakNode Interpreter::runBody(std::span<const Node> entries, EntryHandler handl
             case NodeKind::If: case NodeKind::While: case NodeKind::For: case NodeKind::Switch:
             case NodeKind::Declare: case NodeKind::Local: case NodeKind::Undef: case NodeKind::Include:
             case NodeKind::Macro: case NodeKind::Default: case NodeKind::Version: case NodeKind::Debug:
-            case NodeKind::Warning: case NodeKind::Error:
+            case NodeKind::Warning: case NodeKind::Error: case NodeKind::Fopen: case NodeKind::Fclose:
+            case NodeKind::Read: case NodeKind::Write:
                 if (const BreakNode b = runDirective(n, handle)) return b;
                 break;
             case NodeKind::Break:
@@ -475,6 +477,18 @@ BreakNode Interpreter::runDirective(const Node& n, EntryHandler handle) {
         return nullptr;
     case NodeKind::Default:
         runDefault(n);
+        return nullptr;
+    case NodeKind::Fopen:
+        runFopen(n);
+        return nullptr;
+    case NodeKind::Fclose:
+        runFclose(n);
+        return nullptr;
+    case NodeKind::Read:
+        runRead(n);
+        return nullptr;
+    case NodeKind::Write:
+        runWrite(n);
         return nullptr;
     case NodeKind::Version: {
         // POV-Ray 3.7 expects #version first; one after anything else (an

@@ -1,6 +1,7 @@
 #pragma once
 // The interpreter's inside, shared by interpreter.cpp (files, scopes,
-// directives), evaluate.cpp (expressions) and items.cpp (scene items).
+// directives), evaluate.cpp (expressions), items.cpp (scene items) and
+// user_files.cpp (#fopen, #read, #write).
 #include <array>
 #include <deque>
 #include <filesystem>
@@ -149,6 +150,21 @@ struct ColourMapValue {
     std::vector<ColourMapEntry> entries;
 };
 
+// A file opened by #fopen (lang/user_files.cpp). A file read is read whole
+// when opened; what is written is kept until the file is closed, then put in
+// place whole.
+struct UserFile {
+    enum class Mode : std::uint8_t { Read, Write, Append };
+    Mode mode = Mode::Read;
+    bool open = true;
+    std::string name;             // as the scene gave it
+    std::filesystem::path path;   // where it is read from or written to
+    SourceLoc openedAt;           // the #fopen
+    SourceFile* source = nullptr; // Read: its text (kept for the lines of errors)
+    std::size_t position = 0;     // Read: where the next value starts
+    std::string written;          // Write, Append: what #write gave it so far
+};
+
 using Value = std::variant<Num, std::string, std::shared_ptr<const ObjectTree>,
                            std::shared_ptr<const Pigment>, std::shared_ptr<const Finish>,
                            std::shared_ptr<const Texture>, std::shared_ptr<const CameraValue>,
@@ -156,7 +172,7 @@ using Value = std::variant<Num, std::string, std::shared_ptr<const ObjectTree>,
                            std::shared_ptr<const ColourMapValue>, std::shared_ptr<const Normal>, Poison, Unset,
                            std::shared_ptr<const FunctionValue>, std::shared_ptr<const Interior>,
                            std::shared_ptr<const MaterialValue>, std::shared_ptr<const SkySphere>,
-                           std::shared_ptr<const Fog>>;
+                           std::shared_ptr<const Fog>, std::shared_ptr<UserFile>>;
 
 // A declared array: up to 5 dimensions, its elements all of one kind (the first
 // one given sets it, as in POV-Ray). Arrays are values: names share one until
@@ -391,6 +407,18 @@ private:
     std::optional<SceneDescription> finish();
     void applyVersionRules();
 
+    // user_files.cpp
+    std::filesystem::path writeFolder() const;
+    std::filesystem::path findReadable(const std::string& name) const;
+    std::shared_ptr<UserFile> handleOf(const Node& name, const char* directive);
+    void dropHandle(const UserFile& file);
+    std::string commitFile(UserFile& file);
+    void runFopen(const Node& n);
+    void runFclose(const Node& n);
+    void runRead(const Node& n);
+    void runWrite(const Node& n);
+    void closeUserFiles();
+
     // items.cpp
     void placeObject(ObjectTree&& tree, const Node& at);
     // Moves every layer of `t` by `m` (a transform written at `at`).
@@ -509,7 +537,8 @@ private:
         bool warned = false;
     };
     std::unordered_map<std::uint32_t, Deprecation> deprecations_;
-    std::vector<std::uint32_t> randomStreams_;  // seed(): POV-Ray's generators, by number
+    std::vector<std::uint32_t> randomStreams_;
+    std::vector<std::shared_ptr<UserFile>> userFiles_;  // every file #fopen opened, in order  // seed(): POV-Ray's generators, by number
 
     SceneDescription scene_;
     ObjectStore objects_;

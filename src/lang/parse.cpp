@@ -239,26 +239,7 @@ struct action<g::string_text> {
     template <typename Input>
     static void apply(const Input& in, Builder& b) {
         const std::string_view raw = in.string_view();
-        std::string s;
-        s.reserve(raw.size());
-        for (std::size_t i = 1; i + 1 < raw.size(); ++i) {
-            char c = raw[i];
-            if (c == '\\' && i + 2 < raw.size()) {
-                const char e = raw[++i];
-                switch (e) {
-                case 'n': c = '\n'; break;
-                case 't': c = '\t'; break;
-                case 'r': c = '\r'; break;
-                case 'a': c = '\a'; break;
-                case 'b': c = '\b'; break;
-                case 'f': c = '\f'; break;
-                case 'v': c = '\v'; break;
-                case '\\': case '"': case '\'': c = e; break;
-                default: s += '\\'; c = e; break;  // kept as written, like POV-Ray
-                }
-            }
-            s += c;
-        }
+        std::string s = decodeStringBody(raw.substr(1, raw.size() - 2));
         b.pushString(std::move(s), posOf(in));
     }
 };
@@ -966,6 +947,45 @@ template <> struct action<g::debug_directive> : Reduce<NodeKind::Debug, Word::De
 template <> struct action<g::warning_directive> : Reduce<NodeKind::Warning, Word::Warning, 1> {};
 template <> struct action<g::error_directive> : Reduce<NodeKind::Error, Word::Error, 1> {};
 
+// #fopen, #fclose, #read, #write.
+template <> struct action<g::fopen_start> : OpenDirective<Word::Fopen> {};
+template <> struct action<g::opened_handle> : PushName {};
+template <>
+struct action<g::open_mode> {
+    template <typename Input>
+    static void apply(const Input& in, Builder& b) {
+        b.frame().word = wordOf(leadingWord(in.string_view()));
+    }
+};
+template <>
+struct action<g::fopen_directive> {
+    template <typename Input>
+    static void apply(const Input& in, Builder& b) {
+        const Word mode = b.frame().word;
+        b.close(NodeKind::Fopen, mode, posOf(in));
+    }
+};
+template <> struct action<g::closed_handle> : PushName {};
+template <> struct action<g::fclose_directive> : Reduce<NodeKind::Fclose, Word::Fclose, 1> {};
+template <> struct action<g::read_start> : OpenDirective<Word::Read> {};
+template <> struct action<g::write_start> : OpenDirective<Word::Write> {};
+template <> struct action<g::file_handle> : PushName {};
+template <> struct action<g::read_variable> : PushName {};
+template <>
+struct action<g::read_directive> {
+    template <typename Input>
+    static void apply(const Input& in, Builder& b) {
+        b.close(NodeKind::Read, Word::Read, posOf(in));
+    }
+};
+template <>
+struct action<g::write_directive> {
+    template <typename Input>
+    static void apply(const Input& in, Builder& b) {
+        b.close(NodeKind::Write, Word::Write, posOf(in));
+    }
+};
+
 // --- errors ---------------------------------------------------------------------------
 
 // What stands at `byte`, quoted for a message: a word, a number, a string,
@@ -1070,6 +1090,30 @@ std::optional<Ast> parseBody(const Source& source, std::shared_ptr<const std::st
 }
 
 }  // namespace
+
+std::string decodeStringBody(std::string_view body) {
+    std::string s;
+    s.reserve(body.size());
+    for (std::size_t i = 0; i < body.size(); ++i) {
+        char c = body[i];
+        if (c == '\\' && i + 1 < body.size()) {
+            const char e = body[++i];
+            switch (e) {
+            case 'n': c = '\n'; break;
+            case 't': c = '\t'; break;
+            case 'r': c = '\r'; break;
+            case 'a': c = '\a'; break;
+            case 'b': c = '\b'; break;
+            case 'f': c = '\f'; break;
+            case 'v': c = '\v'; break;
+            case '\\': case '"': case '\'': c = e; break;
+            default: s += '\\'; c = e; break;  // kept as written, like POV-Ray
+            }
+        }
+        s += c;
+    }
+    return s;
+}
 
 std::string_view sourceLine(std::string_view text, int line) {
     std::size_t start = 0;

@@ -29,7 +29,7 @@ std::uint8_t classesOf(Word w) {
     case Word::Chr: case Word::Strlen: case Word::Val: case Word::Defined: case Word::Substr:
     case Word::Strcmp: case Word::Vstr: case Word::Asc: case Word::Strupr: case Word::Strlwr:
     case Word::Rand: case Word::Seed: case Word::Dimensions: case Word::DimensionSize:
-    case Word::Sum: case Word::Prod:
+    case Word::Sum: case Word::Prod: case Word::FileExists:
         return kKeyword | kFunction;
     case Word::X: case Word::Y: case Word::Z: case Word::T: case Word::U: case Word::V:
         return kKeyword | kConstant | kMember;
@@ -138,7 +138,7 @@ constexpr std::string_view kPovrayKeywords[] = {
 };
 
 constexpr std::string_view kUnsupportedDirectives[] = {
-    "fclose", "fopen", "read", "render", "statistics", "write",
+    "render", "statistics",
 };
 
 // POV-Ray's keywords minus ours, sorted.

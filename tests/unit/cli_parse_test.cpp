@@ -2,6 +2,8 @@
 // as file:line:col: error: message, the source line and a caret, exit 1.
 #include <catch2/catch.hpp>
 
+#include <unistd.h>
+
 #include <filesystem>
 #include <fstream>
 
@@ -123,4 +125,25 @@ TEST_CASE("asos parse sets clock_on with --clock and finds POV-Ray's includes by
     INFO(colors.err);
     CHECK(colors.exitCode == 0);
     CHECK(colors.out.find("pigment { color rgbft <0, 1, 0, 0, 0> }") != std::string::npos);
+}
+
+TEST_CASE("asos parse writes a scene's files into --write-folder", "[cli][files]") {
+    const fs::path writes = fs::temp_directory_path() / ("asos-cli-writes-" + std::to_string(::getpid()));
+    fs::remove_all(writes);
+    fs::create_directories(writes);
+    scene("writes.pov", "#version 3.7;\n#fopen F \"out.txt\" write\n#write (F, 1.5, \",\", <1,2,3>)\n"
+                        "#fclose F\nsphere { 0, 1 }\n");
+    const Result r = runAsos({"parse", "writes.pov", "--write-folder", writes.string()});
+    CHECK(r.exitCode == 0);
+    std::ifstream in(writes / "out.txt");
+    std::string text;
+    std::getline(in, text);
+    CHECK(text == "1.5,<1,2,3> ");
+    CHECK_FALSE(fs::exists(kDir / "out.txt"));
+    fs::remove_all(writes);
+
+    const Result bad = runAsos({"parse", "writes.pov", "--write-folder", (writes / "missing").string()});
+    CHECK(bad.exitCode != 0);
+    CHECK(bad.err.find("--write-folder: '" + (writes / "missing").string() + "' is not a folder (it does not exist)") !=
+          std::string::npos);
 }

@@ -6,6 +6,8 @@
 // ("Snippets in the docs"): the fence's word after `pov` says what it is.
 #include <catch2/catch.hpp>
 
+#include <unistd.h>
+
 #include <algorithm>
 #include <cctype>
 #include <filesystem>
@@ -111,6 +113,9 @@ TEST_CASE("every pov snippet of the docs is read as the fence says", "[docs]") {
         snippets.insert(snippets.end(), more.begin(), more.end());
     }
     REQUIRE(snippets.size() >= 20);
+    // What the snippets write (#fopen … write) goes to a temporary folder.
+    const fs::path writes = fs::temp_directory_path() / ("asos-docs-writes-" + std::to_string(getpid()));
+    fs::create_directories(writes);
     for (const Snippet& s : snippets) {
         INFO(s.where << " (```pov " << s.kind << "):\n" << s.text);
         const bool known = s.kind.empty() || s.kind == "in-object" || s.kind == "colours" || s.kind == "refused";
@@ -120,12 +125,14 @@ TEST_CASE("every pov snippet of the docs is read as the fence says", "[docs]") {
             Diagnostics diagnostics;
             lang::InterpreterOptions options;
             options.libraryPaths = lang::povrayLibraryPaths();
+            options.writeFolder = writes;
             const bool read = lang::interpretText(scene, s.where, options, diagnostics).has_value();
             INFO(errorsOf(diagnostics));
             if (s.kind == "refused") CHECK_FALSE(read);  // it shows an error on purpose
             else CHECK(read);
         }
     }
+    fs::remove_all(writes);
 }
 
 TEST_CASE("every example renders at 64 x 48 without an error", "[docs][examples]") {

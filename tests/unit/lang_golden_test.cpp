@@ -75,16 +75,31 @@ void compareGolden(const fs::path& golden, const std::string& actual) {
                                               << "right, run scripts/update-goldens.sh)");
 }
 
+// Where the scenes' #write files go: a folder of the system's temporary
+// folder, never the source or build tree; "<writes>" in goldens.
+const fs::path& writesFolder() {
+    static const fs::path folder = [] {
+        const fs::path f = fs::temp_directory_path() / "asos-lang-golden-writes";
+        fs::create_directories(f);
+        return f;
+    }();
+    return folder;
+}
+
 lang::InterpreterOptions optionsFor(const fs::path&) {
     lang::InterpreterOptions options;
     options.includePaths = {kSource / "tests" / "golden" / "include"};
+    options.writeFolder = writesFolder();
     return options;
 }
 
 std::string formatAll(const Diagnostics& diagnostics) {
     std::string out;
     for (const auto& d : diagnostics.all()) out += formatDiagnostic(d);
-    return relative(out);
+    out = relative(out);
+    const std::string writes = writesFolder().string();
+    for (std::size_t at; (at = out.find(writes)) != std::string::npos;) out.replace(at, writes.size(), "<writes>");
+    return out;
 }
 
 }  // namespace

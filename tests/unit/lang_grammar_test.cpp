@@ -92,6 +92,18 @@ TEST_CASE("directives", "[lang][grammar]") {
          "#while (1)", "#for (I, 1) #end", "#undef", "#include", "#end", "#else"});
 }
 
+TEST_CASE("file directives", "[lang][grammar][files]") {
+    using top = g::entries<g::top_entry>;
+    checkTable<top>(
+        {"#fopen F \"a.txt\" read", "#fopen F concat(\"a\", \".txt\") write", "#fopen F \"a\" append",
+         "#fclose F", "#read (F, A, B)", "#read (F A B)", "#read (F)", "#read (F, A,)",
+         "#write (F, \"x\", 1, <1,2,3>, \"\\n\")", "#write (F \"x\" -1 \"y\")", "#write (F)",
+         "#write (F, str(1, 0, 0) \",\" V.x)", "#if (file_exists(\"a.txt\")) #end"},
+        {"#fopen F \"a.txt\"", "#fopen F \"a.txt\" READ", "#fopen \"a.txt\" read", "#fopen sphere \"a\" read",
+         "#fclose", "#read F, A", "#read (F, A[1])", "#read (F, 1)", "#read (F, A", "#write F, 1",
+         "#write (F, 1", "#write (F, sphere { 0, 1 })", "#read (, A)"});
+}
+
 TEST_CASE("objects and scene items", "[lang][grammar]") {
     using top = g::entries<g::top_entry>;
     checkTable<top>(

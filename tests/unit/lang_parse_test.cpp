@@ -140,7 +140,7 @@ TEST_CASE("syntax errors name the place and what was found there", "[lang][parse
 TEST_CASE("unsupported POV-Ray constructs are named at their keyword", "[lang][parse]") {
     CHECK(errorOf("isosurface { function { x } }") == "1:1: 'isosurface' is not supported by asos");
     CHECK(errorOf("sphere { 0, 1\n  interior { media { } } }") == "2:14: 'media' is not supported by asos");
-    CHECK(errorOf("#fopen F \"f.txt\" read") == "1:1: '#fopen' is not supported by asos");
+    CHECK(errorOf("#statistics \"x\"") == "1:1: '#statistics' is not supported by asos");
     CHECK(errorOf("#declare V = vturbulence(2, 0.5, 6, x);") == "1:14: 'vturbulence' is not supported by asos");
     CHECK(errorOf("sphere { 0, 1 pigment { quilted } }") == "1:25: 'quilted' is not supported by asos");
     CHECK(errorOf("light_source { 0, 1 cylinder }") == "1:21: 'cylinder' lights are not supported by asos");

@@ -63,10 +63,12 @@ std::string featureOf(std::string message) {
 }
 
 // In the child: parse, render, and say what happened on `fd` as one line.
-[[noreturn]] void runScene(const fs::path& scene, int fd) {
+// The files a scene writes (#fopen … write) go to `writes`, a temporary folder.
+[[noreturn]] void runScene(const fs::path& scene, const fs::path& writes, int fd) {
     std::string result;
     lang::InterpreterOptions options;
     options.libraryPaths = lang::povrayLibraryPaths();
+    options.writeFolder = writes;
     Diagnostics diagnostics;
     auto description = lang::interpretFile(scene, options, diagnostics);
     auto firstError = [&] {
@@ -93,14 +95,14 @@ std::string featureOf(std::string message) {
     _exit(written == static_cast<ssize_t>(result.size()) ? 0 : 1);
 }
 
-Outcome runInChild(const fs::path& scene) {
+Outcome runInChild(const fs::path& scene, const fs::path& writes) {
     int fds[2];
     if (pipe(fds) != 0) return {"the test could not make a pipe", {}, false};
     const pid_t pid = fork();
     if (pid < 0) return {"the test could not fork", {}, false};
     if (pid == 0) {
         close(fds[0]);
-        runScene(scene, fds[1]);
+        runScene(scene, writes, fds[1]);
     }
     close(fds[1]);
     const auto deadline = std::chrono::steady_clock::now() + kLimit;
@@ -156,9 +158,13 @@ TEST_CASE("POV-Ray's example scenes: how many parse and render, and what stops t
     int parsed = 0;
     int rendered = 0;
     std::map<std::string, int> blockers;
+    // The scenes' written files (html_gen.inc's pages, fileio.pov's data):
+    // a temporary folder, removed at the end.
+    const fs::path writes = fs::temp_directory_path() / ("asos-corpus-writes-" + std::to_string(getpid()));
+    fs::create_directories(writes);
     for (const auto& scene : scenes) {
         const std::string name = fs::relative(scene, kCorpus).string();
-        const Outcome o = runInChild(scene);
+        const Outcome o = runInChild(scene, writes);
         INFO("scene " << scene.string() << "\nfirst error: " << o.firstError);
         CHECK(o.located);
         table += name + '\t' + o.summary + '\n';
@@ -171,6 +177,8 @@ TEST_CASE("POV-Ray's example scenes: how many parse and render, and what stops t
             ++blockers[o.summary];
         }
     }
+
+    fs::remove_all(writes);
 
     std::ostringstream summary;
     summary << parsed << " of " << scenes.size() << " POV-Ray examples parse, " << rendered

@@ -8,7 +8,7 @@
 #include <string>
 
 #include "asos/image/image.hpp"
-#include "asos/image/staged_file.hpp"
+#include "asos/util/staged_file.hpp"
 
 namespace asos {
 
@@ -37,7 +37,7 @@ struct IoStatus {
 };
 
 // Encodes `image` for `path`, choosing the file format by extension, and
-// writes it to a staged file beside `path` (asos/image/staged_file.hpp): in
+// writes it to a staged file beside `path` (asos/util/staged_file.hpp): in
 // place only when committed, so a failed or interrupted write never touches
 // the old file. Every format whose OpenImageIO writer takes an IOProxy (all
 // in the table in image_io.cpp, and most others) is encoded in memory and

@@ -62,6 +62,10 @@ enum class NodeKind : std::uint8_t {
     // word Function, flags 1 to 4: a pigment, pattern, transform or spline
     // block, left unread); flags: 1 when a parameter list was written.
     Function,
+    Fopen,   // word: Read, Write or Append; children: the handle's Name, the file name expression
+    Fclose,  // children: the handle's Name
+    Read,    // children: the handle's Name, then the Names read into
+    Write,   // children: the handle's Name, then the values written
 };
 
 struct Node {

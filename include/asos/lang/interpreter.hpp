@@ -26,6 +26,11 @@ struct InterpreterOptions {
     // include folders: povrayLibraryPaths()).
     std::vector<std::filesystem::path> includePaths;
     std::vector<std::filesystem::path> libraryPaths;
+    // Where the files a scene writes (#fopen … write/append) go, relative
+    // names taken from it, as POV-Ray takes them from the current folder;
+    // empty: the current folder. #fopen … read and file_exists() look here
+    // first, then where #include looks.
+    std::filesystem::path writeFolder;
     std::vector<Define> defines;                      // -D, declared before the scene runs
     double clock = 0.0;                               // the value of `clock`
     bool clockOn = false;                             // `clock_on`: the clock was given

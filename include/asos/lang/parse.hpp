@@ -77,6 +77,10 @@ std::optional<Ast> parseMacroBody(std::string_view fileText, TextSpan body, std:
 std::optional<Ast> parseExpression(std::string_view text, std::shared_ptr<const std::string> file,
                                    NameTable& names, Diagnostics& diagnostics);
 
+// A string literal's text between its quotes, its escapes (\n, \t, \", …)
+// decoded as POV-Ray decodes them.
+std::string decodeStringBody(std::string_view body);
+
 // The text of line `line` (1-based) of `text`, without its end of line.
 std::string_view sourceLine(std::string_view text, int line);
 

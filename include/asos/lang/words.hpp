@@ -70,6 +70,7 @@ namespace asos::lang {
     WORD(End, "end") WORD(While, "while") WORD(For, "for") WORD(Version, "version") WORD(Debug, "debug")       \
     WORD(Warning, "warning") WORD(Error, "error") WORD(Macro, "macro") WORD(Switch, "switch")            \
     WORD(Case, "case") WORD(Range, "range") WORD(Break, "break") WORD(Default, "default")                 \
+    WORD(Fopen, "fopen") WORD(Fclose, "fclose") WORD(Read, "read") WORD(Write, "write") WORD(Append, "append") \
     /* arrays */                                                                                \
     WORD(Array, "array")                                                                           \
     /* built-in constants */                                                                    \
@@ -90,7 +91,7 @@ namespace asos::lang {
     WORD(Val, "val") WORD(Defined, "defined") WORD(Substr, "substr") WORD(Strcmp, "strcmp")              \
     WORD(Vstr, "vstr") WORD(Asc, "asc") WORD(Strupr, "strupr") WORD(Strlwr, "strlwr") WORD(Rand, "rand")        \
     WORD(Seed, "seed") WORD(Dimensions, "dimensions") WORD(DimensionSize, "dimension_size")            \
-    WORD(Sum, "sum") WORD(Prod, "prod")                                                            \
+    WORD(Sum, "sum") WORD(Prod, "prod") WORD(FileExists, "file_exists")                               \
     /* user-defined functions */                                                                \
     WORD(Function, "function") WORD(Internal, "internal")                                          \
     /* operators (spelled as written) */                                                        \

@@ -126,6 +126,13 @@ CheckedSceneInputs checkSceneInputs(const SceneInputs& inputs, const std::string
         }
         options.defines.push_back(std::move(*define));
     }
+    if (inputs.writeFolder) {
+        std::error_code ec;
+        if (!std::filesystem::is_directory(*inputs.writeFolder, ec))
+            checked.problems.push_back(error(command, "--write-folder: '" + *inputs.writeFolder + "' is not a folder" +
+                                                          (std::filesystem::exists(*inputs.writeFolder, ec) ? "" : " (it does not exist)")));
+        options.writeFolder = *inputs.writeFolder;
+    }
     if (inputs.clock) {
         const std::optional<double> clock = parseNumber(*inputs.clock);
         if (!clock || !std::isfinite(*clock))

@@ -38,6 +38,7 @@ struct SceneInputs {
     std::vector<std::string> includePaths;
     std::vector<std::string> defines;
     std::optional<std::string> clock;
+    std::optional<std::string> writeFolder;  // --write-folder: where #fopen … write puts files
     // --max-objects, --max-string-length, --max-array-elements (these fields
     // of `limits` only) and --max-memory, a size ("8G", "512M", bytes): what
     // a scene may ask for, and for `asos render` its images too.

@@ -40,6 +40,8 @@ int reportBeforeScene(const std::string& command, const std::vector<std::string>
 }
 
 void addLimitOptions(CLI::App& cmd, SceneInputs& inputs) {
+    cmd.add_option("--write-folder", inputs.writeFolder,
+                   "Folder for the files the scene writes (#fopen … write or append; default: the current folder)");
     lang::InterpreterOptions& limits = inputs.limits;
     cmd.add_option("--max-objects", limits.maxObjects, "Most shapes and lights a scene may make (default 50000000)")
         ->check(CLI::PositiveNumber);

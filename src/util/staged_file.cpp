@@ -1,4 +1,4 @@
-#include "asos/image/staged_file.hpp"
+#include "asos/util/staged_file.hpp"
 
 #include <fcntl.h>
 #include <sys/stat.h>

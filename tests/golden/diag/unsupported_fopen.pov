@@ -1,2 +1,0 @@
-// Reading and writing files is not part of the asos language.
-#fopen Log "log.txt" write

@@ -1,0 +1,2 @@
+// POV-Ray's #statistics (a message of its own) is not part of the asos language.
+#statistics "done"
