@@ -298,6 +298,7 @@ void writeMapPatternName(Writer& w, const Pigment& p) {
             w << "function { " << functionText(*p.function, xyz) << " }";
             break;
         }
+        case Pigment::Kind::Average: w << "average"; break;
     }
 }
 
@@ -337,9 +338,8 @@ void writeNormal(Writer& w, const Normal& n) {
     w << " }\n";
 }
 
-// pigment { … }, without a line end.
-void writePigment(Writer& w, const Pigment& p) {
-    w << "pigment { ";
+// What a pigment { … } holds (a pigment_map's entry holds it too).
+void writePigmentBody(Writer& w, const Pigment& p) {
     switch (p.kind) {
         case Pigment::Kind::Solid:
             w.colour(p.color1);
@@ -359,7 +359,16 @@ void writePigment(Writer& w, const Pigment& p) {
         default: writeMapPatternName(w, p); break;
     }
     if (p.kind != Pigment::Kind::Solid && p.kind != Pigment::Kind::Checker && p.kind != Pigment::Kind::Brick) {
-        if (!p.colourMap.empty()) {
+        if (p.pigmentMap) {
+            w << " pigment_map {";
+            for (const PigmentMapEntry& e : *p.pigmentMap) {
+                w << " [";
+                w.num(e.value) << ' ';
+                writePigmentBody(w, *e.pigment);
+                w << ']';
+            }
+            w << " }";
+        } else if (!p.colourMap.empty()) {
             w << " color_map {";
             for (const ColourMapEntry& e : p.colourMap) {
                 w << " [";
@@ -374,6 +383,12 @@ void writePigment(Writer& w, const Pigment& p) {
         w << ' ';
         w.matrix(p.worldFromPattern);
     }
+}
+
+// pigment { … }, without a line end.
+void writePigment(Writer& w, const Pigment& p) {
+    w << "pigment { ";
+    writePigmentBody(w, p);
     w << " }";
 }
 
