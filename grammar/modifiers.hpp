@@ -115,8 +115,26 @@ struct wrinkles_item : kw_wrinkles {};
 struct ripples_item : kw_ripples {};
 struct waves_item : kw_waves {};
 struct pigment_normal_pattern : sor<bumps_item, dents_item, wrinkles_item, ripples_item, waves_item> {};
-struct pigment_entry : sor<checker_item, brick_item, map_pattern_item, transform_item, brick_size_item, mortar_item,
-                           map_modifier, pigment_normal_pattern, pigment_colour, unsupported_item> {};
+// POV-Ray's average: the weighted mean of its pigment map's pigments.
+struct average_item : kw_average {};
+// pigment_map { [value pigment-body] … }: each entry a pigment's own items
+// (a colour, a declared pigment, a pattern with its modifiers, transforms),
+// written without braces; under `average` the value is an optional weight
+// (POV-Ray's Allow_Float), so it is marked as written or not
+// (pigment_map_value_end) and the interpreter decides.
+struct pigment_entry;
+struct pigment_map_entry_start : success {};
+struct pigment_map_value : seq<expression> {};
+struct pigment_map_value_end : success {};
+struct pigment_map_entry_close : rbracket {};
+struct pigment_map_entry
+    : if_must<lbracket, pigment_map_entry_start, opt<pigment_map_value, opt<comma>>, pigment_map_value_end,
+              entries<pigment_entry>, pigment_map_entry_close> {};
+struct pigment_map_end : rbrace {};
+struct pigment_map_block : if_must<kw_pigment_map, block_open, star<pigment_map_entry>, pigment_map_end> {};
+struct pigment_entry : sor<checker_item, brick_item, map_pattern_item, average_item, transform_item, brick_size_item,
+                           mortar_item, map_modifier, pigment_map_block, pigment_normal_pattern, pigment_colour,
+                           unsupported_item> {};
 struct pigment_end : rbrace {};
 struct pigment_block : if_must<kw_pigment, block_open, entries<pigment_entry>, pigment_end> {};
 
@@ -130,11 +148,13 @@ struct bump_amount : seq<opt<comma>, at<sor<ascii::digit, one<'.', '-', '+', '('
 struct normal_pattern_item
     : seq<sor<bumps_item, dents_item, wrinkles_item, ripples_item, waves_item, map_pattern_item>, opt<bump_amount>> {};
 // checker and brick tilt the normal with normals of their own: not ours.
-struct normal_block_pattern : sor<kw_checker, kw_brick> {};
+struct normal_block_pattern : sor<kw_checker, kw_brick, kw_average> {};
+// A pigment's map in a normal: POV-Ray's "can only be used in a pigment".
+struct normal_pigment_map : kw_pigment_map {};
 struct bump_size_item : if_must<kw_bump_size, float_value> {};
 struct accuracy_item : if_must<kw_accuracy, float_value> {};
 struct normal_name : indexed_name {};  // a declared normal
-struct normal_entry : sor<normal_pattern_item, normal_block_pattern, transform_item, bump_size_item, accuracy_item,
+struct normal_entry : sor<normal_pattern_item, normal_block_pattern, normal_pigment_map, transform_item, bump_size_item, accuracy_item,
                           map_modifier, normal_name, unsupported_item> {};
 struct normal_end : rbrace {};
 struct normal_block : if_must<kw_normal, block_open, entries<normal_entry>, normal_end> {};
@@ -192,7 +212,7 @@ struct finish_block : if_must<kw_finish, block_open, entries<finish_entry>, fini
 // --- texture { Name  pigment {…}  finish {…}  transforms } ------------------------
 // A pattern of textures (`texture { checker texture {…} … }`) is not ours.
 struct texture_pattern : sor<kw_checker, kw_brick, kw_gradient, kw_radial, kw_onion, kw_marble, kw_wood, kw_leopard,
-                             kw_bozo, kw_spotted, kw_granite, kw_agate, kw_crackle> {};
+                             kw_bozo, kw_spotted, kw_granite, kw_agate, kw_crackle, kw_average> {};
 struct texture_name : indexed_name {};  // a declared texture
 struct texture_entry
     : sor<pigment_block, normal_block, finish_block, transform_item, texture_pattern, texture_name, unsupported_item> {};

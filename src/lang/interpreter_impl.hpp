@@ -286,6 +286,9 @@ public:
     void runTopEntry(const Node& n);
     ObjectTree evalObject(const Node& block);
     std::shared_ptr<const Pigment> evalPigment(const Node& block, const Pigment& start);
+    std::shared_ptr<const Pigment> evalPigmentEntries(std::span<const Node> entries, const Pigment& start,
+                                                      const Node& where);
+    std::shared_ptr<const PigmentMap> evalPigmentMap(const Node& block, bool average);
     std::shared_ptr<const Finish> evalFinish(const Node& block, const Finish& start);
     std::shared_ptr<const Interior> evalInterior(const Node& block, const Interior& start);
     std::shared_ptr<const MaterialValue> evalMaterial(const Node& block);
