@@ -241,8 +241,8 @@ template <> inline constexpr auto rejection_message<texture_pattern> = "texture 
 template <> inline constexpr auto rejection_message<finish_emission> = "'{}' in a finish is not supported by asos";
 template <> inline constexpr auto rejection_message<normal_pigment_map> = "'{}' can only be used in a pigment";
 template <> inline constexpr auto rejection_message<normal_block_pattern> = "'{}' in a normal (a pattern of normals) is not supported by asos";
-template <> inline constexpr auto rejection_message<pattern_of_blocks<kw_checker>> = "'checker' of pigments or textures is not supported by asos; give checker two colours";
-template <> inline constexpr auto rejection_message<pattern_of_blocks<kw_brick>> = "'brick' of pigments or textures is not supported by asos; give brick two colours";
+template <> inline constexpr auto rejection_message<pattern_of_textures<kw_checker>> = "'checker' of textures is not supported by asos; give checker two colours or two pigments";
+template <> inline constexpr auto rejection_message<pattern_of_textures<kw_brick>> = "'brick' of textures is not supported by asos; give brick two colours or two pigments";
 // clang-format on
 
 struct errors {

@@ -41,16 +41,20 @@ struct asos_end : rbrace {};
 struct asos_block : if_must<kw_asos, block_open, entries<asos_entry>, asos_end> {};
 
 // --- pigment { colour | checker c1, c2 | brick c1, c2 | Name  modifiers } --------
-// A pattern's two colours, either or both left out (POV-Ray's colour list);
-// `checker pigment {…} pigment {…}` (pigments rather than colours) is not
-// ours. Each pattern keyword gets its own rules, for its own messages.
+// A pattern's two colours, either or both left out (POV-Ray's colour list),
+// or its two pigments (POV-Ray's pigment list, `checker pigment {…}
+// pigment {…}`, the second optional); a list of textures is not ours. Each
+// pattern keyword gets its own rules, for its own messages.
+struct pigment_block;
 template <typename Keyword> struct pattern_colours_start : success {};
-template <typename Keyword> struct pattern_of_blocks : seq<at<sor<kw_pigment, kw_texture>>> {};
+template <typename Keyword> struct pattern_of_textures : seq<at<kw_texture>> {};
+template <typename Keyword> struct pattern_of_pigments : seq<at<kw_pigment>, pigment_block, opt<comma>, opt<pigment_block>> {};
 template <typename Keyword> struct pattern_second_colour : seq<colour_in_place> {};
 template <typename Keyword>
 struct pattern_colours
-    : seq<pattern_colours_start<Keyword>, opt<pattern_of_blocks<Keyword>>,
-          opt<colour_in_place, sor<seq<comma, pattern_second_colour<Keyword>>, opt<colour_in_place>>>> {};
+    : seq<pattern_colours_start<Keyword>, opt<pattern_of_textures<Keyword>>,
+          opt<sor<pattern_of_pigments<Keyword>,
+                  seq<colour_in_place, sor<seq<comma, pattern_second_colour<Keyword>>, opt<colour_in_place>>>>>> {};
 struct checker_item : if_must<kw_checker, pattern_colours<kw_checker>> {};
 struct brick_item : if_must<kw_brick, pattern_colours<kw_brick>> {};
 // brick's own modifiers; the interpreter checks that the pattern is brick.

@@ -289,6 +289,7 @@ public:
     std::shared_ptr<const Pigment> evalPigmentEntries(std::span<const Node> entries, const Pigment& start,
                                                       const Node& where);
     std::shared_ptr<const PigmentMap> evalPigmentMap(const Node& block, bool average);
+    bool patternOfPigments(const Node& item, Pigment& p, const Color& first, const Color& second);
     std::shared_ptr<const Finish> evalFinish(const Node& block, const Finish& start);
     std::shared_ptr<const Interior> evalInterior(const Node& block, const Interior& start);
     std::shared_ptr<const MaterialValue> evalMaterial(const Node& block);

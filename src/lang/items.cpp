@@ -651,6 +651,7 @@ std::shared_ptr<const Pigment> Interpreter::evalPigmentEntries(std::span<const N
             pattern(n);
             p->kind = Pigment::Kind::Checker;
             p->pigmentMap = nullptr;
+            if (patternOfPigments(n, *p, kCheckerBlue, kCheckerGreen)) return;
             p->color1 = n.count > 0 ? evalColour(n[0]) : kCheckerBlue;
             p->color2 = n.count > 1 ? evalColour(n[1]) : kCheckerGreen;
         } else if (n.kind == NodeKind::Item && n.word == Word::Brick) {
@@ -664,6 +665,7 @@ std::shared_ptr<const Pigment> Interpreter::evalPigmentEntries(std::span<const N
             }
             p->kind = Pigment::Kind::Brick;
             p->pigmentMap = nullptr;
+            if (patternOfPigments(n, *p, kBrickMortar, kBrickRed)) return;
             p->color1 = n.count > 0 ? evalColour(n[0]) : kBrickMortar;
             p->color2 = n.count > 1 ? evalColour(n[1]) : kBrickRed;
         } else if (n.kind == NodeKind::Item && isMapPattern(n.word)) {
@@ -745,6 +747,27 @@ std::shared_ptr<const Pigment> Interpreter::evalPigmentEntries(std::span<const N
     if (p->kind == Pigment::Kind::Average && !p->pigmentMap && !mapGiven)
         fail(where, "Missing pigment_map in average pigment");
     return p;
+}
+
+// checker or brick of pigments (POV-Ray's pigment list): a pigment map of
+// the pattern's two values, 0 and 1, each a pigment from the default
+// pigment; the second, when left out, the pattern's default colour (as
+// POV-Ray fills a short list from the pattern's default map). False when
+// the item holds colours.
+bool Interpreter::patternOfPigments(const Node& item, Pigment& p, const Color& first, const Color& second) {
+    if (item.count == 0 || !(item[0].kind == NodeKind::Block && item[0].word == Word::Pigment)) return false;
+    auto map = std::make_shared<PigmentMap>();
+    for (std::uint32_t i = 0; i < item.count; ++i)
+        map->push_back({double(i), evalPigment(item[i], defaultTexture_->pigment)});
+    if (map->size() == 1) {
+        auto fill = std::make_shared<Pigment>();
+        fill->color1 = second;
+        map->push_back({1.0, std::move(fill)});
+    }
+    p.color1 = first;
+    p.color2 = second;
+    p.pigmentMap = std::move(map);
+    return true;
 }
 
 // pigment_map { [value pigment-body] … }: each entry's pigment made from

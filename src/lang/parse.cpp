@@ -324,7 +324,7 @@ struct action<g::layered_texture> {
     }
 };
 template <typename Keyword>
-struct action<g::pattern_of_blocks<Keyword>> : Reject<g::pattern_of_blocks<Keyword>> {};
+struct action<g::pattern_of_textures<Keyword>> : Reject<g::pattern_of_textures<Keyword>> {};
 template <> struct action<g::unsupported_directive> : RejectDirective<g::unsupported_directive> {};
 template <> struct action<g::unknown_directive> : RejectDirective<g::unknown_directive> {};
 

@@ -54,11 +54,16 @@ Color evaluatePigment(const Pigment& pigment, const Vec3& worldPoint) {
         case Pigment::Kind::Solid: return pigment.color1;
         case Pigment::Kind::Checker: {
             const Vec3 p(pigment.worldFromPattern.inverseMatrix() * Vec4(worldPoint, 1.0));
-            return CheckerPattern().value(p) ? pigment.color2 : pigment.color1;
+            const int index = CheckerPattern().value(p);
+            // Of two pigments: the one of the cell, at the pattern-space point.
+            if (pigment.pigmentMap) return evaluatePigment(*(*pigment.pigmentMap)[index].pigment, p);
+            return index ? pigment.color2 : pigment.color1;
         }
         case Pigment::Kind::Brick: {
             const Vec3 p(pigment.worldFromPattern.inverseMatrix() * Vec4(worldPoint, 1.0));
-            return BrickPattern(pigment.brickSize, pigment.mortar).value(p) ? pigment.color2 : pigment.color1;
+            const int index = BrickPattern(pigment.brickSize, pigment.mortar).value(p);
+            if (pigment.pigmentMap) return evaluatePigment(*(*pigment.pigmentMap)[index].pigment, p);
+            return index ? pigment.color2 : pigment.color1;
         }
         case Pigment::Kind::Gradient: case Pigment::Kind::Radial: case Pigment::Kind::Onion:
         case Pigment::Kind::Marble: case Pigment::Kind::Wood: case Pigment::Kind::Leopard:

@@ -338,6 +338,22 @@ void writeNormal(Writer& w, const Normal& n) {
     w << " }\n";
 }
 
+void writePigmentBody(Writer& w, const Pigment& p);
+
+// checker's and brick's two colours, or their two pigments.
+void writePatternItems(Writer& w, const Pigment& p) {
+    if (!p.pigmentMap) {
+        w.colour(p.color1) << ", ";
+        w.colour(p.color2);
+        return;
+    }
+    for (std::size_t i = 0; i < p.pigmentMap->size(); ++i) {
+        w << (i > 0 ? " pigment { " : "pigment { ");
+        writePigmentBody(w, *(*p.pigmentMap)[i].pigment);
+        w << " }";
+    }
+}
+
 // What a pigment { … } holds (a pigment_map's entry holds it too).
 void writePigmentBody(Writer& w, const Pigment& p) {
     switch (p.kind) {
@@ -346,13 +362,12 @@ void writePigmentBody(Writer& w, const Pigment& p) {
             break;
         case Pigment::Kind::Checker:
             w << "checker ";
-            w.colour(p.color1) << ", ";
-            w.colour(p.color2);
+            writePatternItems(w, p);
             break;
         case Pigment::Kind::Brick:
             w << "brick ";
-            w.colour(p.color1) << ", ";
-            w.colour(p.color2) << " brick_size ";
+            writePatternItems(w, p);
+            w << " brick_size ";
             w.vec(p.brickSize) << " mortar ";
             w.num(p.mortar);
             break;

@@ -156,3 +156,22 @@ TEST_CASE("Misused pigment maps get POV-Ray's errors", "[lang][pigment_map]") {
     CHECK(errorOf("sphere { 0, 1 pigment { bozo pigment_map { } } }") ==
           "1:30: a pigment map needs at least one entry\n");
 }
+
+TEST_CASE("checker and brick of two pigments show each cell's pigment", "[pattern][pigment_map][lang]") {
+    const auto r = test::run(R"(
+        sphere { 0, 1 pigment { checker pigment { gradient x } pigment { rgb <1, 0, 0> } scale 2 } }
+        sphere { 0, 1 pigment { brick pigment { rgb 1 } } }
+    )");
+    const SceneDescription& s = test::ok(r);
+    const Pigment& checker = s.objects[0].texture->pigment;
+    REQUIRE(checker.pigmentMap);
+    CHECK_FALSE(hasPattern(checker));  // sampled at points: its pigments vary inside its cells
+    // Cell (0, 0, 0) of the scaled checker: the gradient, read at the
+    // pattern-space point (world x 0.5 is pattern x 0.25).
+    checkColour(evaluatePigment(checker, Vec3(0.5, 0.5, 0.5)), rgb(0.25, 0.25, 0.25));
+    checkColour(evaluatePigment(checker, Vec3(2.5, 0.5, 0.5)), rgb(1, 0, 0));
+    // A brick given one pigment: the brick is POV-Ray's default brick colour.
+    const Pigment& brick = s.objects[1].texture->pigment;
+    REQUIRE(brick.pigmentMap->size() == 2);
+    CHECK((*brick.pigmentMap)[1].pigment->color1.rgb == Vec3(0.6, 0.15, 0.15));
+}

@@ -3,8 +3,8 @@
 // relative to the outer pigment's); a nested map (radial's entries a
 // marble colour map and a wood pigment map) under turbulence and
 // triangle_wave; average of three weighted pigments, one of them with a map
-// of its own, and average with its weights left out (1 each) and a
-// transparent entry over the background; an object transform over a
+// of its own, and average with its weights left out (1 each), a checker
+// of two pigments and a transparent entry over the background; an object transform over a
 // declared pigment with a map, and a sine_wave onion with frequency and
 // phase. Flat-shaded (ambient 1, diffuse 0) on six squares. Rendered by
 // tests/unit/render_golden_test.cpp; POV-Ray's references by
@@ -50,7 +50,7 @@ Tile(2.1, 0.85, pigment {
 Tile(-2.1, -0.85, pigment {
   average
   pigment_map {
-    [checker rgb <1, 0.8, 0.6>, rgb <0.2, 0.1, 0> scale 0.25]
+    [checker pigment { rgb <1, 0.8, 0.6> } pigment { Spots scale 0.5 } scale 0.25]
     [Spots]
     [1 rgbt <1, 1, 1, 1>]
   }
