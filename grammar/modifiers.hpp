@@ -135,7 +135,9 @@ struct pigment_map_entry
     : if_must<lbracket, pigment_map_entry_start, opt<pigment_map_value, opt<comma>>, pigment_map_value_end,
               entries<pigment_entry>, pigment_map_entry_close> {};
 struct pigment_map_end : rbrace {};
-struct pigment_map_block : if_must<kw_pigment_map, block_open, star<pigment_map_entry>, pigment_map_end> {};
+// A declared map by name first, if any (then entries of its own replace it).
+struct pigment_map_block
+    : if_must<kw_pigment_map, block_open, opt<map_name>, star<pigment_map_entry>, pigment_map_end> {};
 struct pigment_entry : sor<checker_item, brick_item, map_pattern_item, average_item, transform_item, brick_size_item,
                            mortar_item, map_modifier, pigment_map_block, pigment_normal_pattern, pigment_colour,
                            unsupported_item> {};

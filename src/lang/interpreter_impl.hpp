@@ -112,6 +112,11 @@ struct ColourMapValue {
     std::vector<ColourMapEntry> entries;
 };
 
+// A declared pigment_map: its entries, shared with every pigment using it.
+struct PigmentMapValue {
+    std::shared_ptr<const PigmentMap> entries;
+};
+
 using Value = std::variant<Num, std::string, std::shared_ptr<const ObjectTree>,
                            std::shared_ptr<const Pigment>, std::shared_ptr<const Finish>,
                            std::shared_ptr<const Texture>, std::shared_ptr<const CameraValue>,
@@ -119,7 +124,7 @@ using Value = std::variant<Num, std::string, std::shared_ptr<const ObjectTree>,
                            std::shared_ptr<const ColourMapValue>, std::shared_ptr<const Normal>, Poison, Unset,
                            std::shared_ptr<const FunctionValue>, std::shared_ptr<const Interior>,
                            std::shared_ptr<const MaterialValue>, std::shared_ptr<const SkySphere>,
-                           std::shared_ptr<const Fog>>;
+                           std::shared_ptr<const Fog>, std::shared_ptr<const PigmentMapValue>>;
 
 // A declared array: up to 5 dimensions, its elements all of one kind (the first
 // one given sets it, as in POV-Ray). Arrays are values: names share one until

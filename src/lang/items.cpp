@@ -155,6 +155,9 @@ Value Interpreter::evalDeclarable(const Node& n) {
     case Word::Interior: return evalInterior(n, Interior{});
     case Word::Material: return evalMaterial(n);
     case Word::ColorMap: return evalColourMap(n);
+    // A declared pigment_map's entries start with their values: POV-Ray reads
+    // it outside any pattern, so not as average's optional weights.
+    case Word::PigmentMap: return std::make_shared<const PigmentMapValue>(PigmentMapValue{evalPigmentMap(n, false)});
     case Word::SkySphere: return std::make_shared<const SkySphere>(evalSkySphere(n));
     case Word::Fog: return std::make_shared<const Fog>(evalFog(n));
     default: return std::make_shared<const ObjectTree>(evalObject(n));
@@ -777,9 +780,15 @@ bool Interpreter::patternOfPigments(const Node& item, Pigment& p, const Color& f
 // pigment item unless it is a float. At most 256 entries, as POV-Ray.
 std::shared_ptr<const PigmentMap> Interpreter::evalPigmentMap(const Node& block, bool average) {
     auto map = std::make_shared<PigmentMap>();
+    std::shared_ptr<const PigmentMap> declared;
     for (const Node& n : block.children()) {
-        if (!(n.kind == NodeKind::Item && n.word == Word::PigmentMap))
-            fail(n, "a declared pigment_map is not supported by asos; write the map's entries out");
+        if (!(n.kind == NodeKind::Item && n.word == Word::PigmentMap)) {
+            const Value v = eval(n);
+            const auto* named = std::get_if<std::shared_ptr<const PigmentMapValue>>(&v);
+            if (!named) fail(n, referenceText(n) + " is " + describe(v) + ", not a pigment map");
+            declared = (*named)->entries;
+            continue;
+        }
         if (map->size() == 256) fail(n, "Too many entries in map. The maximum is 256 entries per map.");
         std::span<const Node> items = n.children();
         double value = 1.0;
@@ -812,6 +821,9 @@ std::shared_ptr<const PigmentMap> Interpreter::evalPigmentMap(const Node& block,
         }
         map->push_back({value, evalPigmentEntries(items, defaultTexture_->pigment, n)});
     }
+    // A declared map is shared as it is (POV-Ray takes nothing after its
+    // name, nor does the grammar: `M [` reads as an index).
+    if (map->empty() && declared) return declared;
     if (map->empty()) fail(block, "a pigment map needs at least one entry");
     return map;
 }

@@ -142,6 +142,19 @@ TEST_CASE("The interpreter reads pigment_map and average", "[lang][pigment_map]"
     CHECK((*avg.pigmentMap)[1].value == 2.0);
 }
 
+TEST_CASE("A declared pigment map is shared by the pigments that name it", "[lang][pigment_map]") {
+    const auto r = test::run(R"(
+        #declare M = pigment_map { [0 rgb 1] [1 bozo] }
+        sphere { 0, 1 pigment { gradient y pigment_map { M } } }
+        sphere { 0, 1 pigment { average pigment_map { M } } }
+    )");
+    const SceneDescription& s = test::ok(r);
+    REQUIRE(s.objects[0].texture->pigment.pigmentMap);
+    CHECK(s.objects[0].texture->pigment.pigmentMap == s.objects[1].texture->pigment.pigmentMap);
+    CHECK(test::run("#declare C = color_map { [0 rgb 1] }\nsphere { 0, 1 pigment { bozo pigment_map { C } } }")
+              .errors() == "2:44: 'C' is a colour map, not a pigment map\n");
+}
+
 TEST_CASE("Misused pigment maps get POV-Ray's errors", "[lang][pigment_map]") {
     auto errorOf = [](const std::string& text) { return test::run(text).errors(); };
     CHECK(errorOf("sphere { 0, 1 pigment { rgb 1 pigment_map { [0 rgb 1] } } }") ==

@@ -21,6 +21,10 @@ sphere { x, 1 pigment { Sky scale 3 } }
 sphere { y, 1 pigment { average pigment_map { [1 Spots] [2, rgbf <1, 1, 1, 0.5>] [Spots rotate 90 * y] } translate z } }
 sphere { z, 1 pigment { radial pigment_map { [0 rgb 0] [1 #if (true) rgb 1 #else rgb 0.5 #end] } } }
 sphere { -x, 1 pigment { Sky color_map { [0 rgb 0] [1 rgb 1] } } }
+// A declared pigment_map, shared by a gradient and an average.
+#declare Map = pigment_map { [0 rgb 1] [0.5, Spots] [1 rgb <0, 0, 1>] }
+sphere { 2 * x, 1 pigment { gradient x pigment_map { Map } } }
+sphere { 2 * y, 1 pigment { average pigment_map { Map } } }
 // checker and brick of pigments (POV-Ray's pigment list), the second left out.
 sphere { -y, 1 pigment { checker pigment { Spots } pigment { Sky scale 0.5 } scale 2 } }
 sphere { -z, 1 pigment { brick pigment { rgb 1 } brick_size 2 } }
