@@ -22,6 +22,7 @@ struct texture_block;
 struct interior_block;
 struct material_block;
 struct colour_map_block;
+struct pigment_map_block;
 struct sky_sphere_block;
 struct fog_block;
 struct block_open;
@@ -112,7 +113,7 @@ struct texture_layers_open : success {};
 struct layered_texture : seq<at<TAO_PEGTL_KEYWORD("texture")>, texture_layers_open, plus<texture_block>> {};
 struct declarable_block : sor<object_statement, light_source_block, camera_block, pigment_block,
                               normal_block, finish_block, texture_block, interior_block, material_block,
-                              colour_map_block, function_value, sky_sphere_block, fog_block> {};
+                              colour_map_block, pigment_map_block, function_value, sky_sphere_block, fog_block> {};
 // POV-Ray wants the ';' after a float, vector or colour, not after a string,
 // a block, an array or a macro's value (which may be a block). A string is told
 // by how it starts: a literal or a function whose value is a string.

@@ -167,6 +167,8 @@ template <> inline constexpr auto error_message<pigment_end> = "expected a colou
 template <> inline constexpr auto error_message<map_entry_value> = "expected the value of the colour map entry";
 template <> inline constexpr auto error_message<map_entry_colour> = "expected the colour of the colour map entry";
 template <> inline constexpr auto error_message<map_entry_close> = "expected ']' to close the colour map entry";
+template <> inline constexpr auto error_message<pigment_map_entry_close> = "expected a pigment's colour, pattern, modifier or transform, or ']' to close the pigment map entry";
+template <> inline constexpr auto error_message<pigment_map_end> = "expected an entry '[value pigment]' or '}' in the pigment map";
 template <> inline constexpr auto error_message<colour_map_end> = "expected an entry '[value colour]' or '}' in the colour map";
 template <> inline constexpr auto error_message<reflection_value> = "expected a colour or a float after reflection";
 template <> inline constexpr auto error_message<reflection_colours> = "expected a colour or a float in reflection { … }";
@@ -249,9 +251,10 @@ template <> inline constexpr auto rejection_message<cylinder_camera> = "the 'cyl
 template <> inline constexpr auto rejection_message<camera_normal> = "'normal' in a camera is not supported by asos";
 template <> inline constexpr auto rejection_message<texture_pattern> = "texture patterns ('{}' of textures) are not supported by asos; use {} in the pigment";
 template <> inline constexpr auto rejection_message<finish_emission> = "'{}' in a finish is not supported by asos";
+template <> inline constexpr auto rejection_message<normal_pigment_map> = "'{}' can only be used in a pigment";
 template <> inline constexpr auto rejection_message<normal_block_pattern> = "'{}' in a normal (a pattern of normals) is not supported by asos";
-template <> inline constexpr auto rejection_message<pattern_of_blocks<kw_checker>> = "'checker' of pigments or textures is not supported by asos; give checker two colours";
-template <> inline constexpr auto rejection_message<pattern_of_blocks<kw_brick>> = "'brick' of pigments or textures is not supported by asos; give brick two colours";
+template <> inline constexpr auto rejection_message<pattern_of_textures<kw_checker>> = "'checker' of textures is not supported by asos; give checker two colours or two pigments";
+template <> inline constexpr auto rejection_message<pattern_of_textures<kw_brick>> = "'brick' of textures is not supported by asos; give brick two colours or two pigments";
 // clang-format on
 
 struct errors {

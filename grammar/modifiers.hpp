@@ -41,16 +41,20 @@ struct asos_end : rbrace {};
 struct asos_block : if_must<kw_asos, block_open, entries<asos_entry>, asos_end> {};
 
 // --- pigment { colour | checker c1, c2 | brick c1, c2 | Name  modifiers } --------
-// A pattern's two colours, either or both left out (POV-Ray's colour list);
-// `checker pigment {…} pigment {…}` (pigments rather than colours) is not
-// ours. Each pattern keyword gets its own rules, for its own messages.
+// A pattern's two colours, either or both left out (POV-Ray's colour list),
+// or its two pigments (POV-Ray's pigment list, `checker pigment {…}
+// pigment {…}`, the second optional); a list of textures is not ours. Each
+// pattern keyword gets its own rules, for its own messages.
+struct pigment_block;
 template <typename Keyword> struct pattern_colours_start : success {};
-template <typename Keyword> struct pattern_of_blocks : seq<at<sor<kw_pigment, kw_texture>>> {};
+template <typename Keyword> struct pattern_of_textures : seq<at<kw_texture>> {};
+template <typename Keyword> struct pattern_of_pigments : seq<at<kw_pigment>, pigment_block, opt<comma>, opt<pigment_block>> {};
 template <typename Keyword> struct pattern_second_colour : seq<colour_in_place> {};
 template <typename Keyword>
 struct pattern_colours
-    : seq<pattern_colours_start<Keyword>, opt<pattern_of_blocks<Keyword>>,
-          opt<colour_in_place, sor<seq<comma, pattern_second_colour<Keyword>>, opt<colour_in_place>>>> {};
+    : seq<pattern_colours_start<Keyword>, opt<pattern_of_textures<Keyword>>,
+          opt<sor<pattern_of_pigments<Keyword>,
+                  seq<colour_in_place, sor<seq<comma, pattern_second_colour<Keyword>>, opt<colour_in_place>>>>>> {};
 struct checker_item : if_must<kw_checker, pattern_colours<kw_checker>> {};
 struct brick_item : if_must<kw_brick, pattern_colours<kw_brick>> {};
 // brick's own modifiers; the interpreter checks that the pattern is brick.
@@ -115,8 +119,28 @@ struct wrinkles_item : kw_wrinkles {};
 struct ripples_item : kw_ripples {};
 struct waves_item : kw_waves {};
 struct pigment_normal_pattern : sor<bumps_item, dents_item, wrinkles_item, ripples_item, waves_item> {};
-struct pigment_entry : sor<checker_item, brick_item, map_pattern_item, transform_item, brick_size_item, mortar_item,
-                           map_modifier, pigment_normal_pattern, pigment_colour, unsupported_item> {};
+// POV-Ray's average: the weighted mean of its pigment map's pigments.
+struct average_item : kw_average {};
+// pigment_map { [value pigment-body] … }: each entry a pigment's own items
+// (a colour, a declared pigment, a pattern with its modifiers, transforms),
+// written without braces; under `average` the value is an optional weight
+// (POV-Ray's Allow_Float), so it is marked as written or not
+// (pigment_map_value_end) and the interpreter decides.
+struct pigment_entry;
+struct pigment_map_entry_start : success {};
+struct pigment_map_value : seq<expression> {};
+struct pigment_map_value_end : success {};
+struct pigment_map_entry_close : rbracket {};
+struct pigment_map_entry
+    : if_must<lbracket, pigment_map_entry_start, opt<pigment_map_value, opt<comma>>, pigment_map_value_end,
+              entries<pigment_entry>, pigment_map_entry_close> {};
+struct pigment_map_end : rbrace {};
+// A declared map by name first, if any (then entries of its own replace it).
+struct pigment_map_block
+    : if_must<kw_pigment_map, block_open, opt<map_name>, star<pigment_map_entry>, pigment_map_end> {};
+struct pigment_entry : sor<checker_item, brick_item, map_pattern_item, average_item, transform_item, brick_size_item,
+                           mortar_item, map_modifier, pigment_map_block, pigment_normal_pattern, pigment_colour,
+                           unsupported_item> {};
 struct pigment_end : rbrace {};
 struct pigment_block : if_must<kw_pigment, block_open, entries<pigment_entry>, pigment_end> {};
 
@@ -130,11 +154,13 @@ struct bump_amount : seq<opt<comma>, at<sor<ascii::digit, one<'.', '-', '+', '('
 struct normal_pattern_item
     : seq<sor<bumps_item, dents_item, wrinkles_item, ripples_item, waves_item, map_pattern_item>, opt<bump_amount>> {};
 // checker and brick tilt the normal with normals of their own: not ours.
-struct normal_block_pattern : sor<kw_checker, kw_brick> {};
+struct normal_block_pattern : sor<kw_checker, kw_brick, kw_average> {};
+// A pigment's map in a normal: POV-Ray's "can only be used in a pigment".
+struct normal_pigment_map : kw_pigment_map {};
 struct bump_size_item : if_must<kw_bump_size, float_value> {};
 struct accuracy_item : if_must<kw_accuracy, float_value> {};
 struct normal_name : indexed_name {};  // a declared normal
-struct normal_entry : sor<normal_pattern_item, normal_block_pattern, transform_item, bump_size_item, accuracy_item,
+struct normal_entry : sor<normal_pattern_item, normal_block_pattern, normal_pigment_map, transform_item, bump_size_item, accuracy_item,
                           map_modifier, normal_name, unsupported_item> {};
 struct normal_end : rbrace {};
 struct normal_block : if_must<kw_normal, block_open, entries<normal_entry>, normal_end> {};
@@ -192,7 +218,7 @@ struct finish_block : if_must<kw_finish, block_open, entries<finish_entry>, fini
 // --- texture { Name  pigment {…}  finish {…}  transforms } ------------------------
 // A pattern of textures (`texture { checker texture {…} … }`) is not ours.
 struct texture_pattern : sor<kw_checker, kw_brick, kw_gradient, kw_radial, kw_onion, kw_marble, kw_wood, kw_leopard,
-                             kw_bozo, kw_spotted, kw_granite, kw_agate, kw_crackle> {};
+                             kw_bozo, kw_spotted, kw_granite, kw_agate, kw_crackle, kw_average> {};
 struct texture_name : indexed_name {};  // a declared texture
 struct texture_entry
     : sor<pigment_block, normal_block, finish_block, transform_item, texture_pattern, texture_name, unsupported_item> {};

@@ -90,6 +90,7 @@ std::string describe(const Value& v) {
         std::string operator()(const std::shared_ptr<ArrayValue>&) const { return "an array"; }
         std::string operator()(const std::shared_ptr<const MacroDef>&) const { return "a macro"; }
         std::string operator()(const std::shared_ptr<const ColourMapValue>&) const { return "a colour map"; }
+        std::string operator()(const std::shared_ptr<const PigmentMapValue>&) const { return "a pigment map"; }
         std::string operator()(const std::shared_ptr<const Normal>&) const { return "a normal"; }
         std::string operator()(const Poison&) const { return "an erroneous value"; }
         std::string operator()(const Unset&) const { return "an element without a value"; }

@@ -165,6 +165,11 @@ struct UserFile {
     std::string written;          // Write, Append: what #write gave it so far
 };
 
+// A declared pigment_map: its entries, shared with every pigment using it.
+struct PigmentMapValue {
+    std::shared_ptr<const PigmentMap> entries;
+};
+
 using Value = std::variant<Num, std::string, std::shared_ptr<const ObjectTree>,
                            std::shared_ptr<const Pigment>, std::shared_ptr<const Finish>,
                            std::shared_ptr<const Texture>, std::shared_ptr<const CameraValue>,
@@ -172,7 +177,8 @@ using Value = std::variant<Num, std::string, std::shared_ptr<const ObjectTree>,
                            std::shared_ptr<const ColourMapValue>, std::shared_ptr<const Normal>, Poison, Unset,
                            std::shared_ptr<const FunctionValue>, std::shared_ptr<const Interior>,
                            std::shared_ptr<const MaterialValue>, std::shared_ptr<const SkySphere>,
-                           std::shared_ptr<const Fog>, std::shared_ptr<UserFile>>;
+                           std::shared_ptr<const Fog>, std::shared_ptr<UserFile>,
+                           std::shared_ptr<const PigmentMapValue>>;
 
 // A declared array: up to 5 dimensions, its elements all of one kind (the first
 // one given sets it, as in POV-Ray). Arrays are values: names share one until
@@ -339,6 +345,10 @@ public:
     void runTopEntry(const Node& n);
     ObjectTree evalObject(const Node& block);
     std::shared_ptr<const Pigment> evalPigment(const Node& block, const Pigment& start);
+    std::shared_ptr<const Pigment> evalPigmentEntries(std::span<const Node> entries, const Pigment& start,
+                                                      const Node& where);
+    std::shared_ptr<const PigmentMap> evalPigmentMap(const Node& block, bool average);
+    bool patternOfPigments(const Node& item, Pigment& p, const Color& first, const Color& second);
     std::shared_ptr<const Finish> evalFinish(const Node& block, const Finish& start);
     std::shared_ptr<const Interior> evalInterior(const Node& block, const Interior& start);
     std::shared_ptr<const MaterialValue> evalMaterial(const Node& block);

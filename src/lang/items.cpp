@@ -156,6 +156,9 @@ Value Interpreter::evalDeclarable(const Node& n) {
     case Word::Interior: return evalInterior(n, Interior{});
     case Word::Material: return evalMaterial(n);
     case Word::ColorMap: return evalColourMap(n);
+    // A declared pigment_map's entries start with their values: POV-Ray reads
+    // it outside any pattern, so not as average's optional weights.
+    case Word::PigmentMap: return std::make_shared<const PigmentMapValue>(PigmentMapValue{evalPigmentMap(n, false)});
     case Word::SkySphere: return std::make_shared<const SkySphere>(evalSkySphere(n));
     case Word::Fog: return std::make_shared<const Fog>(evalFog(n));
     default: return std::make_shared<const ObjectTree>(evalObject(n));
@@ -759,11 +762,19 @@ void Interpreter::applyClipOrBound(ObjectTree& tree, const Node& n) {
 // --- pigments, finishes, textures ---------------------------------------------------------
 
 std::shared_ptr<const Pigment> Interpreter::evalPigment(const Node& block, const Pigment& start) {
+    return evalPigmentEntries(block.children(), start, block);
+}
+
+// A pigment's items: a pigment { … }'s, or a pigment map entry's. `where`:
+// the block or entry, where what the pigment lacks as a whole is reported.
+std::shared_ptr<const Pigment> Interpreter::evalPigmentEntries(std::span<const Node> entries, const Pigment& start,
+                                                               const Node& where) {
     auto p = std::make_shared<Pigment>(start);
     // POV-Ray's order inside a pigment: an optional declared pigment, then at
     // most one colour or pattern, then transforms. POV-Ray rejects anything else
     // ("No matching } in 'pigment'"); so do we, naming the reason.
     enum class Stage { Empty, Declared, Pattern, Modifiers } stage = Stage::Empty;
+    bool mapGiven = false;  // a pigment map written, read or refused
     auto pattern = [&](const Node& n) {
         if (stage == Stage::Pattern) fail(n, "a pigment has one colour or pattern; this is a second one");
         if (stage == Stage::Modifiers) fail(n, "a pigment's colour or pattern must come before its transforms");
@@ -776,6 +787,8 @@ std::shared_ptr<const Pigment> Interpreter::evalPigment(const Node& block, const
         } else if (n.kind == NodeKind::Item && n.word == Word::Checker) {
             pattern(n);
             p->kind = Pigment::Kind::Checker;
+            p->pigmentMap = nullptr;
+            if (patternOfPigments(n, *p, kCheckerBlue, kCheckerGreen)) return;
             p->color1 = n.count > 0 ? evalColour(n[0]) : kCheckerBlue;
             p->color2 = n.count > 1 ? evalColour(n[1]) : kCheckerGreen;
         } else if (n.kind == NodeKind::Item && n.word == Word::Brick) {
@@ -788,12 +801,23 @@ std::shared_ptr<const Pigment> Interpreter::evalPigment(const Node& block, const
                 p->mortar = fresh.mortar;
             }
             p->kind = Pigment::Kind::Brick;
+            p->pigmentMap = nullptr;
+            if (patternOfPigments(n, *p, kBrickMortar, kBrickRed)) return;
             p->color1 = n.count > 0 ? evalColour(n[0]) : kBrickMortar;
             p->color2 = n.count > 1 ? evalColour(n[1]) : kBrickRed;
         } else if (n.kind == NodeKind::Item && isMapPattern(n.word)) {
             pattern(n);
             startMapPattern(n, *p);
             p->color1 = p->color2 = Color{};
+        } else if (n.kind == NodeKind::Item && n.word == Word::Average) {
+            // POV-Ray's average pattern: no value of its own, the weighted
+            // mean of its pigment map's entries.
+            pattern(n);
+            p->kind = Pigment::Kind::Average;
+            p->function = nullptr;
+            p->wave = Pigment::Wave::Ramp;
+            p->color1 = p->color2 = Color{};
+            if (!p->colourMap.empty()) fail(n, "Cannot use color_map with this pattern type (average takes a pigment_map)");
         } else if (n.kind == NodeKind::Item && isMapModifier(n.word)) {
             applyMapModifier(n, *p);
             if (stage == Stage::Empty) stage = Stage::Modifiers;
@@ -801,9 +825,29 @@ std::shared_ptr<const Pigment> Interpreter::evalPigment(const Node& block, const
             if (p->kind == Pigment::Kind::Checker || p->kind == Pigment::Kind::Brick)
                 fail(n, std::string("a colour map on ") + (p->kind == Pigment::Kind::Checker ? "checker" : "brick") +
                             " is not supported by asos; give it two colours");
+            if (p->kind == Pigment::Kind::Average) {
+                mapGiven = true;
+                fail(n, "Cannot use color_map with this pattern type (average)");
+            }
             // On a plain colour POV-Ray reads the map and ignores it.
             const auto map = evalColourMap(n);
-            if (isMapPigment(p->kind)) p->colourMap = map->entries;
+            if (isMapPigment(p->kind)) {
+                // One map per pattern: a colour map replaces a pigment map.
+                p->colourMap = map->entries;
+                p->pigmentMap = nullptr;
+            }
+        } else if (n.kind == NodeKind::Block && n.word == Word::PigmentMap) {
+            // POV-Ray's Not_With: no pigment map on a plain colour or on a
+            // pattern of two colours.
+            if (!isMapPigment(p->kind))
+                fail(n, std::string("Cannot use pigment_map with this pigment type (") +
+                            (p->kind == Pigment::Kind::Solid     ? "a plain colour"
+                             : p->kind == Pigment::Kind::Checker ? "checker"
+                                                                 : "brick") +
+                            "); give it a pattern first");
+            mapGiven = true;
+            p->pigmentMap = evalPigmentMap(n, p->kind == Pigment::Kind::Average);
+            p->colourMap.clear();
         } else if (n.kind == NodeKind::Item && (n.word == Word::BrickSize || n.word == Word::Mortar)) {
             // Pattern modifiers, like the transforms (POV-Ray reads them in the
             // same loop), of a brick pigment only.
@@ -828,6 +872,7 @@ std::shared_ptr<const Pigment> Interpreter::evalPigment(const Node& block, const
             } else if (const auto* num = std::get_if<Num>(&v)) {
                 pattern(n);
                 p->kind = Pigment::Kind::Solid;
+                p->pigmentMap = nullptr;
                 p->color1 = toColour(*num, n);
                 p->color2 = Color{};
             } else {
@@ -835,8 +880,86 @@ std::shared_ptr<const Pigment> Interpreter::evalPigment(const Node& block, const
             }
         }
     };
-    runEntries(block.children(), EntryHandler(entry));
+    runEntries(entries, EntryHandler(entry));
+    if (p->kind == Pigment::Kind::Average && !p->pigmentMap && !mapGiven)
+        fail(where, "Missing pigment_map in average pigment");
     return p;
+}
+
+// checker or brick of pigments (POV-Ray's pigment list): a pigment map of
+// the pattern's two values, 0 and 1, each a pigment from the default
+// pigment; the second, when left out, the pattern's default colour (as
+// POV-Ray fills a short list from the pattern's default map). False when
+// the item holds colours.
+bool Interpreter::patternOfPigments(const Node& item, Pigment& p, const Color& first, const Color& second) {
+    if (item.count == 0 || !(item[0].kind == NodeKind::Block && item[0].word == Word::Pigment)) return false;
+    auto map = std::make_shared<PigmentMap>();
+    for (std::uint32_t i = 0; i < item.count; ++i)
+        map->push_back({double(i), evalPigment(item[i], defaultTexture_->pigment)});
+    if (map->size() == 1) {
+        auto fill = std::make_shared<Pigment>();
+        fill->color1 = second;
+        map->push_back({1.0, std::move(fill)});
+    }
+    p.color1 = first;
+    p.color2 = second;
+    p.pigmentMap = std::move(map);
+    return true;
+}
+
+// pigment_map { [value pigment-body] … }: each entry's pigment made from
+// POV-Ray's default pigment (the #default texture's) by the entry's items.
+// Under `average` the value is an optional weight, 1 when left out (POV-Ray's
+// Allow_Float): what the grammar read as the value is then the entry's first
+// pigment item unless it is a float. At most 256 entries, as POV-Ray.
+std::shared_ptr<const PigmentMap> Interpreter::evalPigmentMap(const Node& block, bool average) {
+    auto map = std::make_shared<PigmentMap>();
+    std::shared_ptr<const PigmentMap> declared;
+    for (const Node& n : block.children()) {
+        if (!(n.kind == NodeKind::Item && n.word == Word::PigmentMap)) {
+            const Value v = eval(n);
+            const auto* named = std::get_if<std::shared_ptr<const PigmentMapValue>>(&v);
+            if (!named) fail(n, referenceText(n) + " is " + describe(v) + ", not a pigment map");
+            declared = (*named)->entries;
+            continue;
+        }
+        if (map->size() == 256) fail(n, "Too many entries in map. The maximum is 256 entries per map.");
+        std::span<const Node> items = n.children();
+        double value = 1.0;
+        if (n.flags == 1) {
+            const Node& written = n[0];
+            if (!average) {
+                const Value v = eval(written);
+                const auto* num = std::get_if<Num>(&v);
+                if (!num || !num->isFloat())
+                    fail(written, "expected the value of the pigment map entry, found " + describe(v) +
+                                      (std::holds_alternative<std::shared_ptr<const Pigment>>(v)
+                                           ? " (only an average entry may leave its value out)"
+                                           : ""));
+                value = num->v[0];
+                items = items.subspan(1);
+            } else {
+                // POV-Ray takes a number there as the weight, and refuses a
+                // colour or a vector ("Expected 'numeric expression'").
+                const Value v = eval(written);
+                if (const auto* num = std::get_if<Num>(&v)) {
+                    if (!num->isFloat())
+                        fail(written, "expected the weight of the average entry, found " + describe(v) +
+                                          " (POV-Ray reads a colour there as the weight; write [1 colour])");
+                    value = num->v[0];
+                    items = items.subspan(1);
+                }
+            }
+        } else if (!average) {
+            fail(n, "expected the value of the pigment map entry");
+        }
+        map->push_back({value, evalPigmentEntries(items, defaultTexture_->pigment, n)});
+    }
+    // A declared map is shared as it is (POV-Ray takes nothing after its
+    // name, nor does the grammar: `M [` reads as an index).
+    if (map->empty() && declared) return declared;
+    if (map->empty()) fail(block, "a pigment map needs at least one entry");
+    return map;
 }
 
 // The modifiers of the map patterns, in any order after the pattern, as

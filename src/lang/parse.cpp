@@ -289,6 +289,7 @@ template <> struct action<g::cylinder_camera> : Reject<g::cylinder_camera> {};
 template <> struct action<g::camera_normal> : Reject<g::camera_normal> {};
 template <> struct action<g::texture_pattern> : Reject<g::texture_pattern> {};
 template <> struct action<g::normal_block_pattern> : Reject<g::normal_block_pattern> {};
+template <> struct action<g::normal_pigment_map> : Reject<g::normal_pigment_map> {};
 template <> struct action<g::finish_emission> : Reject<g::finish_emission> {};
 template <>
 struct action<g::texture_layers_open> {
@@ -304,7 +305,7 @@ struct action<g::layered_texture> {
     }
 };
 template <typename Keyword>
-struct action<g::pattern_of_blocks<Keyword>> : Reject<g::pattern_of_blocks<Keyword>> {};
+struct action<g::pattern_of_textures<Keyword>> : Reject<g::pattern_of_textures<Keyword>> {};
 template <> struct action<g::unsupported_directive> : RejectDirective<g::unsupported_directive> {};
 template <> struct action<g::unknown_directive> : RejectDirective<g::unknown_directive> {};
 
@@ -623,6 +624,21 @@ template <> struct action<g::interior_block> : CloseBlock<Word::Interior> {};
 template <> struct action<g::material_block> : CloseBlock<Word::Material> {};
 template <> struct action<g::asos_block> : CloseBlock<Word::Asos> {};
 template <> struct action<g::colour_map_block> : CloseBlock<Word::ColorMap> {};
+template <> struct action<g::pigment_map_block> : CloseBlock<Word::PigmentMap> {};
+// A pigment map's entry: an Item whose flags say whether its first child is
+// the value as written (1) or the entry starts with the pigment's items (0).
+template <> struct action<g::pigment_map_entry_start> : OpenFrame {};
+template <> struct action<g::pigment_map_value_end> {
+    static void apply0(Builder& b) { b.frame().positional = static_cast<int>(b.frameSize()); }
+};
+template <>
+struct action<g::pigment_map_entry> {
+    template <typename Input>
+    static void apply(const Input& in, Builder& b) {
+        const auto written = static_cast<std::uint8_t>(b.frame().positional);
+        b.close(NodeKind::Item, Word::PigmentMap, posOf(in), written);
+    }
+};
 
 // Sequences: directive bodies and a polygon's points.
 template <>
@@ -708,6 +724,7 @@ template <> struct action<g::spotted_item> : ItemAction<Word::Spotted, 0> {};
 template <> struct action<g::granite_item> : ItemAction<Word::Granite, 0> {};
 template <> struct action<g::agate_item> : ItemAction<Word::Agate, 0> {};
 template <> struct action<g::crackle_item> : ItemAction<Word::Crackle, 0> {};
+template <> struct action<g::average_item> : ItemAction<Word::Average, 0> {};
 template <> struct action<g::form_item> : ItemAction<Word::Form, 1> {};
 template <> struct action<g::metric_item> : ItemAction<Word::Metric, 1> {};
 template <> struct action<g::offset_item> : ItemAction<Word::Offset, 1> {};

@@ -200,6 +200,11 @@ namespace {
 // The most any colour of the pigment lets through, in any channel.
 double mostLetThrough(const Pigment& pigment) {
     auto most = [](const Color& c) { return largestComponent(layerTransmittance(c)); };
+    if (pigment.pigmentMap) {
+        double m = 0.0;
+        for (const PigmentMapEntry& e : *pigment.pigmentMap) m = std::max(m, mostLetThrough(*e.pigment));
+        return m;
+    }
     switch (pigment.kind) {
         case Pigment::Kind::Solid: return most(pigment.color1);
         case Pigment::Kind::Checker: case Pigment::Kind::Brick:

@@ -131,7 +131,8 @@ double rawValue(const Pigment& p, const Vec3& q) {
         }
         case Pigment::Kind::Solid:
         case Pigment::Kind::Checker:
-        case Pigment::Kind::Brick: break;
+        case Pigment::Kind::Brick:
+        case Pigment::Kind::Average: break;
     }
     return 0.0;
 }

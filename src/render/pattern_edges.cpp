@@ -33,8 +33,10 @@ double edgesCrossed(const Pigment& pigment, const Vec3& lo, const Vec3& hi) {
 }  // namespace
 
 bool hasPattern(const Pigment& pigment) {
+    // A checker or brick of pigments varies inside its cells as its pigments
+    // do: it is sampled at points, as the map patterns (no edges, no filter).
     return (pigment.kind == Pigment::Kind::Checker || pigment.kind == Pigment::Kind::Brick) &&
-           !(pigment.color1 == pigment.color2);
+           !pigment.pigmentMap && !(pigment.color1 == pigment.color2);
 }
 
 int pigmentIndex(const Pigment& pigment, const Vec3& worldPoint) {

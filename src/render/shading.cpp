@@ -9,25 +9,75 @@
 
 namespace asos {
 
+namespace {
+
+Color mix(const Color& a, const Color& b, double f) {
+    return Color{a.rgb + f * (b.rgb - a.rgb), a.filter + f * (b.filter - a.filter),
+                 a.transmit + f * (b.transmit - a.transmit)};
+}
+
+// POV-Ray's pigment_map (PigmentBlendMap::Compute): the entries on either
+// side of the value, found as a colour map's are (colourMapAt), each
+// evaluated at the pattern-space point, blended linearly.
+Color pigmentMapAt(const PigmentMap& map, double value, const Vec3& point) {
+    if (value <= map.front().value) return evaluatePigment(*map.front().pigment, point);
+    if (value >= map.back().value) return evaluatePigment(*map.back().pigment, point);
+    std::size_t i = 1;
+    while (value > map[i].value) ++i;
+    const PigmentMapEntry& a = map[i - 1];
+    const PigmentMapEntry& b = map[i];
+    const double f = (value - a.value) / (b.value - a.value);
+    return mix(evaluatePigment(*a.pigment, point), evaluatePigment(*b.pigment, point), f);
+}
+
+// POV-Ray's average (PigmentBlendMap::ComputeAverage): the entries'
+// pigments at the point, weighted by their values, over the sum of the
+// weights (which POV-Ray keeps in single precision).
+Color pigmentMapAverage(const PigmentMap& map, const Vec3& point) {
+    Color sum{};
+    float total = 0.0f;
+    for (const PigmentMapEntry& e : map) {
+        const Color c = evaluatePigment(*e.pigment, point);
+        sum.rgb += e.value * c.rgb;
+        sum.filter += e.value * c.filter;
+        sum.transmit += e.value * c.transmit;
+        total += static_cast<float>(e.value);
+    }
+    const double t = total;
+    return Color{sum.rgb / t, sum.filter / t, sum.transmit / t};
+}
+
+}  // namespace
+
 Color evaluatePigment(const Pigment& pigment, const Vec3& worldPoint) {
     switch (pigment.kind) {
         case Pigment::Kind::Solid: return pigment.color1;
         case Pigment::Kind::Checker: {
             const Vec3 p(pigment.worldFromPattern.inverseMatrix() * Vec4(worldPoint, 1.0));
-            return CheckerPattern().value(p) ? pigment.color2 : pigment.color1;
+            const int index = CheckerPattern().value(p);
+            // Of two pigments: the one of the cell, at the pattern-space point.
+            if (pigment.pigmentMap) return evaluatePigment(*(*pigment.pigmentMap)[index].pigment, p);
+            return index ? pigment.color2 : pigment.color1;
         }
         case Pigment::Kind::Brick: {
             const Vec3 p(pigment.worldFromPattern.inverseMatrix() * Vec4(worldPoint, 1.0));
-            return BrickPattern(pigment.brickSize, pigment.mortar).value(p) ? pigment.color2 : pigment.color1;
+            const int index = BrickPattern(pigment.brickSize, pigment.mortar).value(p);
+            if (pigment.pigmentMap) return evaluatePigment(*(*pigment.pigmentMap)[index].pigment, p);
+            return index ? pigment.color2 : pigment.color1;
         }
         case Pigment::Kind::Gradient: case Pigment::Kind::Radial: case Pigment::Kind::Onion:
         case Pigment::Kind::Marble: case Pigment::Kind::Wood: case Pigment::Kind::Leopard:
         case Pigment::Kind::Bozo: case Pigment::Kind::Spotted: case Pigment::Kind::Granite:
         case Pigment::Kind::Agate: case Pigment::Kind::Crackle: case Pigment::Kind::Bumps: case Pigment::Kind::Dents:
         case Pigment::Kind::Wrinkles: case Pigment::Kind::Ripples: case Pigment::Kind::Waves:
-        case Pigment::Kind::Function: {
+        case Pigment::Kind::Function: case Pigment::Kind::Average: {
             const Vec3 p(pigment.worldFromPattern.inverseMatrix() * Vec4(worldPoint, 1.0));
-            return colourMapAt(colourMapOf(pigment), mapPatternValue(pigment, p));
+            if (!pigment.pigmentMap) return colourMapAt(colourMapOf(pigment), mapPatternValue(pigment, p));
+            // The entries see the point as this pigment's pattern does: after
+            // its transform and its turbulence (POV-Ray's Warp_EPoint).
+            const Vec3 q = turbulatedPoint(pigment, p);
+            if (pigment.kind == Pigment::Kind::Average) return pigmentMapAverage(*pigment.pigmentMap, q);
+            return pigmentMapAt(*pigment.pigmentMap, mapPatternValueAt(pigment, q), q);
         }
     }
     return pigment.color1;

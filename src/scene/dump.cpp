@@ -327,6 +327,7 @@ void writeMapPatternName(Writer& w, const Pigment& p) {
             w << "function { " << functionText(*p.function, xyz) << " }";
             break;
         }
+        case Pigment::Kind::Average: w << "average"; break;
     }
 }
 
@@ -366,29 +367,52 @@ void writeNormal(Writer& w, const Normal& n) {
     w << " }\n";
 }
 
-// pigment { … }, without a line end.
-void writePigment(Writer& w, const Pigment& p) {
-    w << "pigment { ";
+void writePigmentBody(Writer& w, const Pigment& p);
+
+// checker's and brick's two colours, or their two pigments.
+void writePatternItems(Writer& w, const Pigment& p) {
+    if (!p.pigmentMap) {
+        w.colour(p.color1) << ", ";
+        w.colour(p.color2);
+        return;
+    }
+    for (std::size_t i = 0; i < p.pigmentMap->size(); ++i) {
+        w << (i > 0 ? " pigment { " : "pigment { ");
+        writePigmentBody(w, *(*p.pigmentMap)[i].pigment);
+        w << " }";
+    }
+}
+
+// What a pigment { … } holds (a pigment_map's entry holds it too).
+void writePigmentBody(Writer& w, const Pigment& p) {
     switch (p.kind) {
         case Pigment::Kind::Solid:
             w.colour(p.color1);
             break;
         case Pigment::Kind::Checker:
             w << "checker ";
-            w.colour(p.color1) << ", ";
-            w.colour(p.color2);
+            writePatternItems(w, p);
             break;
         case Pigment::Kind::Brick:
             w << "brick ";
-            w.colour(p.color1) << ", ";
-            w.colour(p.color2) << " brick_size ";
+            writePatternItems(w, p);
+            w << " brick_size ";
             w.vec(p.brickSize) << " mortar ";
             w.num(p.mortar);
             break;
         default: writeMapPatternName(w, p); break;
     }
     if (p.kind != Pigment::Kind::Solid && p.kind != Pigment::Kind::Checker && p.kind != Pigment::Kind::Brick) {
-        if (!p.colourMap.empty()) {
+        if (p.pigmentMap) {
+            w << " pigment_map {";
+            for (const PigmentMapEntry& e : *p.pigmentMap) {
+                w << " [";
+                w.num(e.value) << ' ';
+                writePigmentBody(w, *e.pigment);
+                w << ']';
+            }
+            w << " }";
+        } else if (!p.colourMap.empty()) {
             w << " color_map {";
             for (const ColourMapEntry& e : p.colourMap) {
                 w << " [";
@@ -403,6 +427,12 @@ void writePigment(Writer& w, const Pigment& p) {
         w << ' ';
         w.matrix(p.worldFromPattern);
     }
+}
+
+// pigment { … }, without a line end.
+void writePigment(Writer& w, const Pigment& p) {
+    w << "pigment { ";
+    writePigmentBody(w, p);
     w << " }";
 }
 

@@ -164,14 +164,21 @@ TEST_CASE("modifiers", "[lang][grammar]") {
          "sphere { 0, 1 normal { bumps 0.5 scale 0.2 } }", "sphere { 0, 1 normal { granite, -0.3 turbulence 0.2 } }",
          "sphere { 0, 1 normal { N bump_size 2 } }", "sphere { 0, 1 normal { ripples Size frequency 4 phase 0.5 } }",
          "sphere { 0, 1 normal { gradient x 0.4 accuracy 0.01 sine_wave } }",
-         "sphere { 0, 1 texture { normal { wrinkles } } }", "sphere { 0, 1 finish { crand 0.05 diffuse 0.7 } }"},
+         "sphere { 0, 1 texture { normal { wrinkles } } }", "sphere { 0, 1 finish { crand 0.05 diffuse 0.7 } }",
+         "sphere { 0, 1 pigment { bozo pigment_map { [0 Red] [0.5, P scale 2] [1 checker Red, White] } } }",
+         "sphere { 0, 1 pigment { gradient y pigment_map { [0 wood pigment_map { [0 Red] [1 rgb 1] }] } } }",
+         "sphere { 0, 1 pigment { average pigment_map { [P] [2 rgb 1] [function { x } rotate y] } } }",
+         "sphere { 0, 1 pigment { bozo pigment_map { [0 #if (A) Red #else White #end] } } }",
+         "sphere { 0, 1 pigment { brick pigment { Red } pigment { White } } }",
+         "sphere { 0, 1 pigment { checker pigment { P scale 2 }, pigment { bozo } scale 3 } }"},
         {"sphere { 0, 1 pigment { rgb } }", "sphere { 0, 1 pigment { checker Red, } }",
          "sphere { 0, 1 pigment { brick Red, } }", "sphere { 0, 1 pigment { brick mortar } }",
          "sphere { 0, 1 pigment { brick brick_size } }",
-         "sphere { 0, 1 pigment { brick pigment { Red } pigment { White } } }",
          "sphere { 0, 1 texture { brick texture { T } texture { U } } }",
          "sphere { 0, 1 finish { phong } }",         "sphere { 0, 1 translate }", "sphere { 0, 1 asos { eps } }", "sphere { 0, 1 asos { foo 1 } }",
-         "sphere { 0, 1 normal { bump_size } }", "sphere { 0, 1 normal { accuracy } }", "sphere { 0, 1 finish { crand } }"});
+         "sphere { 0, 1 normal { bump_size } }", "sphere { 0, 1 normal { accuracy } }", "sphere { 0, 1 finish { crand } }",
+         "sphere { 0, 1 pigment { bozo pigment_map { [0 Red } } }", "sphere { 0, 1 pigment { bozo pigment_map { 0 Red } } }",
+         "sphere { 0, 1 pigment { bozo pigment_map { [0 Red]  } }", "sphere { 0, 1 normal { bozo pigment_map { } } }"});
 }
 
 TEST_CASE("macros, #switch, #break, #default", "[lang][grammar]") {

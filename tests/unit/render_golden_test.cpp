@@ -86,13 +86,14 @@ void compareWithPovray(const std::string& scene, RenderMethod method, const std:
 // atmosphere_legacy for a scene older than 3.7), transparency without an
 // interior (transparency) and with one (refraction), the reflection { }
 // block with fresnel, falloff, exponent and metallic (reflection_block),
-// dispersion (dispersion), clipped_by and bounded_by (clip).
+// dispersion (dispersion), clipped_by and bounded_by (clip), pigment_map and
+// average (pigment_map).
 TEST_CASE("The renderer matches POV-Ray with one ray per pixel", "[golden][povray]") {
     for (const char* scene : {"flat_perspective", "flat_orthographic", "lighting", "reflection", "primitives",
                               "brick", "gamma_off", "assumed_gamma", "map_plain", "map_noise", "map_turbulence",
                               "csg", "layered", "layered_legacy", "normals", "atmosphere", "atmosphere_legacy",
                               "map_normal_patterns", "map_function", "map_crackle", "transparency", "refraction",
-                              "reflection_block", "dispersion", "clip"})
+                              "reflection_block", "dispersion", "clip", "pigment_map"})
         compareWithPovray(scene, RenderMethod::Single, "", "-A");
 }
 

@@ -44,6 +44,7 @@ namespace asos::lang {
     WORD(Gradient, "gradient") WORD(Radial, "radial") WORD(Onion, "onion") WORD(Marble, "marble")          \
     WORD(Wood, "wood") WORD(Leopard, "leopard") WORD(Bozo, "bozo") WORD(Spotted, "spotted")                \
     WORD(Granite, "granite") WORD(Agate, "agate") WORD(AgateTurb, "agate_turb")                          \
+    WORD(Average, "average") WORD(PigmentMap, "pigment_map")                                       \
     WORD(Crackle, "crackle") WORD(Form, "form") WORD(Metric, "metric") WORD(Offset, "offset")              \
     WORD(Solid, "solid")                                                                           \
     WORD(Turbulence, "turbulence") WORD(Octaves, "octaves") WORD(Omega, "omega") WORD(Lambda, "lambda")    \

@@ -13,7 +13,8 @@
 namespace asos {
 
 // Whether the pigment is a pattern of two different colours with edge
-// planes (checker, brick): the patterns ASOS finds edges of and filters. The
+// planes (checker, brick; not of two pigments): the patterns ASOS finds
+// edges of and filters. The
 // map patterns (gradient, marble, ...) are not: a leaf samples them at its
 // point (docs/algorithm.md, "Map patterns").
 bool hasPattern(const Pigment& pigment);

@@ -202,16 +202,29 @@ struct ColourMapEntry {
     bool operator==(const ColourMapEntry&) const = default;
 };
 
+struct Pigment;
+// One entry of POV-Ray's pigment_map: the pigment at a pattern value (for
+// `average`, its weight). The pigment is shared (a declared one, and every
+// copy of the pigment that holds the map, point to one).
+struct PigmentMapEntry {
+    double value = 0.0;
+    std::shared_ptr<const Pigment> pigment;
+    bool operator==(const PigmentMapEntry&) const = default;
+};
+using PigmentMap = std::vector<PigmentMapEntry>;
+
 struct Pigment {
     // Checker and Brick have two colours and plane edges; the others run a
-    // value over [0, 1] through a colour map (render/map_pattern.hpp).
+    // value over [0, 1] through a colour map (render/map_pattern.hpp), or
+    // through a pigment map; Average is POV-Ray's weighted mean of its
+    // pigment map's pigments.
     enum class Kind {
         Solid, Checker, Brick, Gradient, Radial, Onion, Marble, Wood, Leopard, Bozo, Spotted, Granite, Agate,
         Crackle,
         // The normal patterns' own values as pigment patterns (POV-Ray's
         // pattern.cpp): bumps is bozo's noise, dents its cube, wrinkles ten
         // octaves of it, ripples and waves POV-Ray's ten wave sources.
-        Bumps, Dents, Wrinkles, Ripples, Waves, Function
+        Bumps, Dents, Wrinkles, Ripples, Waves, Function, Average
     };
     enum class Wave { Ramp, Triangle, Sine };
     Kind kind = Kind::Solid;
@@ -222,6 +235,13 @@ struct Pigment {
     // The map patterns' parameters, POV-Ray's defaults (the wave and the map
     // are the pattern's own where they are not given).
     std::vector<ColourMapEntry> colourMap;  // in value order; empty: the pattern's default map
+    // POV-Ray's pigment_map, in place of the colour map where it is not null:
+    // whole pigments, blended as the colour map's colours are, each
+    // evaluated at the point in this pigment's pattern space (after its
+    // transform and turbulence: the entries' transforms are relative to
+    // this pigment's, as POV-Ray applies them). Shared, never copied per
+    // object; compared by address.
+    std::shared_ptr<const PigmentMap> pigmentMap;
     Vec3 gradient{0.0, 1.0, 0.0};         // normalised, as POV-Ray keeps it
     Vec3 turbulence{0.0};                 // per axis; zero: none
     int octaves = 6;
@@ -323,13 +343,18 @@ inline bool seeThrough(const Color& c) { return c.filter != 0.0 || c.transmit !=
 // colour of its bottom layer's pigment filters or transmits (the layers
 // above only show the ones under them). Such an object is transparent: rays
 // go on through it and it filters the shadows it casts.
-inline bool mayBeTransparent(const Texture& t) {
-    const Pigment& p = t.pigment;
+inline bool mayBeTransparent(const Pigment& p) {
+    if (p.pigmentMap) {
+        for (const PigmentMapEntry& e : *p.pigmentMap)
+            if (mayBeTransparent(*e.pigment)) return true;
+        return false;
+    }
     if (seeThrough(p.color1) || seeThrough(p.color2)) return true;
     for (const ColourMapEntry& e : p.colourMap)
         if (seeThrough(e.color)) return true;
     return false;
 }
+inline bool mayBeTransparent(const Texture& t) { return mayBeTransparent(t.pigment); }
 
 // POV-Ray's default texture (black pigment, default finish), shared.
 inline const std::shared_ptr<const Texture>& defaultTexture() {
