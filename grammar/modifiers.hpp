@@ -228,7 +228,7 @@ struct hollow_start : success {};
 struct hollow_value : seq<at<sor<constant, ascii::digit, one<'(', '!'>>>, expression> {};
 struct hollow_item : seq<kw_hollow, hollow_start, opt<hollow_value>> {};
 struct inverse_item : kw_inverse {};
-struct sturm_item : kw_sturm {};  // a torus only; the interpreter checks
+struct sturm_item : kw_sturm {};  // a torus or a poly only; the interpreter checks
 struct object_modifier : sor<pigment_block, normal_block, finish_block, texture_block, interior_block, material_block,
                              transform_item, no_shadow_item, open_item, hollow_item, inverse_item, sturm_item,
                              asos_block, unsupported_item> {};
