@@ -518,7 +518,6 @@ ConeClass Poly::classify(const LocalCone& cone) const {
     stack[top++] = {lo, end, 0};
     int first = 0;               // the sign of the first piece
     double tNear = kInfinity;    // the start of the first piece not of that sign
-    bool regular = true;         // every such piece so far crossed once by each ray
     int budget = kPieceBudget;
     while (top > 0) {
         const Span s = stack[--top];
@@ -570,15 +569,18 @@ ConeClass Poly::classify(const LocalCone& cone) const {
             first = sign;
             continue;
         }
+        // Once Full is out of reach, nothing more is worth a piece: Marginal
+        // from the first piece of unknown sign to where the range is closed.
+        const double closedEnd = farSign != 0 ? end : cone.tMax;
         if (sign == first) {
             // Back to the first sign after pieces of unknown sign: a ray may
             // have crossed twice there, or not at all.
-            if (tNear < kInfinity) regular = false;
+            if (tNear < kInfinity) return marginalClass(cone, tNear, closedEnd);
             continue;
         }
         if (sign == 0) {
             tNear = std::min(tNear, s.ta);
-            regular = regular && monotone;
+            if (!monotone) return marginalClass(cone, tNear, closedEnd);
             continue;
         }
         // The opposite sign: every ray has crossed before this piece; where
@@ -586,7 +588,7 @@ ConeClass Poly::classify(const LocalCone& cone) const {
         // once there, so its first hit moves smoothly over the cone.
         const double tFar = s.ta;
         if (tNear == kInfinity) tNear = s.ta;  // a crossing at a piece's end
-        if (regular && cone.surelyWithin(tNear, tFar)) return fullClass(tNear, padUp(tFar));
+        if (cone.surelyWithin(tNear, tFar)) return fullClass(tNear, padUp(tFar));
         return marginalClass(cone, tNear, tFar);
     }
     // No piece of the opposite sign.
