@@ -538,7 +538,6 @@ ConeClass Poly::classify(const LocalCone& cone) const {
         // (the apex on the surface, or near it): f's sign where the rays
         // start. The same as the slope's, f keeps it over the piece; the
         // opposite, each ray crosses once in it.
-        bool startsToward = false;
         if (first == 0 && sign == 0 && slopeSign != 0) {
             const double m0 = s.ta * cone.cosHalf;
             const double r0 = std::sqrt(std::max(0.0, s.ta * s.ta + m0 * m0 - 2.0 * s.ta * m0 * cone.cosHalf)) *
@@ -546,10 +545,7 @@ ConeClass Poly::classify(const LocalCone& cone) const {
             const Local start = about(cone.apex + m0 * cone.axis, r0, shifted);
             const int startSign = start.value > start.spread ? 1 : start.value < -start.spread ? -1 : 0;
             if (startSign == slopeSign) sign = slopeSign;
-            else if (startSign == -slopeSign) {
-                first = startSign;
-                startsToward = true;
-            }
+            else if (startSign == -slopeSign) first = startSign;
         }
 
         const bool monotone = first != 0 && slopeSign == -first;
