@@ -254,7 +254,7 @@ struct hollow_start : success {};
 struct hollow_value : seq<at<sor<constant, ascii::digit, one<'(', '!'>>>, expression> {};
 struct hollow_item : seq<kw_hollow, hollow_start, opt<hollow_value>> {};
 struct inverse_item : kw_inverse {};
-struct sturm_item : kw_sturm {};  // a torus only; the interpreter checks
+struct sturm_item : kw_sturm {};  // a torus or a poly only; the interpreter checks
 struct clipped_by_block;  // objects.hpp: they hold objects
 struct bounded_by_block;
 struct object_modifier : sor<pigment_block, normal_block, finish_block, texture_block, interior_block, material_block,

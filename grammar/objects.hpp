@@ -69,6 +69,20 @@ struct torus_minor : seq<expression> {};
 struct torus_block : if_must<kw_torus, block_open, torus_major, opt_comma, torus_minor, arguments_end, object_body,
                              object_end> {};
 
+// poly { N, <a0, a1, ...> }   quartic { <a0, ... a34> }   cubic { <a0, ... a19> }:
+// the coefficients become one Sequence node (their count is the interpreter's
+// check); POV-Ray reads the commas between them as optional.
+struct poly_order : seq<expression> {};
+struct poly_coefficient : seq<expression> {};
+struct poly_next_coefficient : seq<expression> {};  // no message: its failure ends the list
+struct poly_coefficients
+    : if_must<vector_open, poly_coefficient, star<sor<seq<comma, poly_coefficient>, poly_next_coefficient>>,
+              vector_close> {};
+struct poly_block : if_must<kw_poly, block_open, poly_order, opt_comma, poly_coefficients, arguments_end,
+                            object_body, object_end> {};
+struct quartic_block : if_must<kw_quartic, block_open, poly_coefficients, arguments_end, object_body, object_end> {};
+struct cubic_block : if_must<kw_cubic, block_open, poly_coefficients, arguments_end, object_body, object_end> {};
+
 // text { ttf "font.ttf" "string" thickness, <offset> }
 struct text_font : seq<expression> {};
 struct text_string : seq<expression> {};
@@ -137,7 +151,8 @@ struct object_block : if_must<kw_object, block_open, object_base, arguments_end,
 
 struct object_statement : sor<sphere_block, box_block, cone_block, cylinder_block, disc_block,
                               polygon_block, plane_block, union_block, difference_block,
-                              intersection_block, merge_block, object_block, quadric_block, torus_block, text_block,
+                              intersection_block, merge_block, object_block, quadric_block, torus_block, poly_block,
+                              quartic_block, cubic_block, text_block,
                               triangle_block, smooth_triangle_block, mesh_block, mesh2_block> {};
 
 // clipped_by { objects… } | clipped_by { bounded_by }, and bounded_by { objects… } |

@@ -29,7 +29,7 @@ bool isObjectBlock(const Node& n) {
     case Word::Sphere: case Word::Box: case Word::Cone: case Word::Cylinder: case Word::Disc:
     case Word::Polygon: case Word::Plane: case Word::Union: case Word::Object:
     case Word::Difference: case Word::Intersection: case Word::Merge: case Word::LightSource:
-    case Word::Quadric: case Word::Torus: case Word::Text: case Word::Triangle: case Word::SmoothTriangle: case Word::Mesh:
+    case Word::Quadric: case Word::Torus: case Word::Poly: case Word::Quartic: case Word::Cubic: case Word::Text: case Word::Triangle: case Word::SmoothTriangle: case Word::Mesh:
     case Word::Mesh2:
         return true;
     default:
@@ -461,6 +461,33 @@ ObjectTree Interpreter::evalObject(const Node& block) {
         t.shape = TorusShape{evalFloat(args[0]), evalFloat(args[1]), false};
         checkShape();
         break;
+    case Word::Poly: case Word::Quartic: case Word::Cubic: {
+        // poly { N, <...> }; quartic and cubic have no order argument, so
+        // the record's argument 1 (the coefficients) is their argument 0.
+        const bool hasOrder = block.word == Word::Poly;
+        PolyShape p;
+        p.keyword = hasOrder ? "poly" : block.word == Word::Quartic ? "quartic" : "cubic";
+        p.order = block.word == Word::Quartic ? 4 : 3;
+        if (hasOrder) {
+            // POV-Ray's (int) of the value.
+            const double order = evalFloat(args[0]);
+            if (!(order >= 2.0 && order < PolyShape::kMaxOrder + 1.0)) {
+                invalid(args[0], "the order of a poly must be 2 to " + std::to_string(PolyShape::kMaxOrder) +
+                                     ", not " + formatNumber(order));
+                break;
+            }
+            p.order = static_cast<int>(order);
+        }
+        const Node& list = args[hasOrder ? 1 : 0];
+        p.coefficients.reserve(list.children().size());
+        for (const Node& c : list.children()) p.coefficients.push_back(evalFloat(c));
+        t.shape = std::move(p);
+        for (const ShapeIssue& issue : shapeIssues(t.shape)) {
+            const Node& argument = args[hasOrder ? issue.argument : 0];
+            invalid(issue.element < 0 ? argument : argument.children()[issue.element], issue.message);
+        }
+        break;
+    }
     case Word::Text:
         evalText(block, t);
         break;
@@ -684,12 +711,17 @@ void Interpreter::applyObjectModifier(ObjectTree& tree, const Node& n, bool isSh
     case Word::Sturm:
         // The torus' roots are found robustly without it (docs/geometry.md);
         // it is kept for the dump.
-        if (isShape)
+        if (isShape) {
             if (auto* torus = std::get_if<TorusShape>(&tree.shape)) {
                 torus->sturm = true;
                 return;
             }
-        fail(n, "'sturm' applies only to a torus here");
+            if (auto* poly = std::get_if<PolyShape>(&tree.shape)) {
+                poly->sturm = true;
+                return;
+            }
+        }
+        fail(n, "'sturm' applies only to a torus, a poly, a quartic or a cubic here");
     case Word::Asos:
         if (isLight) {
             auto light = std::make_shared<Light>(*tree.light);

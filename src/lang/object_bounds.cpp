@@ -181,13 +181,16 @@ std::optional<bool> withinConvex(const ObjectTree& bound, const Vec3& p) {
 }
 
 // Whether POV-Ray keeps the bound of an object placed alone: a CSG, a
-// text, a quadric without a finite box of its own.
+// text, a quadric without a finite box of its own, a poly.
 bool keepsBound(const ObjectTree& t) {
     if (t.kind == ObjectTree::Kind::Union) return true;
     if (t.mesh) return false;
     if (const auto* extrusion = std::get_if<ExtrusionShape>(&t.shape))
         return std::string_view(extrusion->keyword) == "text";
     if (std::holds_alternative<QuadricShape>(t.shape)) return !shapeBox(t);
+    // A poly's box is POV-Ray's infinite one (Poly::Compute_BBox), whatever
+    // asos shows of it.
+    if (std::holds_alternative<PolyShape>(t.shape)) return true;
     return false;
 }
 

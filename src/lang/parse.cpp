@@ -594,6 +594,9 @@ template <> struct action<g::polygon_block> : CloseBlock<Word::Polygon> {};
 template <> struct action<g::plane_block> : CloseBlock<Word::Plane> {};
 template <> struct action<g::quadric_block> : CloseBlock<Word::Quadric> {};
 template <> struct action<g::torus_block> : CloseBlock<Word::Torus> {};
+template <> struct action<g::poly_block> : CloseBlock<Word::Poly> {};
+template <> struct action<g::quartic_block> : CloseBlock<Word::Quartic> {};
+template <> struct action<g::cubic_block> : CloseBlock<Word::Cubic> {};
 template <> struct action<g::text_block> : CloseBlock<Word::Text> {};
 template <> struct action<g::triangle_block> : CloseBlock<Word::Triangle> {};
 template <> struct action<g::smooth_triangle_block> : CloseBlock<Word::SmoothTriangle> {};
@@ -654,6 +657,14 @@ struct action<g::directive_body<Entry>> {
 };
 template <>
 struct action<g::polygon_points> {
+    template <typename Input>
+    static void apply(const Input& in, Builder& b) {
+        b.close(NodeKind::Sequence, Word::None, posOf(in));
+    }
+};
+// A poly's coefficients: vector_open opened the frame.
+template <>
+struct action<g::poly_coefficients> {
     template <typename Input>
     static void apply(const Input& in, Builder& b) {
         b.close(NodeKind::Sequence, Word::None, posOf(in));

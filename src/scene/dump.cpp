@@ -156,6 +156,20 @@ void writeShape(Writer& w, const Shape& shape) {
             w.num(t.minor) << '\n';
             if (t.sturm) w << "  sturm\n";
         }
+        // As written: quartic and cubic without their order; the coefficients
+        // eight to a line.
+        void operator()(const PolyShape& p) const {
+            const std::string keyword = p.keyword ? p.keyword : "poly";
+            w << keyword << " {\n  ";
+            if (keyword == "poly") w << p.order << ", ";
+            w << '<';
+            for (std::size_t n = 0; n < p.coefficients.size(); ++n) {
+                if (n > 0) w << (n % 8 == 0 ? ",\n   " : ", ");
+                w.num(p.coefficients[n]);
+            }
+            w << ">\n";
+            if (p.sturm) w << "  sturm\n";
+        }
         // As a prism of cubic pieces (a line's or a quadratic's raised to
         // degree 3 exactly); a text's glyph is such a prism under its
         // transform.

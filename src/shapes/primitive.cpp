@@ -182,12 +182,13 @@ ConeClass Primitive::clippedClass(const PreparedCone& cone) const {
     const ConeClass own = classifyOwn(cone);
     if (own.coverage == Coverage::Miss) return own;
     // Every crossing of the leaf in the cone: its first within own's
-    // depths; a shape other than a torus or an extrusion meets a line at most twice, so a
+    // depths; a shape other than a torus, a poly or an extrusion meets a line at most twice, so a
     // curved leaf's second lies within them too, or among the nearest
     // crossings past own.tFar (a flat leaf has none).
     ConeClass second;
-    if (std::holds_alternative<Torus>(shape_) || std::holds_alternative<Extrusion>(shape_)) {
-        // Up to four crossings (an extrusion: any number): every one past own's lies in the world box.
+    if (std::holds_alternative<Torus>(shape_) || std::holds_alternative<Extrusion>(shape_) ||
+        std::holds_alternative<Poly>(shape_)) {
+        // Up to four crossings (a poly: its order; an extrusion: any number): every one past own's lies in the world box.
         const Vec3 far = glm::max(glm::abs(worldBounds_.lo - cone.apex), glm::abs(worldBounds_.hi - cone.apex));
         second = {Coverage::Marginal, std::max(cone.tMin, own.tFar), std::min(cone.tMax, padUp(glm::length(far))),
                   false};

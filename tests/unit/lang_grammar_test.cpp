@@ -114,6 +114,10 @@ TEST_CASE("objects and scene items", "[lang][grammar]") {
          "plane { y, 0 }", "union { sphere { 0, 1 } box { 0, 1 } pigment { rgb 1 } }",
          "quadric { <1, 1, 0>, <0, 0, 0>, <0, 0, 0>, -1 }", "quadric { 1 0 0, -1 translate y }",
          "torus { 1, 0.5 }", "torus { 1 0.5 sturm translate y }", "triangle { 0, x, y }",
+         "poly { 2, <1, 0, 0, 0, 1, 0, 0, 1, 0, -1> }", "poly { 2 <1 0 0 0 1 0 0 1 0 -1> sturm }",
+         "quartic { <1, 0, 0, 0, 2, 0, 0, 2, 0, -104, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 1, 0, 0, 2, 0, 56, "
+         "0, 0, 0, 0, 1, 0, -104, 0, 784> sturm translate y }",
+         "cubic { <0, 0, 0, 1, 0, 0, 0, 0, 0, 0, 0, 0, 0, -1, 0, 0, 0, 0, -1, 0> }",
          "smooth_triangle { 0, z, x, z, y, z pigment { rgb 1 } }",
          "mesh { triangle { 0, x, y } smooth_triangle { 0 z x z y z } translate x }",
          "mesh2 { vertex_vectors { 3, 0, x, y } face_indices { 1, <0, 1, 2> } }",
@@ -141,7 +145,8 @@ TEST_CASE("objects and scene items", "[lang][grammar]") {
          "polygon { }", "union { sphere { 0, 1 } ", "camera { location }", "light_source { }",
          "spheres { 0, 1 }", "sphere { 0, 1 look_at x }", "background { }",
          "light_source { 0, 1 asos { emitter } }", "light_source { 0, 1 asos { emitter lambert } }",
-         "light_source { 0, 1 area_illumination ( }"});
+         "light_source { 0, 1 area_illumination ( }", "poly { 2 }", "quartic { 1, 2 }", "poly { 2, <1, 2 }",
+         "cubic { <1, 2,> }"});
 }
 
 TEST_CASE("modifiers", "[lang][grammar]") {

@@ -98,10 +98,12 @@ TEST_CASE("The renderer matches POV-Ray with one ray per pixel", "[golden][povra
 }
 
 // The torus (tests/golden/povray/torus.pov: tilted, squashed, thin with
-// sturm, horn, cut from a box) and the triangles and meshes (mesh.pov:
-// triangle, smooth_triangle, mesh, a smooth mesh2, a mesh in a difference).
-TEST_CASE("Tori and meshes match POV-Ray with one ray per pixel", "[golden][povray]") {
-    for (const char* scene : {"torus", "mesh"}) compareWithPovray(scene, RenderMethod::Single, "", "-A");
+// sturm, horn, cut from a box), the triangles and meshes (mesh.pov:
+// triangle, smooth_triangle, mesh, a smooth mesh2, a mesh in a difference)
+// and poly's surfaces (quartic.pov: two tori and shapesq.inc's Piriform as
+// quartics, an ellipsoid as poly 2).
+TEST_CASE("Tori, meshes and polys match POV-Ray with one ray per pixel", "[golden][povray]") {
+    for (const char* scene : {"torus", "mesh", "quartic"}) compareWithPovray(scene, RenderMethod::Single, "", "-A");
 }
 
 // POV-Ray's defaults: threshold 0.3, depth +R3 (two subdivisions); -J turns

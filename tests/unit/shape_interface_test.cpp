@@ -29,12 +29,12 @@ struct SphereWithoutRaysLeave : Sphere {
 static_assert(PrimitiveShape<Sphere> && PrimitiveShape<Box> && PrimitiveShape<Cylinder> &&
               PrimitiveShape<TruncatedCone> && PrimitiveShape<Disc> && PrimitiveShape<EllipticDisc> &&
               PrimitiveShape<Polygon> && PrimitiveShape<Plane> && PrimitiveShape<Quadric> && PrimitiveShape<Torus> &&
-              PrimitiveShape<SmoothTriangle>);
+              PrimitiveShape<SmoothTriangle> && PrimitiveShape<Poly>);
 static_assert(!PrimitiveShape<SphereWithoutSelfShadow>, "a missing answer is a compile error");
 static_assert(!PrimitiveShape<SphereWithoutRaysLeave>, "a missing answer is a compile error");
 static_assert(!PrimitiveShape<int>);
 static_assert(ShapeRecord<SphereShape> && ShapeRecord<PolygonShape> && ShapeRecord<DiscShape> &&
-              ShapeRecord<TorusShape> && ShapeRecord<TriangleShape>);
+              ShapeRecord<TorusShape> && ShapeRecord<TriangleShape> && ShapeRecord<PolyShape>);
 static_assert(!ShapeRecord<int>, "a record without validate and place is refused");
 static_assert(kEveryAlternativeShapeRecord<Shape>);
 static_assert(!kEveryAlternativePrimitiveShape<std::variant<Sphere, SphereWithoutSelfShadow>>);

@@ -19,6 +19,7 @@ namespace asos::lang {
     WORD(FogAlt, "fog_alt") WORD(TurbDepth, "turb_depth")                                          \
     WORD(Quadric, "quadric")                                                                       \
     WORD(Torus, "torus") WORD(Sturm, "sturm")                                                      \
+    WORD(Poly, "poly") WORD(Quartic, "quartic") WORD(Cubic, "cubic")                               \
     WORD(Text, "text") WORD(Ttf, "ttf")                                                            \
     WORD(Triangle, "triangle") WORD(SmoothTriangle, "smooth_triangle") WORD(Mesh, "mesh") WORD(Mesh2, "mesh2") \
     WORD(VertexVectors, "vertex_vectors") WORD(NormalVectors, "normal_vectors")                   \

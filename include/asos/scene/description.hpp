@@ -119,6 +119,21 @@ struct QuadricShape {
 // robustly either way).
 struct TorusShape { double major = 1.0; double minor = 0.5; bool sturm = false; };
 
+// POV-Ray's poly { N, <a0, a1, ...> } (quartic: N = 4, cubic: N = 3): the
+// points where the sum of a_n x^i y^j z^k is 0, its inside where the sum is
+// negative. The terms run in POV-Ray's order: i from N down to 0, within it j
+// from N - i down, within that k from N - i - j down (35 terms for a quartic:
+// x^4, x^3 y, x^3 z, x^3, x^2 y^2, ..., z, 1). `sturm` and the keyword as written
+// (the roots are found robustly either way).
+struct PolyShape {
+    static constexpr int kMaxOrder = 35;  // POV-Ray 3.7's MAX_ORDER
+    static constexpr int termCount(int order) { return (order + 1) * (order + 2) * (order + 3) / 6; }
+    int order = 4;
+    std::vector<double> coefficients;
+    bool sturm = false;
+    const char* keyword = "poly";  // "poly", "quartic" or "cubic"
+};
+
 // POV-Ray's triangle, smooth_triangle, mesh and mesh2, all as faces over a
 // shared list of vertices (and of normals for smooth faces), in object space
 // as written: a mesh's triangles are one Object each (TriangleShape), so that
@@ -169,7 +184,7 @@ struct CsgShape {
 
 using Shape = std::variant<SphereShape, BoxShape, ConeShape, CylinderShape, DiscShape,
                            PolygonShape, PlaneShape, QuadricShape, CsgShape, TorusShape, TriangleShape,
-                           ExtrusionShape>;
+                           ExtrusionShape, PolyShape>;
 
 // A CSG object as written: nodes (node 0 the root), each an operation over
 // its children or a leaf shape; `inverse` as POV-Ray's (toggled by each

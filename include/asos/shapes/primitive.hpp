@@ -33,6 +33,7 @@
 #include "asos/shapes/primitive_shape.hpp"
 #include "asos/shapes/quadric.hpp"
 #include "asos/shapes/sphere.hpp"
+#include "asos/shapes/poly.hpp"
 #include "asos/shapes/torus.hpp"
 #include "asos/shapes/triangle.hpp"
 #include "asos/shapes/truncated_cone.hpp"
@@ -168,7 +169,7 @@ private:
     // (an alternative of Shape, answering ShapeRecord) becomes one of them.
     using LocalShape =
         std::variant<Sphere, Box, TruncatedCone, Cylinder, Disc, Polygon, Plane, EllipticDisc,
-                     Quadric, Torus, SmoothTriangle, Extrusion>;
+                     Quadric, Torus, SmoothTriangle, Extrusion, Poly>;
     static_assert(kEveryAlternativePrimitiveShape<LocalShape>,
                   "every local shape answers PrimitiveShape (primitive_shape.hpp)");
 
