@@ -232,7 +232,6 @@ template <> inline constexpr auto rejection_message<unsupported_item> = "'{}' is
 template <> inline constexpr auto rejection_message<unsupported_in_expression> = "'{}' is not supported by asos";
 template <> inline constexpr auto rejection_message<unsupported_directive> = "'#{}' is not supported by asos";
 template <> inline constexpr auto rejection_message<unknown_directive> = "unknown directive '#{}'";
-template <> inline constexpr auto rejection_message<cylinder_light> = "'cylinder' lights are not supported by asos";
 template <> inline constexpr auto rejection_message<cylinder_camera> = "the 'cylinder' camera is not supported by asos";
 template <> inline constexpr auto rejection_message<camera_normal> = "'normal' in a camera is not supported by asos";
 template <> inline constexpr auto rejection_message<texture_pattern> = "texture patterns ('{}' of textures) are not supported by asos; use {} in the pigment";

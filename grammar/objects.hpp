@@ -157,11 +157,19 @@ struct shadowless_item : kw_shadowless {};
 struct area_illumination_start : kw_area_illumination {};
 struct area_illumination_value : seq<expression> {};  // optional: no message of its own
 struct area_illumination_item : seq<area_illumination_start, opt<not_at<kw_asos>, area_illumination_value>> {};
-struct cylinder_light : kw_cylinder {};  // POV-Ray's cylindrical light: not ours
+// spotlight | cylinder  parallel  point_at <p>  radius r  falloff f  tightness t
+struct spotlight_item : kw_spotlight {};
+struct cylinder_light : kw_cylinder {};
+struct parallel_item : kw_parallel {};
+struct point_at_item : if_must<kw_point_at, vector_value> {};
+struct light_radius_item : if_must<kw_radius, float_value> {};
+struct light_falloff_item : if_must<kw_falloff, float_value> {};
+struct tightness_item : if_must<kw_tightness, float_value> {};
 struct light_entry
     : sor<area_light_item, adaptive_item, jitter_item, circular_item, orient_item, fade_distance_item,
-          fade_power_item, shadowless_item, area_illumination_item, transform_item, asos_block, cylinder_light,
-          unsupported_item> {};
+          fade_power_item, shadowless_item, area_illumination_item, spotlight_item, cylinder_light,
+          parallel_item, point_at_item, light_radius_item, light_falloff_item, tightness_item, transform_item,
+          asos_block, unsupported_item> {};
 struct light_end : rbrace {};
 struct light_source_block : if_must<kw_light_source, block_open, light_position, light_colour,
                                     arguments_end, entries<light_entry>, light_end> {};

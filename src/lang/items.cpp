@@ -477,6 +477,7 @@ void Interpreter::applyTransform(ObjectTree& tree, const Transform& m, const Nod
     case ObjectTree::Kind::Light: {
         auto light = std::make_shared<Light>(*tree.light);
         light->position = m.point(light->position);
+        light->pointAt = m.point(light->pointAt);
         if (light->area) {
             light->area->axis1 = m.vector(light->area->axis1);
             light->area->axis2 = m.vector(light->area->axis2);
@@ -1129,6 +1130,7 @@ Light Interpreter::evalLight(const Node& block) {
         if (isTransform(n)) {
             const Transform m = evalTransformItem(n);
             l.position = m.point(l.position);
+            l.pointAt = m.point(l.pointAt);
             if (l.area) {
                 l.area->axis1 = m.vector(l.area->axis1);
                 l.area->axis2 = m.vector(l.area->axis2);
@@ -1164,6 +1166,36 @@ Light Interpreter::evalLight(const Node& block) {
             break;
         }
         case Word::Shadowless: l.shadowless = true; break;
+        // POV-Ray sets a type's defaults at its keyword, and takes point_at,
+        // radius, falloff and tightness only after it (point_at after
+        // parallel too).
+        case Word::Spotlight:
+            l.type = LightType::Spot;
+            l.radius = 30.0;
+            l.falloff = 45.0;
+            l.tightness = 0.0;
+            break;
+        case Word::Cylinder:
+            l.type = LightType::Cylinder;
+            l.radius = 0.75;
+            l.falloff = 1.0;
+            l.tightness = 0.0;
+            l.parallel = true;
+            break;
+        case Word::Parallel: l.parallel = true; break;
+        case Word::PointAt:
+            if (l.type == LightType::Point && !l.parallel)
+                fail(n, "point_at needs spotlight, cylinder or parallel before it in the light_source (as in POV-Ray)");
+            l.pointAt = evalVector(n[0]);
+            break;
+        case Word::Radius: case Word::Falloff: case Word::Tightness: {
+            const std::string name(wordText(n.word));
+            if (l.type == LightType::Point)
+                fail(n, name + " needs spotlight or cylinder before it in the light_source (as in POV-Ray)");
+            const double v = evalFloat(n[0]);
+            (n.word == Word::Radius ? l.radius : n.word == Word::Falloff ? l.falloff : l.tightness) = v;
+            break;
+        }
         case Word::AreaIllumination: l.areaIllumination = n.count == 0 || evalBool(n[0]); break;
         case Word::Asos: l.asos = evalAsos(n, l.asos, true); break;
         default: fail(n, "this is not a light_source item");

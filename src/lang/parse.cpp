@@ -303,7 +303,6 @@ struct RejectDirective {
 };
 template <> struct action<g::unsupported_item> : Reject<g::unsupported_item> {};
 template <> struct action<g::unsupported_in_expression> : Reject<g::unsupported_in_expression> {};
-template <> struct action<g::cylinder_light> : Reject<g::cylinder_light> {};
 template <> struct action<g::cylinder_camera> : Reject<g::cylinder_camera> {};
 template <> struct action<g::camera_normal> : Reject<g::camera_normal> {};
 template <> struct action<g::texture_pattern> : Reject<g::texture_pattern> {};
@@ -752,6 +751,13 @@ template <> struct action<g::orient_item> : ItemAction<Word::Orient, 0> {};
 template <> struct action<g::fade_distance_item> : ItemAction<Word::FadeDistance, 1> {};
 template <> struct action<g::fade_power_item> : ItemAction<Word::FadePower, 1> {};
 template <> struct action<g::shadowless_item> : ItemAction<Word::Shadowless, 0> {};
+template <> struct action<g::spotlight_item> : ItemAction<Word::Spotlight, 0> {};
+template <> struct action<g::cylinder_light> : ItemAction<Word::Cylinder, 0> {};
+template <> struct action<g::parallel_item> : ItemAction<Word::Parallel, 0> {};
+template <> struct action<g::point_at_item> : ItemAction<Word::PointAt, 1> {};
+template <> struct action<g::light_radius_item> : ItemAction<Word::Radius, 1> {};
+template <> struct action<g::light_falloff_item> : ItemAction<Word::Falloff, 1> {};
+template <> struct action<g::tightness_item> : ItemAction<Word::Tightness, 1> {};
 // area_illumination with or without its value.
 template <>
 struct action<g::area_illumination_start> {

@@ -31,7 +31,8 @@ namespace asos::lang {
     WORD(AreaLight, "area_light") WORD(Adaptive, "adaptive") WORD(Jitter, "jitter")                      \
     WORD(Circular, "circular") WORD(Orient, "orient") WORD(FadeDistance, "fade_distance")                \
     WORD(FadePower, "fade_power") WORD(Shadowless, "shadowless")                                      \
-    WORD(AreaIllumination, "area_illumination")                                                    \
+    WORD(AreaIllumination, "area_illumination") WORD(Spotlight, "spotlight") WORD(Parallel, "parallel")  \
+    WORD(PointAt, "point_at") WORD(Radius, "radius") WORD(Tightness, "tightness")                     \
     /* object modifiers, pigments, finishes */                                                  \
     WORD(Open, "open") WORD(Pigment, "pigment") WORD(Finish, "finish") WORD(Texture, "texture")             \
     WORD(Translate, "translate") WORD(Rotate, "rotate") WORD(Scale, "scale") WORD(Matrix, "matrix")         \
