@@ -77,6 +77,27 @@ struct text_offset : seq<expression> {};
 struct text_block : if_must<kw_text, block_open, kw_ttf, text_font, opt_comma, text_string, opt_comma,
                             text_thickness, opt_comma, text_offset, arguments_end, object_body, object_end> {};
 
+// prism { [linear_sweep | conic_sweep] [linear_spline | quadratic_spline |
+//         cubic_spline | bezier_spline]  height1, height2, N, <p1>, … <pN> }
+// (open and sturm are object modifiers): the sweep and spline words become
+// one Sequence node, the points another.
+struct prism_linear_sweep : kw_linear_sweep {};
+struct prism_conic_sweep : kw_conic_sweep {};
+struct prism_linear_spline : kw_linear_spline {};
+struct prism_quadratic_spline : kw_quadratic_spline {};
+struct prism_cubic_spline : kw_cubic_spline {};
+struct prism_bezier_spline : kw_bezier_spline {};
+struct prism_option : sor<prism_linear_sweep, prism_conic_sweep, prism_linear_spline, prism_quadratic_spline,
+                          prism_cubic_spline, prism_bezier_spline> {};
+struct prism_options : seq<sequence_start, star<prism_option>> {};
+struct prism_height1 : seq<expression> {};
+struct prism_height2 : seq<expression> {};
+struct prism_count : seq<expression> {};
+struct prism_point : seq<expression> {};
+struct prism_points : seq<sequence_start, prism_point, star<opt_comma, expression>> {};
+struct prism_block : if_must<kw_prism, block_open, prism_options, prism_height1, opt_comma, prism_height2, opt_comma,
+                             prism_count, opt_comma, prism_points, arguments_end, object_body, object_end> {};
+
 // triangle { <a>, <b>, <c> }   smooth_triangle { <a>, <na>, <b>, <nb>, <c>, <nc> }
 struct triangle_corner : seq<expression> {};
 struct triangle_block : if_must<kw_triangle, block_open, triangle_corner, opt_comma, triangle_corner, opt_comma,
@@ -137,7 +158,7 @@ struct object_block : if_must<kw_object, block_open, object_base, arguments_end,
 
 struct object_statement : sor<sphere_block, box_block, cone_block, cylinder_block, disc_block,
                               polygon_block, plane_block, union_block, difference_block,
-                              intersection_block, merge_block, object_block, quadric_block, torus_block, text_block,
+                              intersection_block, merge_block, object_block, quadric_block, torus_block, text_block, prism_block,
                               triangle_block, smooth_triangle_block, mesh_block, mesh2_block> {};
 
 // --- light_source { <position>, colour  modifiers… } --------------------------------

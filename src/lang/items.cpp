@@ -28,7 +28,7 @@ bool isObjectBlock(const Node& n) {
     case Word::Sphere: case Word::Box: case Word::Cone: case Word::Cylinder: case Word::Disc:
     case Word::Polygon: case Word::Plane: case Word::Union: case Word::Object:
     case Word::Difference: case Word::Intersection: case Word::Merge: case Word::LightSource:
-    case Word::Quadric: case Word::Torus: case Word::Text: case Word::Triangle: case Word::SmoothTriangle: case Word::Mesh:
+    case Word::Quadric: case Word::Torus: case Word::Text: case Word::Prism: case Word::Triangle: case Word::SmoothTriangle: case Word::Mesh:
     case Word::Mesh2:
         return true;
     default:
@@ -392,6 +392,9 @@ ObjectTree Interpreter::evalObject(const Node& block) {
     case Word::Text:
         evalText(block, t);
         break;
+    case Word::Prism:
+        evalPrism(block, t);
+        break;
     case Word::Triangle: case Word::SmoothTriangle: {
         auto mesh = std::make_shared<TriangleMesh>();
         addTriangle(*mesh, block);
@@ -598,8 +601,12 @@ void Interpreter::applyObjectModifier(ObjectTree& tree, const Node& n, bool isSh
                 cylinder->open = true;
                 return;
             }
+            if (auto* prism = std::get_if<ExtrusionShape>(&tree.shape); prism && prism->keyword == std::string_view("prism")) {
+                prism->open = true;
+                return;
+            }
         }
-        fail(n, "'open' applies only to a cone or a cylinder");
+        fail(n, "'open' applies only to a cone, a cylinder or a prism");
     case Word::Sturm:
         // The torus' roots are found robustly without it (docs/geometry.md);
         // it is kept for the dump.
@@ -608,7 +615,12 @@ void Interpreter::applyObjectModifier(ObjectTree& tree, const Node& n, bool isSh
                 torus->sturm = true;
                 return;
             }
-        fail(n, "'sturm' applies only to a torus here");
+        if (isShape)
+            if (auto* prism = std::get_if<ExtrusionShape>(&tree.shape); prism && prism->keyword == std::string_view("prism")) {
+                prism->sturm = true;
+                return;
+            }
+        fail(n, "'sturm' applies only to a torus or a prism here");
     case Word::Asos:
         if (isLight) {
             auto light = std::make_shared<Light>(*tree.light);

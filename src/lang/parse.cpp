@@ -612,6 +612,7 @@ template <> struct action<g::plane_block> : CloseBlock<Word::Plane> {};
 template <> struct action<g::quadric_block> : CloseBlock<Word::Quadric> {};
 template <> struct action<g::torus_block> : CloseBlock<Word::Torus> {};
 template <> struct action<g::text_block> : CloseBlock<Word::Text> {};
+template <> struct action<g::prism_block> : CloseBlock<Word::Prism> {};
 template <> struct action<g::triangle_block> : CloseBlock<Word::Triangle> {};
 template <> struct action<g::smooth_triangle_block> : CloseBlock<Word::SmoothTriangle> {};
 template <> struct action<g::mesh_block> : CloseBlock<Word::Mesh> {};
@@ -647,6 +648,20 @@ struct action<g::sequence_start> {
 };
 template <typename Entry>
 struct action<g::directive_body<Entry>> {
+    template <typename Input>
+    static void apply(const Input& in, Builder& b) {
+        b.close(NodeKind::Sequence, Word::None, posOf(in));
+    }
+};
+template <>
+struct action<g::prism_options> {
+    template <typename Input>
+    static void apply(const Input& in, Builder& b) {
+        b.close(NodeKind::Sequence, Word::None, posOf(in));
+    }
+};
+template <>
+struct action<g::prism_points> {
     template <typename Input>
     static void apply(const Input& in, Builder& b) {
         b.close(NodeKind::Sequence, Word::None, posOf(in));
@@ -752,6 +767,12 @@ template <> struct action<g::fade_distance_item> : ItemAction<Word::FadeDistance
 template <> struct action<g::fade_power_item> : ItemAction<Word::FadePower, 1> {};
 template <> struct action<g::shadowless_item> : ItemAction<Word::Shadowless, 0> {};
 template <> struct action<g::spotlight_item> : ItemAction<Word::Spotlight, 0> {};
+template <> struct action<g::prism_linear_sweep> : ItemAction<Word::LinearSweep, 0> {};
+template <> struct action<g::prism_conic_sweep> : ItemAction<Word::ConicSweep, 0> {};
+template <> struct action<g::prism_linear_spline> : ItemAction<Word::LinearSpline, 0> {};
+template <> struct action<g::prism_quadratic_spline> : ItemAction<Word::QuadraticSpline, 0> {};
+template <> struct action<g::prism_cubic_spline> : ItemAction<Word::CubicSpline, 0> {};
+template <> struct action<g::prism_bezier_spline> : ItemAction<Word::BezierSpline, 0> {};
 template <> struct action<g::cylinder_light> : ItemAction<Word::Cylinder, 0> {};
 template <> struct action<g::parallel_item> : ItemAction<Word::Parallel, 0> {};
 template <> struct action<g::point_at_item> : ItemAction<Word::PointAt, 1> {};

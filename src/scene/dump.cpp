@@ -194,6 +194,8 @@ void writeShape(Writer& w, const Shape& shape) {
                     w << '\n';
                 }
             }
+            if (e.open) w << "  open\n";
+            if (e.sturm) w << "  sturm\n";
         }
         // A mesh's face as the triangle it is (a mesh is written face by face).
         void operator()(const TriangleShape& t) const {

@@ -208,6 +208,12 @@ TEST_CASE("Spotlights, cylinder and parallel lights match POV-Ray", "[golden][po
                          povrayReference("spotlight", "spotlight_area", "-A" + povrayDeclares(declares)), false);
 }
 
+// prism (tests/golden/povray/prism.pov): each spline kind, sub-prisms,
+// open, and heights written high first, with one ray per pixel.
+TEST_CASE("Prisms match POV-Ray with one ray per pixel", "[golden][povray][prism]") {
+    compareWithPovray("prism", RenderMethod::Single, "", "-A");
+}
+
 TEST_CASE("Golden ASOS renders of every primitive", "[golden]") {
     for (const char* name : {"sphere", "box", "cone", "cylinder", "disc", "polygon", "plane"}) {
         INFO(name);

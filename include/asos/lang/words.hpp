@@ -20,6 +20,9 @@ namespace asos::lang {
     WORD(Quadric, "quadric")                                                                       \
     WORD(Torus, "torus") WORD(Sturm, "sturm")                                                      \
     WORD(Text, "text") WORD(Ttf, "ttf")                                                            \
+    WORD(Prism, "prism") WORD(LinearSweep, "linear_sweep") WORD(ConicSweep, "conic_sweep")       \
+    WORD(LinearSpline, "linear_spline") WORD(QuadraticSpline, "quadratic_spline")                 \
+    WORD(CubicSpline, "cubic_spline") WORD(BezierSpline, "bezier_spline")                         \
     WORD(Triangle, "triangle") WORD(SmoothTriangle, "smooth_triangle") WORD(Mesh, "mesh") WORD(Mesh2, "mesh2") \
     WORD(VertexVectors, "vertex_vectors") WORD(NormalVectors, "normal_vectors")                   \
     WORD(FaceIndices, "face_indices") WORD(NormalIndices, "normal_indices")                       \

@@ -170,6 +170,8 @@ struct ExtrusionShape {
     std::shared_ptr<const std::vector<OutlineContour>> outline;
     double y0 = 0.0, y1 = 1.0;
     const char* keyword = "prism";
+    bool open = false;   // POV-Ray's open prism: no caps
+    bool sturm = false;  // kept for the dump (the pieces' roots need no Sturm chains)
 };
 
 struct CsgTree;
