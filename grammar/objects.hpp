@@ -91,6 +91,27 @@ struct text_offset : seq<expression> {};
 struct text_block : if_must<kw_text, block_open, kw_ttf, text_font, opt_comma, text_string, opt_comma,
                             text_thickness, opt_comma, text_offset, arguments_end, object_body, object_end> {};
 
+// prism { [linear_sweep | conic_sweep] [linear_spline | quadratic_spline |
+//         cubic_spline | bezier_spline]  height1, height2, N, <p1>, … <pN> }
+// (open and sturm are object modifiers): the sweep and spline words become
+// one Sequence node, the points another.
+struct prism_linear_sweep : kw_linear_sweep {};
+struct prism_conic_sweep : kw_conic_sweep {};
+struct prism_linear_spline : kw_linear_spline {};
+struct prism_quadratic_spline : kw_quadratic_spline {};
+struct prism_cubic_spline : kw_cubic_spline {};
+struct prism_bezier_spline : kw_bezier_spline {};
+struct prism_option : sor<prism_linear_sweep, prism_conic_sweep, prism_linear_spline, prism_quadratic_spline,
+                          prism_cubic_spline, prism_bezier_spline> {};
+struct prism_options : seq<sequence_start, star<prism_option>> {};
+struct prism_height1 : seq<expression> {};
+struct prism_height2 : seq<expression> {};
+struct prism_count : seq<expression> {};
+struct prism_point : seq<expression> {};
+struct prism_points : seq<sequence_start, prism_point, star<opt_comma, expression>> {};
+struct prism_block : if_must<kw_prism, block_open, prism_options, prism_height1, opt_comma, prism_height2, opt_comma,
+                             prism_count, opt_comma, prism_points, arguments_end, object_body, object_end> {};
+
 // triangle { <a>, <b>, <c> }   smooth_triangle { <a>, <na>, <b>, <nb>, <c>, <nc> }
 struct triangle_corner : seq<expression> {};
 struct triangle_block : if_must<kw_triangle, block_open, triangle_corner, opt_comma, triangle_corner, opt_comma,
@@ -152,7 +173,7 @@ struct object_block : if_must<kw_object, block_open, object_base, arguments_end,
 struct object_statement : sor<sphere_block, box_block, cone_block, cylinder_block, disc_block,
                               polygon_block, plane_block, union_block, difference_block,
                               intersection_block, merge_block, object_block, quadric_block, torus_block, poly_block,
-                              quartic_block, cubic_block, text_block,
+                              quartic_block, cubic_block, text_block, prism_block,
                               triangle_block, smooth_triangle_block, mesh_block, mesh2_block> {};
 
 // clipped_by { objects… } | clipped_by { bounded_by }, and bounded_by { objects… } |
@@ -184,11 +205,19 @@ struct shadowless_item : kw_shadowless {};
 struct area_illumination_start : kw_area_illumination {};
 struct area_illumination_value : seq<expression> {};  // optional: no message of its own
 struct area_illumination_item : seq<area_illumination_start, opt<not_at<kw_asos>, area_illumination_value>> {};
-struct cylinder_light : kw_cylinder {};  // POV-Ray's cylindrical light: not ours
+// spotlight | cylinder  parallel  point_at <p>  radius r  falloff f  tightness t
+struct spotlight_item : kw_spotlight {};
+struct cylinder_light : kw_cylinder {};
+struct parallel_item : kw_parallel {};
+struct point_at_item : if_must<kw_point_at, vector_value> {};
+struct light_radius_item : if_must<kw_radius, float_value> {};
+struct light_falloff_item : if_must<kw_falloff, float_value> {};
+struct tightness_item : if_must<kw_tightness, float_value> {};
 struct light_entry
     : sor<area_light_item, adaptive_item, jitter_item, circular_item, orient_item, fade_distance_item,
-          fade_power_item, shadowless_item, area_illumination_item, transform_item, asos_block, cylinder_light,
-          unsupported_item> {};
+          fade_power_item, shadowless_item, area_illumination_item, spotlight_item, cylinder_light,
+          parallel_item, point_at_item, light_radius_item, light_falloff_item, tightness_item, transform_item,
+          asos_block, unsupported_item> {};
 struct light_end : rbrace {};
 struct light_source_block : if_must<kw_light_source, block_open, light_position, light_colour,
                                     arguments_end, entries<light_entry>, light_end> {};

@@ -459,6 +459,9 @@ private:
     // A mesh or mesh2 block (its faces and modifiers) into `t`.
     void evalMesh(const Node& block, ObjectTree& t);
     void evalMesh2(const Node& block, ObjectTree& t);
+    // prism { … }: an ExtrusionShape, its spline's segments as Bezier pieces
+    // (lang/prism.cpp).
+    void evalPrism(const Node& block, ObjectTree& t);
     // text { ttf … }: a union of its glyphs, each an ExtrusionShape (lang/text.cpp).
     void evalText(const Node& block, ObjectTree& t);
     // `at`: the transform item, named when the result would not be finite.

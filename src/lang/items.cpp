@@ -29,7 +29,7 @@ bool isObjectBlock(const Node& n) {
     case Word::Sphere: case Word::Box: case Word::Cone: case Word::Cylinder: case Word::Disc:
     case Word::Polygon: case Word::Plane: case Word::Union: case Word::Object:
     case Word::Difference: case Word::Intersection: case Word::Merge: case Word::LightSource:
-    case Word::Quadric: case Word::Torus: case Word::Poly: case Word::Quartic: case Word::Cubic: case Word::Text: case Word::Triangle: case Word::SmoothTriangle: case Word::Mesh:
+    case Word::Quadric: case Word::Torus: case Word::Poly: case Word::Quartic: case Word::Cubic: case Word::Text: case Word::Prism: case Word::Triangle: case Word::SmoothTriangle: case Word::Mesh:
     case Word::Mesh2:
         return true;
     default:
@@ -491,6 +491,9 @@ ObjectTree Interpreter::evalObject(const Node& block) {
     case Word::Text:
         evalText(block, t);
         break;
+    case Word::Prism:
+        evalPrism(block, t);
+        break;
     case Word::Triangle: case Word::SmoothTriangle: {
         auto mesh = std::make_shared<TriangleMesh>();
         addTriangle(*mesh, block);
@@ -576,6 +579,7 @@ void Interpreter::applyTransform(ObjectTree& tree, const Transform& m, const Nod
     case ObjectTree::Kind::Light: {
         auto light = std::make_shared<Light>(*tree.light);
         light->position = m.point(light->position);
+        light->pointAt = m.point(light->pointAt);
         if (light->area) {
             light->area->axis1 = m.vector(light->area->axis1);
             light->area->axis2 = m.vector(light->area->axis2);
@@ -706,8 +710,12 @@ void Interpreter::applyObjectModifier(ObjectTree& tree, const Node& n, bool isSh
                 cylinder->open = true;
                 return;
             }
+            if (auto* prism = std::get_if<ExtrusionShape>(&tree.shape); prism && prism->keyword == std::string_view("prism")) {
+                prism->open = true;
+                return;
+            }
         }
-        fail(n, "'open' applies only to a cone or a cylinder");
+        fail(n, "'open' applies only to a cone, a cylinder or a prism");
     case Word::Sturm:
         // The torus' roots are found robustly without it (docs/geometry.md);
         // it is kept for the dump.
@@ -720,8 +728,12 @@ void Interpreter::applyObjectModifier(ObjectTree& tree, const Node& n, bool isSh
                 poly->sturm = true;
                 return;
             }
+            if (auto* prism = std::get_if<ExtrusionShape>(&tree.shape); prism && prism->keyword == std::string_view("prism")) {
+                prism->sturm = true;
+                return;
+            }
         }
-        fail(n, "'sturm' applies only to a torus, a poly, a quartic or a cubic here");
+        fail(n, "'sturm' applies only to a torus, a poly, a quartic, a cubic or a prism here");
     case Word::Asos:
         if (isLight) {
             auto light = std::make_shared<Light>(*tree.light);
@@ -1418,6 +1430,7 @@ Light Interpreter::evalLight(const Node& block) {
         if (isTransform(n)) {
             const Transform m = evalTransformItem(n);
             l.position = m.point(l.position);
+            l.pointAt = m.point(l.pointAt);
             if (l.area) {
                 l.area->axis1 = m.vector(l.area->axis1);
                 l.area->axis2 = m.vector(l.area->axis2);
@@ -1453,6 +1466,36 @@ Light Interpreter::evalLight(const Node& block) {
             break;
         }
         case Word::Shadowless: l.shadowless = true; break;
+        // POV-Ray sets a type's defaults at its keyword, and takes point_at,
+        // radius, falloff and tightness only after it (point_at after
+        // parallel too).
+        case Word::Spotlight:
+            l.type = LightType::Spot;
+            l.radius = 30.0;
+            l.falloff = 45.0;
+            l.tightness = 0.0;
+            break;
+        case Word::Cylinder:
+            l.type = LightType::Cylinder;
+            l.radius = 0.75;
+            l.falloff = 1.0;
+            l.tightness = 0.0;
+            l.parallel = true;
+            break;
+        case Word::Parallel: l.parallel = true; break;
+        case Word::PointAt:
+            if (l.type == LightType::Point && !l.parallel)
+                fail(n, "point_at needs spotlight, cylinder or parallel before it in the light_source (as in POV-Ray)");
+            l.pointAt = evalVector(n[0]);
+            break;
+        case Word::Radius: case Word::Falloff: case Word::Tightness: {
+            const std::string name(wordText(n.word));
+            if (l.type == LightType::Point)
+                fail(n, name + " needs spotlight or cylinder before it in the light_source (as in POV-Ray)");
+            const double v = evalFloat(n[0]);
+            (n.word == Word::Radius ? l.radius : n.word == Word::Falloff ? l.falloff : l.tightness) = v;
+            break;
+        }
         case Word::AreaIllumination: l.areaIllumination = n.count == 0 || evalBool(n[0]); break;
         case Word::Asos: l.asos = evalAsos(n, l.asos, true); break;
         default: fail(n, "this is not a light_source item");

@@ -284,7 +284,6 @@ struct RejectDirective {
 };
 template <> struct action<g::unsupported_item> : Reject<g::unsupported_item> {};
 template <> struct action<g::unsupported_in_expression> : Reject<g::unsupported_in_expression> {};
-template <> struct action<g::cylinder_light> : Reject<g::cylinder_light> {};
 template <> struct action<g::cylinder_camera> : Reject<g::cylinder_camera> {};
 template <> struct action<g::camera_normal> : Reject<g::camera_normal> {};
 template <> struct action<g::texture_pattern> : Reject<g::texture_pattern> {};
@@ -598,6 +597,7 @@ template <> struct action<g::poly_block> : CloseBlock<Word::Poly> {};
 template <> struct action<g::quartic_block> : CloseBlock<Word::Quartic> {};
 template <> struct action<g::cubic_block> : CloseBlock<Word::Cubic> {};
 template <> struct action<g::text_block> : CloseBlock<Word::Text> {};
+template <> struct action<g::prism_block> : CloseBlock<Word::Prism> {};
 template <> struct action<g::triangle_block> : CloseBlock<Word::Triangle> {};
 template <> struct action<g::smooth_triangle_block> : CloseBlock<Word::SmoothTriangle> {};
 template <> struct action<g::mesh_block> : CloseBlock<Word::Mesh> {};
@@ -650,6 +650,20 @@ struct action<g::sequence_start> {
 };
 template <typename Entry>
 struct action<g::directive_body<Entry>> {
+    template <typename Input>
+    static void apply(const Input& in, Builder& b) {
+        b.close(NodeKind::Sequence, Word::None, posOf(in));
+    }
+};
+template <>
+struct action<g::prism_options> {
+    template <typename Input>
+    static void apply(const Input& in, Builder& b) {
+        b.close(NodeKind::Sequence, Word::None, posOf(in));
+    }
+};
+template <>
+struct action<g::prism_points> {
     template <typename Input>
     static void apply(const Input& in, Builder& b) {
         b.close(NodeKind::Sequence, Word::None, posOf(in));
@@ -765,6 +779,19 @@ template <> struct action<g::orient_item> : ItemAction<Word::Orient, 0> {};
 template <> struct action<g::fade_distance_item> : ItemAction<Word::FadeDistance, 1> {};
 template <> struct action<g::fade_power_item> : ItemAction<Word::FadePower, 1> {};
 template <> struct action<g::shadowless_item> : ItemAction<Word::Shadowless, 0> {};
+template <> struct action<g::spotlight_item> : ItemAction<Word::Spotlight, 0> {};
+template <> struct action<g::prism_linear_sweep> : ItemAction<Word::LinearSweep, 0> {};
+template <> struct action<g::prism_conic_sweep> : ItemAction<Word::ConicSweep, 0> {};
+template <> struct action<g::prism_linear_spline> : ItemAction<Word::LinearSpline, 0> {};
+template <> struct action<g::prism_quadratic_spline> : ItemAction<Word::QuadraticSpline, 0> {};
+template <> struct action<g::prism_cubic_spline> : ItemAction<Word::CubicSpline, 0> {};
+template <> struct action<g::prism_bezier_spline> : ItemAction<Word::BezierSpline, 0> {};
+template <> struct action<g::cylinder_light> : ItemAction<Word::Cylinder, 0> {};
+template <> struct action<g::parallel_item> : ItemAction<Word::Parallel, 0> {};
+template <> struct action<g::point_at_item> : ItemAction<Word::PointAt, 1> {};
+template <> struct action<g::light_radius_item> : ItemAction<Word::Radius, 1> {};
+template <> struct action<g::light_falloff_item> : ItemAction<Word::Falloff, 1> {};
+template <> struct action<g::tightness_item> : ItemAction<Word::Tightness, 1> {};
 // area_illumination with or without its value.
 template <>
 struct action<g::area_illumination_start> {

@@ -28,6 +28,7 @@ LightModel makeLightModel(const Light& light, const AsosSettings& sceneSettings,
     m.areaIllumination = light.areaIllumination;
     m.fadeDistance = light.fadeDistance;
     m.fadePower = light.fadePower;
+    if (light.type != LightType::Point) m.beam = LightBeam::of(light);
     m.asos = sceneSettings.refinedBy(light.asos);
     if (!light.area) return m;
     const AreaLight& a = *light.area;
@@ -67,6 +68,14 @@ LightModel makeLightModel(const Light& light, const AsosSettings& sceneSettings,
 
 bool checkLight(const Light& light, Diagnostics& diagnostics) {
     if (!light.area) return true;
+    if (light.parallel || light.type == LightType::Cylinder) {
+        // POV-Ray turns each point of a parallel area light's array toward
+        // point_at on its own: a fan of parallel beams asos does not render.
+        diagnostics.error(light.loc, std::string(light.type == LightType::Cylinder ? "cylinder" : "parallel") +
+                                         " area lights are not rendered by asos: drop area_light, or " +
+                                         (light.type == LightType::Cylinder ? "use a spotlight" : "drop parallel"));
+        return false;
+    }
     const AreaLight& a = *light.area;
     bool ok = true;
     auto error = [&](const std::string& message) {

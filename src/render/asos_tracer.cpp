@@ -612,12 +612,15 @@ Vec3 AsosTracer::PixelTrace::shadeLeaf(const ImageSquare& square, int level, std
             context.footprint = footprint ? &*footprint : nullptr;
             return tracer_.areaLightSamples(p, context, c_);
         }
-        if (!facesLight(p.position, p.normal, light.position)) return {};
+        // A parallel light stands where its beam enters for this point.
+        const std::optional<LightBeam::Source> source = lightSourceFor(light, p.position);
+        if (!source || !facesLight(p.position, p.normal, source->position)) return {};
+        const bool shadowless = light.shadowless || source->unshadowed;
         double lit = 1.0;
-        if (!light.shadowless) {
+        if (!shadowless) {
             if (!footprint) footprint.emplace(camera_, square, hit->position, hit->normal, hit->t);
             PointShadowQuery query;
-            query.lightPosition = light.position;
+            query.lightPosition = source->position;
             query.lightIndex = static_cast<std::size_t>(p.lightIndex);
             query.settings = asos_.lightSettings_[static_cast<std::size_t>(p.lightIndex)];
             query.shadedObject = static_cast<std::uint32_t>(hit->objectIndex);
@@ -639,9 +642,9 @@ Vec3 AsosTracer::PixelTrace::shadeLeaf(const ImageSquare& square, int level, std
         // Transparent objects are not among the shadow pyrays' occluders:
         // they filter the light along the central shadow ray.
         const Vec3 filter =
-            light.shadowless ? Vec3(1.0) : transparentShadowFilter(scene_, p.position, light.position, c_);
+            shadowless ? Vec3(1.0) : transparentShadowFilter(scene_, p.position, source->position, c_);
         if (filter == Vec3(0.0)) return {};
-        storage = pointLightSample(light.position, light.color * filter, p.position, lit);
+        storage = pointLightSample(source->position, light.color * filter, p.position, lit);
         return {&storage, 1};
     };
     const Vec3 shaded = tracer_.shadeWith(*hit, ray, 1, 1.0, lightArriving, c_, context, leafPigment(square, *hit));

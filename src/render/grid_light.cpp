@@ -59,9 +59,15 @@ double visibleFraction(const Form& form, const Scene& scene, const LightModel& m
         return state == 1;
     };
     // POV-Ray compares the corners' colours: the light's (faded at its
-    // centre's distance, unfaded with area_illumination) or black, more than
+    // centre's distance and narrowed by a spotlight's cone, neither with
+    // area_illumination) or black, more than
     // 0.1 apart in the sum of channels.
-    const double fade = model.areaIllumination ? 1.0 : model.fade(glm::length(model.position - q.point));
+    // A spotlight's cone scales that colour too (along the centre's direction).
+    const Vec3 toCentre = model.position - q.point;
+    const double distance = glm::length(toCentre);
+    const double fade = model.areaIllumination ? 1.0
+                        : model.fade(distance) *
+                              (model.beam && distance > 0.0 ? model.beam->factor(q.point, toCentre / distance) : 1.0);
     const bool compare = (std::abs(model.color.x) + std::abs(model.color.y) + std::abs(model.color.z)) * fade > 0.1;
     const int minLevel = model.adaptive.value_or(kPovrayAdaptiveLevel);
     const auto mean = [&](auto& self, int u1, int v1, int u2, int v2, int level) -> double {

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <utility>
 
 #include "asos/lights/light_model.hpp"
 #include "asos/render/map_pattern.hpp"
@@ -85,12 +86,41 @@ struct LightView {
     double fadeLo = 0.0, fadeHi = 0.0;
     bool mayBeCut = true;    // N.L may fall below kPovEpsilon somewhere
     bool dark = false;       // N.L below kPovEpsilon everywhere
+    bool beamVaries = false; // a spotlight's or cylinder's factor changes over the footprint
     Vec3 direction{0.0};     // unit, at the centre
 };
 
+// The range of a spotlight's or cylinder light's factor over the
+// footprint: the direction from the light turns by at most `beta` (a
+// spotlight's factor falls with the angle from its axis, a cylinder's with
+// the distance from it, when tightness is not negative).
+std::pair<double, double> beamRange(const Light& light, const SurfaceSpread& s, double beta) {
+    if (light.type == LightType::Point) return {1.0, 1.0};
+    const LightBeam beam = LightBeam::of(light);
+    if (light.tightness < 0.0) return {0.0, 1e300};
+    if (light.type == LightType::Spot) {
+        if (beam.parallel) return {0.0, 1.0};
+        const Vec3 fromLight = s.position - light.position;
+        const double length = glm::length(fromLight);
+        if (!(length > 0.0) || !(glm::length(beam.axis) > 0.0)) return {0.0, 1.0};
+        const double theta = unitAngle(glm::normalize(beam.axis), fromLight / length);
+        const auto at = [&](double angle) {
+            return spotlightFactor(std::cos(std::clamp(angle, 0.0, kPi)), beam.radius, beam.falloff, beam.tightness);
+        };
+        return {at(theta + beta), at(theta - beta)};
+    }
+    const Vec3 v = s.position - light.position;
+    const double k = glm::dot(v, beam.axis);
+    const double d = glm::length(v - k * beam.axis);
+    const double lo = k - s.radius > 0.0 ? cylinderFactor(d + s.radius, beam.radius, beam.falloff, beam.tightness) : 0.0;
+    return {lo, cylinderFactor(std::max(0.0, d - s.radius), beam.radius, beam.falloff, beam.tightness)};
+}
+
 LightView viewOf(const Light& light, const SurfaceSpread& s) {
     LightView v;
-    const Vec3 toLight = light.position - s.position;
+    // A parallel light stands where its beam enters for the centre.
+    const std::optional<LightBeam::Source> source = lightSourceFor(light, s.position);
+    const Vec3 toLight = (source ? source->position : s.position + s.normal) - s.position;
     const double distance = glm::length(toLight);
     const double extent =
         light.area ? 0.5 * (glm::length(light.area->axis1) + glm::length(light.area->axis2)) : 0.0;
@@ -101,6 +131,12 @@ LightView viewOf(const Light& light, const SurfaceSpread& s) {
     // Light fade falls with distance.
     v.fadeHi = lightFade(light.fadeDistance, light.fadePower, std::max(distance - reach, 1e-6 * distance + kPovEpsilon));
     v.fadeLo = engulfed ? 0.0 : lightFade(light.fadeDistance, light.fadePower, distance + reach);
+    // A spotlight's cone or a cylinder's beam narrows it.
+    const auto [beamLo, beamHi] = beamRange(light, s, v.beta);
+    v.fadeLo *= beamLo;
+    v.fadeHi *= beamHi;
+    v.beamVaries = beamLo != beamHi;
+    if (!source || source->unshadowed) v.fadeLo = 0.0;
     // directLight gives nothing where N.L < kPovEpsilon.
     const double incidence = unitAngle(s.normal, v.direction);
     const double gate = std::acos(kPovEpsilon);
@@ -160,7 +196,7 @@ double highlightError(const Finish& finish, const Light& light, const SurfaceSpr
     if (v.dark) return 0.0;
     const ValueRange range = highlightRange(finish, light, s);
     // Where N.L may be cut, the highlight may end abruptly: the whole range.
-    if (v.mayBeCut) return range.width();
+    if (v.mayBeCut || v.beamVaries) return range.width();
     double stray = 0.0;
     for (const HighlightTerm& t : termsOf(finish, s, v)) stray += t.curvature();
     // The fade changes slowly, as the diffuse term does: it scales.

@@ -109,7 +109,9 @@ std::span<const LightSample> RayTracer::areaLightSamples(const ShadingPoint& poi
     auto diffuseOnly = [](const Finish& f) {
         return f.brilliance == 1.0 && !(f.phong > 0.0) && !(f.specular > 0.0);
     };
-    q.diffuseOnly = diffuseOnly(texture.finish) && !(point.light->fadePower > 0.0);
+    // A spotlight's samples are each narrowed by their own direction: not merged.
+    q.diffuseOnly = diffuseOnly(texture.finish) && !(point.light->fadePower > 0.0) &&
+                    point.light->type == LightType::Point;
     for (const TextureLayer& layer : texture.above) q.diffuseOnly = q.diffuseOnly && diffuseOnly(layer.finish);
     return asos::areaLightSamples(scene_, lights_, q, *context.scratch, counters);
 }
@@ -135,11 +137,14 @@ std::span<const LightSample> RayTracer::plainLightSample(const ShadingPoint& poi
                                                          RenderCounters& counters,
                                                          const InteriorList& inside) const {
     const Light& light = *point.light;
-    if (!facesLight(point.position, point.normal, light.position)) return {};
-    const Vec3 through =
-        light.shadowless ? Vec3(1.0) : shadowRayFilter(point.position, light.position, counters, inside);
+    // A parallel light stands where its beam enters for this point.
+    const std::optional<LightBeam::Source> source = lightSourceFor(light, point.position);
+    if (!source || !facesLight(point.position, point.normal, source->position)) return {};
+    const Vec3 through = light.shadowless || source->unshadowed
+                             ? Vec3(1.0)
+                             : shadowRayFilter(point.position, source->position, counters, inside);
     if (through == Vec3(0.0)) return {};
-    storage = pointLightSample(light.position, light.color * through, point.position);
+    storage = pointLightSample(source->position, light.color * through, point.position);
     return {&storage, 1};
 }
 

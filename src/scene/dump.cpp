@@ -208,6 +208,8 @@ void writeShape(Writer& w, const Shape& shape) {
                     w << '\n';
                 }
             }
+            if (e.open) w << "  open\n";
+            if (e.sturm) w << "  sturm\n";
         }
         // A mesh's face as the triangle it is (a mesh is written face by face).
         void operator()(const TriangleShape& t) const {
@@ -592,6 +594,17 @@ void writeDump(std::ostream& out, const SceneDescription& scene, const DumpOptio
             if (a.jitter) w << "  jitter\n";
             if (a.circular) w << "  circular\n";
             if (a.orient) w << "  orient\n";
+        }
+        if (l.type != LightType::Point) {
+            w << (l.type == LightType::Spot ? "  spotlight\n" : "  cylinder\n");
+            (w << "  radius ").num(l.radius) << '\n';
+            (w << "  falloff ").num(l.falloff) << '\n';
+            (w << "  tightness ").num(l.tightness) << '\n';
+        }
+        if (l.parallel && l.type != LightType::Cylinder) w << "  parallel\n";
+        if (l.type != LightType::Point || l.parallel) {
+            w << "  point_at ";
+            w.vec(l.pointAt) << '\n';
         }
         if (l.fadeDistance > 0) {
             w << "  fade_distance ";

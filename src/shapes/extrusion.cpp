@@ -113,7 +113,8 @@ int crossingsRight(const std::vector<Extrusion::Piece>& pieces, std::size_t from
 
 }  // namespace
 
-Extrusion::Extrusion(const std::vector<OutlineContour>& contours, double y0, double y1) : y0_(y0), y1_(y1) {
+Extrusion::Extrusion(const std::vector<OutlineContour>& contours, double y0, double y1, bool open)
+    : y0_(y0), y1_(y1), open_(open) {
     std::vector<std::size_t> starts;
     std::vector<double> areas;
     double lx = kInfinity, lz = kInfinity, hx = -kInfinity, hz = -kInfinity;
@@ -194,7 +195,7 @@ std::optional<LocalHit> Extrusion::intersect(const Ray& ray, double tMin, double
     }
     std::optional<LocalHit> best;
     double tBest = tMax;
-    if (d.y != 0.0) {
+    if (d.y != 0.0 && !open_) {
         for (int cap = 0; cap < 2; ++cap) {
             const double y = cap == 0 ? y0_ : y1_;
             const double t = (y - o.y) / d.y;
@@ -294,7 +295,7 @@ std::vector<ShapeIssue> validate(const ExtrusionShape& record) {
 }
 
 Placed<Extrusion> place(const ExtrusionShape& record, const Transform& worldFromObject) {
-    return {Extrusion(*record.outline, record.y0, record.y1),
+    return {Extrusion(*record.outline, record.y0, record.y1, record.open),
             LocalFrame::make(worldFromObject, Mat3(1.0), Vec3(0.0)), record.keyword};
 }
 

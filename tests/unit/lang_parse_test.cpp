@@ -143,7 +143,8 @@ TEST_CASE("unsupported POV-Ray constructs are named at their keyword", "[lang][p
     CHECK(errorOf("#statistics \"x\"") == "1:1: '#statistics' is not supported by asos");
     CHECK(errorOf("#declare V = vturbulence(2, 0.5, 6, x);") == "1:14: 'vturbulence' is not supported by asos");
     CHECK(errorOf("sphere { 0, 1 pigment { quilted } }") == "1:25: 'quilted' is not supported by asos");
-    CHECK(errorOf("light_source { 0, 1 cylinder }") == "1:21: 'cylinder' lights are not supported by asos");
+    CHECK(errorOf("light_source { 0, 1 projected_through { sphere { 0, 1 } } }") ==
+          "1:21: 'projected_through' is not supported by asos");
     CHECK(errorOf("camera { normal { bumps 0.1 } }") == "1:10: 'normal' in a camera is not supported by asos");
     CHECK(errorOf("sphere { 0, 1 normal { checker } }") ==
           "1:24: 'checker' in a normal (a pattern of normals) is not supported by asos");

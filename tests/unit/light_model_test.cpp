@@ -176,3 +176,31 @@ TEST_CASE("Light method, shadow apex and light form names", "[lights]") {
     CHECK(std::string(lightFormName(LightForm(OrientedDiscLight{}))) == "oriented disc");
     CHECK(std::string(lightFormName(LightForm{})) == "point");
 }
+
+TEST_CASE("parallel and cylinder area lights are refused; area spotlights are not", "[lights][spotlight]") {
+    Light l = withArea({1, 0, 0}, {0, 0, 1}, 3, 3);
+    l.type = LightType::Spot;
+    l.radius = 20;
+    l.falloff = 30;
+    {
+        Diagnostics d;
+        CHECK(checkLight(l, d));
+        CHECK_FALSE(d.hasErrors());
+        const LightModel m = makeLightModel(l, AsosSettings{});
+        REQUIRE(m.beam);
+        CHECK(m.beam->type == LightType::Spot);
+    }
+    l.type = LightType::Cylinder;
+    {
+        Diagnostics d;
+        CHECK_FALSE(checkLight(l, d));
+        CHECK(d.hasErrors());
+    }
+    l.type = LightType::Point;
+    l.parallel = true;
+    {
+        Diagnostics d;
+        CHECK_FALSE(checkLight(l, d));
+        CHECK(d.hasErrors());
+    }
+}

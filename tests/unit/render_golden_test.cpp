@@ -198,6 +198,25 @@ TEST_CASE("Area lights by ASOS beams match POV-Ray's converged render", "[golden
     }
 }
 
+// Spotlights, a cylinder light and a parallel light
+// (tests/golden/povray/spotlight.pov) with one ray per pixel; and with the
+// spotlight an area light (Area=1) on POV-Ray's lattice, as its
+// lights/arealit*.pov use one.
+TEST_CASE("Spotlights, cylinder and parallel lights match POV-Ray", "[golden][povray][lights][spotlight]") {
+    compareWithPovray("spotlight", RenderMethod::Single, "", "-A");
+    RenderSettings s = settingsFor(RenderMethod::Single, 160, 90);
+    s.lightMethod = LightMethod::Grid;
+    const std::vector<std::pair<std::string, std::string>> declares = {{"Area", "1"}};
+    compareWithReference(renderSceneFile(sourceDir("povray") / "spotlight.pov", s, declares),
+                         povrayReference("spotlight", "spotlight_area", "-A" + povrayDeclares(declares)), false);
+}
+
+// prism (tests/golden/povray/prism.pov): each spline kind, sub-prisms,
+// open, and heights written high first, with one ray per pixel.
+TEST_CASE("Prisms match POV-Ray with one ray per pixel", "[golden][povray][prism]") {
+    compareWithPovray("prism", RenderMethod::Single, "", "-A");
+}
+
 TEST_CASE("Golden ASOS renders of every primitive", "[golden]") {
     for (const char* name : {"sphere", "box", "cone", "cylinder", "disc", "polygon", "plane"}) {
         INFO(name);

@@ -52,6 +52,24 @@ TEST_CASE("Extrusion: a ray down the middle of a square prism", "[shapes][extrus
     CHECK_FALSE(p.intersect(Ray{{3, 5, 0}, {0, -1, 0}}, 0.0, kInfinity));
 }
 
+TEST_CASE("Extrusion: an open prism has no caps", "[shapes][extrusion][prism]") {
+    ExtrusionShape record{std::make_shared<const std::vector<OutlineContour>>(std::vector<OutlineContour>{square(1.0)}),
+                          0.0, 2.0, "prism"};
+    record.open = true;
+    const Primitive p = Primitive::make(record, Transform{});
+    // Down the middle: no cap to meet, and the sides run along the ray.
+    CHECK_FALSE(p.intersect(Ray{{0, 5, 0}, {0, -1, 0}}, 0.0, kInfinity));
+    // Slanted: through the open top onto the inner side.
+    auto hit = p.intersect(Ray{{0, 2.5, 0}, glm::normalize(Vec3(1, -1, 0))}, 0.0, kInfinity);
+    REQUIRE(hit);
+    CHECK(near(hit->position, {1, 1.5, 0}));
+    // From the side: the outer side, as when closed; the inside is the closed prism's.
+    hit = p.intersect(Ray{{-5, 1, 0.25}, {1, 0, 0}}, 0.0, kInfinity);
+    REQUIRE(hit);
+    CHECK(hit->t == Approx(4.0));
+    CHECK(p.inside({0.5, 1.0, -0.5}));
+}
+
 TEST_CASE("Extrusion: the even-odd rule makes a hole", "[shapes][extrusion]") {
     const Primitive p = extrusion({square(2.0), square(1.0)}, 0.0, 1.0);
     CHECK_FALSE(p.intersect(Ray{{0, 5, 0}, {0, -1, 0}}, 0.0, kInfinity));

@@ -150,5 +150,5 @@ TEST_CASE("mesh and mesh2 misuse", "[lang][mesh]") {
           "1:12: the triangle's corners lie on one line (a degenerate triangle)\n");
     CHECK(run("torus { 1, 2 }").errors() ==
           "1:12: a torus whose minor radius 2 exceeds its major radius 1 (POV-Ray's spindle torus) is not supported\n");
-    CHECK(run("sphere { 0, 1 sturm }").errors() == "1:15: 'sturm' applies only to a torus, a poly, a quartic or a cubic here\n");
+    CHECK(run("sphere { 0, 1 sturm }").errors() == "1:15: 'sturm' applies only to a torus, a poly, a quartic, a cubic or a prism here\n");
 }

@@ -21,6 +21,9 @@ namespace asos::lang {
     WORD(Torus, "torus") WORD(Sturm, "sturm")                                                      \
     WORD(Poly, "poly") WORD(Quartic, "quartic") WORD(Cubic, "cubic")                               \
     WORD(Text, "text") WORD(Ttf, "ttf")                                                            \
+    WORD(Prism, "prism") WORD(LinearSweep, "linear_sweep") WORD(ConicSweep, "conic_sweep")       \
+    WORD(LinearSpline, "linear_spline") WORD(QuadraticSpline, "quadratic_spline")                 \
+    WORD(CubicSpline, "cubic_spline") WORD(BezierSpline, "bezier_spline")                         \
     WORD(Triangle, "triangle") WORD(SmoothTriangle, "smooth_triangle") WORD(Mesh, "mesh") WORD(Mesh2, "mesh2") \
     WORD(VertexVectors, "vertex_vectors") WORD(NormalVectors, "normal_vectors")                   \
     WORD(FaceIndices, "face_indices") WORD(NormalIndices, "normal_indices")                       \
@@ -32,7 +35,8 @@ namespace asos::lang {
     WORD(AreaLight, "area_light") WORD(Adaptive, "adaptive") WORD(Jitter, "jitter")                      \
     WORD(Circular, "circular") WORD(Orient, "orient") WORD(FadeDistance, "fade_distance")                \
     WORD(FadePower, "fade_power") WORD(Shadowless, "shadowless")                                      \
-    WORD(AreaIllumination, "area_illumination")                                                    \
+    WORD(AreaIllumination, "area_illumination") WORD(Spotlight, "spotlight") WORD(Parallel, "parallel")  \
+    WORD(PointAt, "point_at") WORD(Radius, "radius") WORD(Tightness, "tightness")                     \
     /* object modifiers, pigments, finishes */                                                  \
     WORD(Open, "open") WORD(Pigment, "pigment") WORD(Finish, "finish") WORD(Texture, "texture")             \
     WORD(Translate, "translate") WORD(Rotate, "rotate") WORD(Scale, "scale") WORD(Matrix, "matrix")         \

@@ -30,6 +30,7 @@
 #include <string>
 
 #include "asos/diag/diagnostics.hpp"
+#include "asos/lights/light_beam.hpp"
 #include "asos/lights/light_form.hpp"
 #include "asos/scene/asos_settings.hpp"
 #include "asos/scene/description.hpp"
@@ -70,6 +71,7 @@ struct LightModel {
     bool shadowless = false;
     bool areaIllumination = false;  // POV-Ray's emitter: each point shaded on its own
     double fadeDistance = 0.0, fadePower = 0.0;
+    std::optional<LightBeam> beam;  // a spotlight's cone (lights/light_beam.hpp); none for a point light
     AsosSettings asos;  // the light's eps, max and jitter for ASOS shadow beams
 
     bool isArea() const { return !std::holds_alternative<PointLight>(form); }
@@ -95,7 +97,8 @@ LightModel makeLightModel(const Light& light, const AsosSettings& sceneSettings,
 // Reports what the renderer cannot do with a light, or does differently
 // from what is written, to `diagnostics` at the light's location: errors for
 // circular without orient (a flat disc light, which asos does not render),
-// circular orient with a count of 1 along one axis only (POV-Ray drops
+// parallel area lights (cylinder area lights among them), circular orient
+// with a count of 1 along one axis only (POV-Ray drops
 // circular and turns a line toward each point), parallel axes, counts
 // outside 1..kMaxLightSamplesPerSide and a negative adaptive level; warnings
 // where POV-Ray warns and goes on (orient without circular, orient with axes

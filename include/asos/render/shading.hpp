@@ -27,6 +27,7 @@
 #include "asos/render/normal_pattern.hpp"
 #include "asos/render/sampling.hpp"
 #include "asos/scene/description.hpp"
+#include "asos/lights/light_beam.hpp"
 #include "asos/scene/pov_tolerances.hpp"
 
 namespace asos {
@@ -381,14 +382,21 @@ Vec3 shadeSurface(const ShadeRequest& req, std::span<const Light> lights,
             const ShadingPoint point{i, &lights[i], &req.hit, req.hit.position, normal, &req.ray,
                                      req.depth};
             const std::span<const LightSample> samples = lightArriving(point);
-            for (std::size_t k = 0; k < samples.size(); ++k)
+            // A spotlight or cylinder light scales each sample by its
+            // direction from the light (lights/light_beam.hpp).
+            const std::optional<LightBeam> beam =
+                lights[i].type == LightType::Point ? std::nullopt : std::optional(LightBeam::of(lights[i]));
+            for (std::size_t k = 0; k < samples.size(); ++k) {
+                LightSample sample = samples[k];
+                if (beam) sample.color *= beam->factor(req.hit.position, sample.direction);
                 for (std::size_t j = 0; j < layers.size(); ++j) {
                     const ShadedLayer& l = layers[j];
                     if (!usesLights(*l.finish)) continue;
                     const double grain = l.finish->crand > 0.0 ? l.finish->crand * req.grain.draw(i, k, j) : 0.0;
-                    color += l.through * directLight(*l.finish, l.pigment, l.normal, rayDir, lights[i], samples[k],
+                    color += l.through * directLight(*l.finish, l.pigment, l.normal, rayDir, lights[i], sample,
                                                      grain, &l.colour);
                 }
+            }
         }
     }
     // Transmission (POV-Ray's ComputeLightedTexture after its layer loop):

@@ -71,10 +71,27 @@ struct AreaLight {
     bool orient = false;
 };
 
+// POV-Ray's light types: a point light, a spotlight (a cone of light toward
+// point_at) and a cylinder light (a parallel beam around the axis from the
+// position toward point_at).
+enum class LightType { Point, Spot, Cylinder };
+
 struct Light {
     Vec3 position{0.0};
     Vec3 color{1.0};  // total power, as in POV-Ray
     std::optional<AreaLight> area;
+    LightType type = LightType::Point;
+    // spotlight / cylinder, as written: radius and falloff are the cone's
+    // half-angles in degrees for a spotlight (POV-Ray's defaults 30 and 45),
+    // distances from the axis for a cylinder (0.75 and 1); tightness is the
+    // power of the cosine (spotlight) or of 1 - distance / falloff
+    // (cylinder), 0 by default. lights/light_beam.hpp has the factor.
+    Vec3 pointAt{0.0, 0.0, 1.0};
+    double radius = 0.0, falloff = 0.0, tightness = 0.0;
+    // POV-Ray's `parallel` (a cylinder light is parallel): light arrives
+    // along pointAt - position everywhere, from the plane through the
+    // position square to it.
+    bool parallel = false;
     double fadeDistance = 0.0;  // 0: no fade
     double fadePower = 0.0;
     bool shadowless = false;
@@ -168,6 +185,8 @@ struct ExtrusionShape {
     std::shared_ptr<const std::vector<OutlineContour>> outline;
     double y0 = 0.0, y1 = 1.0;
     const char* keyword = "prism";
+    bool open = false;   // POV-Ray's open prism: no caps
+    bool sturm = false;  // kept for the dump (the pieces' roots need no Sturm chains)
 };
 
 struct CsgTree;

@@ -39,7 +39,9 @@ public:
     };
 
     // Contours as ExtrusionShape's (closed, not crossing each other), y0 < y1.
-    Extrusion(const std::vector<OutlineContour>& contours, double y0, double y1);
+    // `open`: without its caps (POV-Ray's open prism); its inside is the
+    // closed one's.
+    Extrusion(const std::vector<OutlineContour>& contours, double y0, double y1, bool open = false);
 
     BoundingSphere boundingSphere() const { return {center_, radius_}; }
     Bounds3 worldBounds(const Mat3& worldFromLocal, const Vec3& offset) const;
@@ -75,6 +77,7 @@ public:
 private:
     std::vector<Piece> pieces_;
     double y0_, y1_;
+    bool open_ = false;
     Vec3 lo_{0.0}, hi_{0.0}, center_{0.0};
     double radius_ = 0.0;
 };
