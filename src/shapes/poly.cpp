@@ -47,8 +47,8 @@ double horner(const double* c, int n, double x) {
 // value and slope; negativeAtLo the sign at lo): Newton's steps, bisection
 // where a step leaves the bracket, to the tolerance.
 template <class ValueAndSlope>
-double refineRoot(const ValueAndSlope& vd, double lo, double hi, bool negativeAtLo, double tol) {
-    double x = 0.5 * (lo + hi);
+double refineRoot(const ValueAndSlope& vd, double lo, double hi, bool negativeAtLo, double tol, double start) {
+    double x = start > lo && start < hi ? start : 0.5 * (lo + hi);
     for (int i = 0; i < 300; ++i) {
         const auto [v, d] = vd(x);
         if (v == 0.0) return x;
@@ -64,21 +64,23 @@ double refineRoot(const ValueAndSlope& vd, double lo, double hi, bool negativeAt
 
 // The roots of a function in [lo, hi] given the points that split it where it
 // is monotone (ascending): one per stretch whose ends differ in sign, and every
-// end where it is exactly zero (a tangency found exactly).
-template <class ValueAndSlope>
-int rootsOnStretches(const ValueAndSlope& vd, const double* splits, int splitCount, double lo, double hi, double tol,
-                     double* out) {
+// end where it is exactly zero (a tangency found exactly). `value` is the
+// function alone (for the stretches' ends); `guess(a, b, negativeAtA)` a
+// first estimate of a stretch's root for Newton's steps to start from.
+template <class Value, class ValueAndSlope, class Guess>
+int rootsOnStretches(const Value& value, const ValueAndSlope& vd, const Guess& guess, const double* splits,
+                     int splitCount, double lo, double hi, double tol, double* out) {
     int n = 0;
     double a = lo;
-    double va = vd(a).first;
+    double va = value(a);
     for (int i = 0; i <= splitCount; ++i) {
         const double b = i < splitCount ? std::clamp(splits[i], lo, hi) : hi;
         if (!(b > a) && i < splitCount) continue;
-        const double vb = vd(b).first;
+        const double vb = value(b);
         if (va == 0.0) {
             if (n == 0 || out[n - 1] != a) out[n++] = a;
         } else if (vb != 0.0 && (va < 0.0) != (vb < 0.0)) {
-            out[n++] = refineRoot(vd, a, b, va < 0.0, tol);
+            out[n++] = refineRoot(vd, a, b, va < 0.0, tol, guess(a, b, va < 0.0));
         }
         a = b;
         va = vb;
@@ -104,8 +106,10 @@ int polynomialRoots(const double* c, int n, double lo, double hi, double tol, do
     for (int k = 0; k < n; ++k) slope[k] = (k + 1) * c[k + 1];
     double splits[kMaxOrder];
     const int splitCount = polynomialRoots(slope.data(), n - 1, lo, hi, tol, splits);
+    const auto value = [&](double x) { return horner(c, n, x); };
     const auto vd = [&](double x) { return std::pair{horner(c, n, x), horner(slope.data(), n - 1, x)}; };
-    return rootsOnStretches(vd, splits, splitCount, lo, hi, tol, out);
+    const auto middle = [](double a, double b, bool) { return 0.5 * (a + b); };
+    return rootsOnStretches(value, vd, middle, splits, splitCount, lo, hi, tol, out);
 }
 
 // (a + b x)^m as coefficients, m = 0..order.
@@ -377,12 +381,23 @@ PolyRoots Poly::roots(const Ray& ray) const {
     }
     // The roots are f's own along the line, which rounds far better near the
     // surface than the expanded polynomial; its slope is the gradient's along e.
+    const auto valueAt = [&](double u) { return value(q + u * e); };
     const auto vd = [&](double u) {
         const Vec3 p = q + u * e;
         return std::pair{value(p), glm::dot(gradient(p), e)};
     };
+    // Newton's steps on f start where the line's own polynomial (cheap, by
+    // Horner) has its root in the stretch: a step or two of f's then polish it.
+    Coefficients slope1{};
+    for (int k = 0; k < n; ++k) slope1[k] = (k + 1) * c[k + 1];
+    const auto guess = [&](double a, double b, bool negativeAtA) {
+        const double ha = horner(c.data(), n, a), hb = horner(c.data(), n, b);
+        if (ha == 0.0 || hb == 0.0 || (ha < 0.0) == (hb < 0.0) || (ha < 0.0) != negativeAtA) return 0.5 * (a + b);
+        const auto line = [&](double u) { return std::pair{horner(c.data(), n, u), horner(slope1.data(), n - 1, u)}; };
+        return refineRoot(line, a, b, ha < 0.0, 1e3 * tol, 0.5 * (a + b));
+    };
     double found[kMaxOrder];
-    const int count = rootsOnStretches(vd, splits, splitCount, uLo, uHi, tol, found);
+    const int count = rootsOnStretches(valueAt, vd, guess, splits, splitCount, uLo, uHi, tol, found);
     for (int i = 0; i < count && out.count < kMaxOrder; ++i) out.t[out.count++] = t0 + found[i] / dLength;
     return out;
 }
