@@ -135,7 +135,7 @@ TEST_CASE("a file read in a #while (defined(Handle)) loop ends as POV-Ray's does
     CHECK(c[2].x == 2);
 }
 
-TEST_CASE("#fopen append adds to the file; file_exists finds files", "[lang][files]") {
+TEST_CASE("#fopen append adds to the file, and file_exists finds files", "[lang][files]") {
     const TempFolder folder("append");
     test::writeFile(folder.path / "log.txt", "first\n");
     const auto r = runIn(folder, R"(

@@ -177,7 +177,7 @@ TEST_CASE("Light method, shadow apex and light form names", "[lights]") {
     CHECK(std::string(lightFormName(LightForm{})) == "point");
 }
 
-TEST_CASE("parallel and cylinder area lights are refused; area spotlights are not", "[lights][spotlight]") {
+TEST_CASE("parallel and cylinder area lights are refused, area spotlights are not", "[lights][spotlight]") {
     Light l = withArea({1, 0, 0}, {0, 0, 1}, 3, 3);
     l.type = LightType::Spot;
     l.radius = 20;

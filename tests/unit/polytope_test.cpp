@@ -46,7 +46,7 @@ TEST_CASE("polytopeVertices cuts the box by the half-spaces", "[geometry][polyto
     for (const Vec3& v : *vertices) CHECK(v.x + v.y + v.z <= 1e-9);
 }
 
-TEST_CASE("polytopeVertices: an unbounded polytope reaches the box; an empty one has none", "[geometry][polytope]") {
+TEST_CASE("polytopeVertices: an unbounded polytope reaches the box, an empty one has none", "[geometry][polytope]") {
     const std::vector<HalfSpace> slab{{{1, 0, 0}, 1}, {{-1, 0, 0}, 1}};
     const auto open = polytopeVertices(slab, kBig);
     REQUIRE(open);
