@@ -116,6 +116,7 @@ inline ClipLists& ownClipping(ObjectTree& t) {
 struct CameraValue {
     Camera camera;
     Vec3 sky{0.0, 1.0, 0.0};
+    Vec3 lookAt{0.0, 0.0, 1.0};  // POV-Ray's, which sizes an orthographic view
 };
 
 struct Poison {};  // the value of a declaration whose right side failed (already reported)

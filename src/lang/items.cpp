@@ -1525,8 +1525,10 @@ CameraValue Interpreter::evalCamera(const Node& block) {
     std::optional<double> angle;
     const Node* angleNode = nullptr;
     const Node* lookAtNode = nullptr;
+    bool hadUp = false, hadRight = false, hadItems = false;
     Transform transform;
     auto entry = [&](const Node& n) {
+        if (!isReference(n)) hadItems = true;
         if (isReference(n)) {
             const Value v = eval(n);
             const auto* declared = std::get_if<std::shared_ptr<const CameraValue>>(&v);
@@ -1545,8 +1547,8 @@ CameraValue Interpreter::evalCamera(const Node& block) {
         case Word::Orthographic: c.projection = Camera::Projection::Orthographic; break;
         case Word::Location: c.location = evalVector(n[0]); break;
         case Word::Direction: c.direction = evalVector(n[0]); break;
-        case Word::Right: c.right = evalVector(n[0]); break;
-        case Word::Up: c.up = evalVector(n[0]); break;
+        case Word::Right: c.right = evalVector(n[0]); hadRight = true; break;
+        case Word::Up: c.up = evalVector(n[0]); hadUp = true; break;
         case Word::Sky: cv.sky = evalVector(n[0]); break;
         case Word::LookAt: lookAt = evalVector(n[0]); lookAtNode = &n; break;
         case Word::Angle: angle = evalFloat(n[0]); angleNode = &n; break;
@@ -1560,8 +1562,6 @@ CameraValue Interpreter::evalCamera(const Node& block) {
     if (glm::length(c.right) == 0) fail(block, "the camera's right vector must not be zero");
     if (glm::length(c.up) == 0) fail(block, "the camera's up vector must not be zero");
     if (angle) {
-        if (c.projection == Camera::Projection::Orthographic)
-            fail(*angleNode, "'angle' with an orthographic camera is not supported by asos; size the view with right and up");
         if (!(*angle > 0 && *angle < 180))
             fail((*angleNode)[0], "the camera angle must be between 0 and 180 degrees, not " + formatNumber(*angle));
         c.direction = glm::normalize(c.direction) *
@@ -1592,6 +1592,19 @@ CameraValue Interpreter::evalCamera(const Node& block) {
         c.direction = direction * directionLength;
         c.right = right * rightLength;
         c.up = glm::normalize(glm::cross(direction, right)) * (sign * upLength);
+        cv.lookAt = *lookAt;
+    }
+    // POV-Ray 3.7 sizes an orthographic view as the perspective camera's at
+    // the look_at point (its default <0, 0, 1> included) unless right or up
+    // is given without an angle: right and up grow by that distance over
+    // direction's length.
+    if (c.projection == Camera::Projection::Orthographic && hadItems && ((!hadUp && !hadRight) || angle)) {
+        const double distance = glm::length(cv.lookAt - c.location);
+        const double directionLength = glm::length(c.direction);
+        if (distance > kPovEpsilon && directionLength > kPovEpsilon) {
+            c.right *= distance / directionLength;
+            c.up *= distance / directionLength;
+        }
     }
     if (!transform.isIdentity()) {
         c.location = transform.point(c.location);
@@ -1599,6 +1612,7 @@ CameraValue Interpreter::evalCamera(const Node& block) {
         c.right = transform.vector(c.right);
         c.up = transform.vector(c.up);
         cv.sky = transform.vector(cv.sky);
+        cv.lookAt = transform.point(cv.lookAt);
     }
     return cv;
 }
