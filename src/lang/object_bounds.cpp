@@ -148,36 +148,47 @@ std::optional<std::vector<Vec3>> hullPoints(const ObjectTree& t) {
     return cut.points();
 }
 
-// Whether a point lies within the convex bound (a sphere, a box, a
-// cylinder, a cone, or an intersection of them), grown by the tolerance.
-// Nullopt where the bound is not one of those.
-std::optional<bool> withinConvex(const ObjectTree& bound, const Vec3& p) {
-    if (bound.kind == ObjectTree::Kind::Light || bound.inverse) return std::nullopt;
+// A solid that holds every point of the convex bound it is part of, with
+// the centre it is grown about by the tolerance.
+struct ConvexSolid {
+    Primitive solid;
+    Vec3 centre;
+};
+
+// The convex solids whose intersection is the bound (a sphere, a box, a
+// cylinder, a cone, or an intersection of them), each made once for all the
+// points asked of it; false where the bound is not one of those.
+bool convexSolids(const ObjectTree& bound, std::vector<ConvexSolid>& out) {
+    if (bound.kind == ObjectTree::Kind::Light || bound.inverse) return false;
     if (bound.kind == ObjectTree::Kind::Union) {
-        if (bound.op != CsgTree::Op::Intersection) return std::nullopt;
-        bool all = true;
-        for (const ObjectTree& member : bound.children) {
-            const std::optional<bool> in = withinConvex(member, p);
-            if (!in) return std::nullopt;
-            all = all && *in;
-        }
-        return all;
+        if (bound.op != CsgTree::Op::Intersection) return false;
+        for (const ObjectTree& member : bound.children)
+            if (!convexSolids(member, out)) return false;
+        return true;
     }
-    if (bound.mesh || !clipsOf(bound).empty()) return std::nullopt;
+    if (bound.mesh || !clipsOf(bound).empty()) return false;
     const bool convex = std::holds_alternative<SphereShape>(bound.shape) ||
                         std::holds_alternative<BoxShape>(bound.shape) ||
                         std::holds_alternative<CylinderShape>(bound.shape) ||
                         std::holds_alternative<ConeShape>(bound.shape);
-    if (!convex) return std::nullopt;
+    if (!convex) return false;
     try {
-        const Primitive solid = Primitive::make(bound.shape, bound.worldFromObject);
-        const Bounds3 box = solid.worldBounds();
-        const Vec3 centre = box.center();
-        // The point drawn toward the centre: the bound grown about it.
-        return solid.inside(centre + (p - centre) / (1.0 + kBoundTolerance));
+        Primitive solid = Primitive::make(bound.shape, bound.worldFromObject);
+        const Vec3 centre = solid.worldBounds().center();
+        out.push_back({std::move(solid), centre});
+        return true;
     } catch (const std::invalid_argument&) {
-        return std::nullopt;
+        return false;
     }
+}
+
+// Whether every point lies within each solid grown by the tolerance about
+// its centre (the point drawn toward the centre instead).
+bool allWithin(const std::vector<ConvexSolid>& solids, const std::vector<Vec3>& points) {
+    for (const ConvexSolid& s : solids)
+        for (const Vec3& p : points)
+            if (!s.solid.inside(s.centre + (p - s.centre) / (1.0 + kBoundTolerance))) return false;
+    return true;
 }
 
 // Whether POV-Ray keeps the bound of an object placed alone: a CSG, a
@@ -214,12 +225,10 @@ BoundsFate boundsFate(const ObjectTree& tree, bool placed) {
     const std::optional<std::vector<Vec3>> points = hullPoints(tree);
     if (!placed || keepsBound(tree)) {
         fate.kind = BoundsFate::Kind::Bound;
-        fate.contained = points.has_value();
-        for (const ObjectTree& bound : boundsOf(tree))
-            for (std::size_t i = 0; fate.contained && i < points->size(); ++i) {
-                const std::optional<bool> in = withinConvex(bound, (*points)[i]);
-                fate.contained = in && *in;
-            }
+        std::vector<ConvexSolid> solids;
+        bool convex = true;
+        for (const ObjectTree& bound : boundsOf(tree)) convex = convex && convexSolids(bound, solids);
+        fate.contained = points && convex && allWithin(solids, *points);
         return fate;
     }
     // The bound's box: its objects' (but inverted ones') boxes intersected.
