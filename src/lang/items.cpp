@@ -273,6 +273,13 @@ void Interpreter::placeCsg(ObjectTree& root, const std::shared_ptr<const Texture
     // Filled in below, through this pointer, while the leaves' Objects
     // already share it.
     auto tree = std::make_shared<CsgTree>();
+    // Adds node's clip objects to the tree as clip members of `index`.
+    const auto addClips = [&](auto& add, std::uint32_t index, ObjectTree& node) {
+        for (ObjectTree& member : ownClipping(node).clips) {
+            const std::uint32_t c = add(add, member, nullptr, false, AsosOptions{}, nullptr, true, false);
+            tree->nodes[index].children.push_back(c);
+        }
+    };
     // Adds `node` (and its members) to the tree; its leaves become Objects
     // in leaf order (but those of a clip: `clip`), its lights go to the
     // scene. A node clipped_by others is added as the intersection of it
@@ -292,10 +299,7 @@ void Interpreter::placeCsg(ObjectTree& root, const std::shared_ptr<const Texture
                 tree->nodes[index].clip = clip;
                 const std::uint32_t own = self(self, node, outer, outerNoShadow, outerAsos, outerInterior, clip, true);
                 tree->nodes[index].children.push_back(own);
-                for (ObjectTree& member : ownClipping(node).clips) {
-                    const std::uint32_t c = self(self, member, nullptr, false, AsosOptions{}, nullptr, true, false);
-                    tree->nodes[index].children.push_back(c);
-                }
+                addClips(self, index, node);
                 return index;
             }
         }
@@ -347,11 +351,7 @@ void Interpreter::placeCsg(ObjectTree& root, const std::shared_ptr<const Texture
             const std::uint32_t c = self(self, child, texture, noShadow, asos, interior, clip, false);
             tree->nodes[index].children.push_back(c);
         }
-        if (absorbsClips && !clipped && node.clipping)
-            for (ObjectTree& member : ownClipping(node).clips) {
-                const std::uint32_t c = self(self, member, nullptr, false, AsosOptions{}, nullptr, true, false);
-                tree->nodes[index].children.push_back(c);
-            }
+        if (absorbsClips && !clipped && node.clipping) addClips(self, index, node);
         return index;
     };
     add(add, root, inherited, inheritedNoShadow, inheritedAsos, inheritedInterior, false, false);
